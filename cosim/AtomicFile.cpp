@@ -1,0 +1,24 @@
+#include "cosim/AtomicFile.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+namespace flexehd::cosim {
+
+void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+    namespace fs = std::filesystem;
+    const std::string tmp = path + ".tmp";
+    try {
+        write(tmp);
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(tmp, ignored);
+        throw;
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) throw std::runtime_error("cannot write '" + path + "': " + ec.message());
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,13 @@
+#pragma once
+// Crash-safe file output: content is written to "<path>.tmp" and renamed over `path`
+// only once complete, so a killed run never leaves a truncated file behind.
+#include <functional>
+#include <string>
+
+namespace flexehd::cosim {
+
+/// Calls `write(temporaryPath)`, then atomically renames the result to `path`.
+/// Throws std::runtime_error naming the file if writing or renaming fails.
+void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
+
+}  // namespace flexehd::cosim

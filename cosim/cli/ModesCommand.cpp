@@ -1,0 +1,155 @@
+// `flexehd modes`: natural frequencies and mode shapes of an elastic body, written for
+// ParaView (one .vtu per mode, a .pvd whose time steps are the mode numbers).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "cosim/PvdWriter.hpp"
+#include "cosim/VtuWriter.hpp"
+#include "cosim/cli/CliSupport.hpp"
+#include "cosim/cli/Commands.hpp"
+#include "fem/MeshReader.hpp"
+#include "fem/ModalAnalysis.hpp"
+
+namespace flexehd::cli {
+namespace {
+
+struct ModesArgs {
+    std::string mesh;
+    int order = 0;
+    double size = 0.0;
+    fem::ElasticMaterial material;
+    std::vector<std::string> fix;
+    int count = 12;
+    double shift = 0.0;
+    std::string out;
+    bool json = false;
+};
+
+// Mode shapes are M-normalised (units kg^-1/2); for viewing they are scaled so that the
+// largest displacement is 5 % of the model's bounding-box diagonal, and the factor back
+// to the M-normalised shape is stored with each file.
+void writeModeFiles(const ModesArgs& a, const fem::Mesh& mesh, const fem::ModalAnalysis& result,
+                    nlohmann::json& files) {
+    namespace fs = std::filesystem;
+    fs::create_directories(a.out);
+    const double diagonal = (mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff()).norm();
+    const Eigen::VectorXd f = result.modes.frequenciesHz();
+    cosim::PvdCollection pvd;
+    for (Eigen::Index k = 0; k < result.modes.shapes.cols(); ++k) {
+        Eigen::MatrixXd u = Eigen::Map<const Eigen::MatrixXd>(result.modes.shapes.col(k).data(), 3, mesh.numNodes());
+        const double umax = u.colwise().norm().maxCoeff();
+        const double scale = umax > 0.0 ? 0.05 * diagonal / umax : 1.0;
+        u *= scale;
+        const std::string name = fmt::format("mode_{:03d}.vtu", k + 1);
+        cosim::writeVtu((fs::path(a.out) / name).string(), mesh, {{"displacement", u}},
+                        {{"mode", double(k + 1)},
+                         {"frequency_hz", f(k)},
+                         {"eigenvalue_rad2_per_s2", result.modes.eigenvalues(k)},
+                         {"mass_normalisation_factor", 1.0 / scale}});
+        pvd.add(double(k + 1), name);
+        files.push_back(name);
+    }
+    const std::string pvdPath = (fs::path(a.out) / "modes.pvd").string();
+    pvd.write(pvdPath);
+    files.push_back("modes.pvd");
+    spdlog::info("wrote {} mode shapes and {}", result.modes.shapes.cols(), pvdPath);
+}
+
+void runModes(const ModesArgs& a) {
+    Stopwatch total;
+    spdlog::info("reading mesh {}", a.mesh);
+    Stopwatch t;
+    const fem::Mesh mesh = fem::readMesh(a.mesh, {a.order, a.size, true});
+    const double readSeconds = t.seconds();
+    spdlog::info("mesh: {} nodes, {} {} elements ({:.2f} s)", mesh.numNodes(), mesh.volume.size(),
+                 fem::name(mesh.volume.type), readSeconds);
+
+    std::vector<fem::FixedGroup> fixed;
+    for (const auto& s : a.fix) {
+        fixed.push_back(fem::parseFixedGroup(s));
+        mesh.group(fixed.back().group);  // unknown group: error listing the available ones
+    }
+    fem::EigenmodeOptions opt;
+    opt.count = a.count;
+    opt.shift = a.shift;
+    spdlog::info("assembling and solving for {} modes ({} DOFs)", a.count, 3 * mesh.numNodes());
+    const fem::ModalAnalysis result = fem::analyseModes(mesh, a.material, fixed, opt);
+    spdlog::info("assembly {:.2f} s, factorization {:.2f} s, Lanczos {:.2f} s ({} restarts, {} solves)",
+                 result.assembleSeconds, result.modes.factorSeconds, result.modes.solveSeconds,
+                 result.modes.iterations, result.modes.operations);
+
+    nlohmann::json files = nlohmann::json::array();
+    double writeSeconds = 0.0;
+    if (!a.out.empty()) {
+        Stopwatch w;
+        writeModeFiles(a, mesh, result, files);
+        writeSeconds = w.seconds();
+    }
+
+    const Eigen::VectorXd f = result.modes.frequenciesHz();
+    const int rigid = result.rigidBodyModes();
+    if (a.json) {
+        nlohmann::json doc;
+        doc["mesh"] = a.mesh;
+        doc["element_type"] = std::string(fem::name(mesh.volume.type));
+        doc["nodes"] = mesh.numNodes();
+        doc["elements"] = mesh.volume.size();
+        doc["dofs"] = result.dofs;
+        doc["free_dofs"] = result.freeDofs;
+        doc["material"] = {{"E_pa", a.material.E}, {"nu", a.material.nu}, {"rho_kg_m3", a.material.rho}};
+        doc["fixed"] = a.fix;
+        doc["frequencies_hz"] = std::vector<double>(f.data(), f.data() + f.size());
+        doc["eigenvalues_rad2_s2"] =
+            std::vector<double>(result.modes.eigenvalues.data(), result.modes.eigenvalues.data() + f.size());
+        doc["rigid_body_modes"] = rigid;
+        doc["shift_rad2_s2"] = result.modes.shift;
+        doc["lanczos_restarts"] = result.modes.iterations;
+        doc["timings_s"] = {{"read_mesh", readSeconds},
+                            {"assemble", result.assembleSeconds},
+                            {"factorize", result.modes.factorSeconds},
+                            {"eigensolve", result.modes.solveSeconds},
+                            {"write", writeSeconds},
+                            {"total", total.seconds()}};
+        if (!a.out.empty()) doc["output"] = {{"directory", a.out}, {"files", files}};
+        printJson(doc);
+    } else {
+        std::printf("%s: %d nodes, %d %s elements, %d DOFs (%d free)\n", a.mesh.c_str(), int(mesh.numNodes()),
+                    int(mesh.volume.size()), std::string(fem::name(mesh.volume.type)).c_str(), int(result.dofs),
+                    int(result.freeDofs));
+        std::printf("%6s  %16s\n", "mode", "frequency [Hz]");
+        for (Eigen::Index k = 0; k < f.size(); ++k)
+            std::printf("%6d  %16.6g%s\n", int(k + 1), f(k), k < rigid ? "  (rigid-body)" : "");
+        std::printf("total time %.2f s\n", total.seconds());
+    }
+}
+
+}  // namespace
+
+void addModesCommand(CLI::App& app) {
+    auto a = std::make_shared<ModesArgs>();
+    a->material = {0.0, 0.0, 0.0};
+    CLI::App* cmd = app.add_subcommand("modes", "Natural frequencies and mode shapes of an elastic body");
+    cmd->add_option("--mesh", a->mesh, "Mesh file: .msh (Gmsh 2.2 or 4.1) or .geo (meshed on load)")
+        ->required();
+    cmd->add_option("--order", a->order, "Element order 1 or 2 (default: .geo → 2, .msh → as stored)")
+        ->check(CLI::IsMember({1, 2}));
+    cmd->add_option("--size", a->size, "Target element size for .geo files [m]")->check(CLI::PositiveNumber);
+    cmd->add_option("--E", a->material.E, "Young's modulus [Pa]")->required()->check(CLI::PositiveNumber);
+    cmd->add_option("--nu", a->material.nu, "Poisson's ratio [-]")->required()->check(CLI::Range(-0.999, 0.499));
+    cmd->add_option("--rho", a->material.rho, "Density [kg/m^3]")->required()->check(CLI::PositiveNumber);
+    cmd->add_option("--fix", a->fix,
+                    "Physical group to hold, all components (GROUP) or some (GROUP:xy); repeatable. "
+                    "None: free body, six rigid-body modes included");
+    cmd->add_option("--count", a->count, "Number of modes, lowest first")->check(CLI::Range(1, 10000));
+    cmd->add_option("--shift", a->shift,
+                    "Spectral shift sigma [(rad/s)^2], below the lowest eigenvalue (default: automatic)");
+    cmd->add_option("--out", a->out, "Directory for mode_NNN.vtu and modes.pvd (ParaView)");
+    cmd->add_flag("--json", a->json, "Print one JSON object on stdout instead of the table");
+    cmd->callback([a] { runModes(*a); });
+}
+
+}  // namespace flexehd::cli

@@ -1,0 +1,38 @@
+// flexehd: flexible-body elastohydrodynamic co-simulation of a piston in its liner.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "cosim/cli/Commands.hpp"
+
+int main(int argc, char** argv) {
+    // Progress and diagnostics go to stderr so that stdout stays clean for --json.
+    auto logger = spdlog::stderr_color_mt("flexehd");
+    spdlog::set_default_logger(logger);
+    spdlog::set_pattern("[%T.%e] %v");
+
+    CLI::App app{"flexehd — flexible-body EHD co-simulation of an engine piston in its liner.\n"
+                 "All quantities in SI units (m, s, kg, N, Pa, K)."};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "flexehd 0.1.0");
+    bool quiet = false;
+    app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr");
+    app.parse_complete_callback([&] {
+        spdlog::set_level(quiet ? spdlog::level::warn : spdlog::level::info);
+    });
+
+    flexehd::cli::addModesCommand(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::cerr << "flexehd: error: " << e.what() << std::endl;
+        return 1;
+    }
+    return 0;
+}

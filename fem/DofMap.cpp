@@ -1,0 +1,119 @@
+#include "fem/DofMap.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+namespace flexehd::fem {
+
+unsigned parseComponents(const std::string& text) {
+    std::string s = text;
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (s == "all" || s == "xyz") return kAllComponents;
+    unsigned mask = 0;
+    for (char c : s) {
+        if (c == 'x') mask |= kX;
+        else if (c == 'y') mask |= kY;
+        else if (c == 'z') mask |= kZ;
+        else {
+            mask = 0;
+            break;
+        }
+    }
+    if (mask == 0)
+        throw std::invalid_argument("components '" + text + "': expected a combination of x, y, z or 'all'");
+    return mask;
+}
+
+DofMap::DofMap(Index numNodes, int dofsPerNode)
+    : dofsPerNode_(dofsPerNode),
+      equation_(std::size_t(numNodes) * dofsPerNode, 0),
+      prescribed_(Eigen::VectorXd::Zero(Index(numNodes) * dofsPerNode)) {}
+
+void DofMap::constrain(const std::vector<Index>& nodes, unsigned components, double value) {
+    for (Index n : nodes)
+        for (int c = 0; c < dofsPerNode_; ++c)
+            if (components & (1u << c)) constrainDof(dofsPerNode_ * n + c, value);
+}
+
+void DofMap::constrainDof(Index dof, double value) {
+    if (final_) throw std::logic_error("DofMap: constraints added after finalize()");
+    if (dof < 0 || dof >= numDofs())
+        throw std::out_of_range("DofMap: DOF " + std::to_string(dof) + " out of range");
+    equation_[dof] = -1;
+    prescribed_(dof) = value;
+}
+
+void DofMap::finalize() {
+    if (final_) return;
+    numFree_ = 0;
+    for (auto& e : equation_) e = (e < 0) ? -1 : numFree_++;
+    final_ = true;
+}
+
+void DofMap::requireFinal(const char* what) const {
+    if (!final_) throw std::logic_error(std::string("DofMap::") + what + " before finalize()");
+}
+
+SparseMatrix DofMap::reduce(const SparseMatrix& K) const {
+    requireFinal("reduce");
+    if (K.rows() != numDofs() || K.cols() != numDofs())
+        throw std::invalid_argument("DofMap::reduce: matrix size does not match the DOF map");
+    std::vector<int> outer(std::size_t(numFree_) + 1, 0);
+    for (Index j = 0; j < numDofs(); ++j) {
+        const Index cj = equation_[j];
+        if (cj < 0) continue;
+        for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+            if (equation_[it.row()] >= 0) ++outer[cj + 1];
+    }
+    for (Index j = 0; j < numFree_; ++j) outer[j + 1] += outer[j];
+    SparseMatrix R(numFree_, numFree_);
+    R.resizeNonZeros(outer.back());
+    std::copy(outer.begin(), outer.end(), R.outerIndexPtr());
+    int p = 0;
+    for (Index j = 0; j < numDofs(); ++j) {
+        if (equation_[j] < 0) continue;
+        for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+            if (const Index ri = equation_[it.row()]; ri >= 0) {
+                R.innerIndexPtr()[p] = ri;
+                R.valuePtr()[p++] = it.value();
+            }
+    }
+    return R;
+}
+
+Eigen::VectorXd DofMap::reduceLoad(const Eigen::VectorXd& f, const SparseMatrix& K) const {
+    requireFinal("reduceLoad");
+    if (f.size() != numDofs()) throw std::invalid_argument("DofMap::reduceLoad: load size mismatch");
+    Eigen::VectorXd r(numFree_);
+    for (Index d = 0; d < numDofs(); ++d)
+        if (equation_[d] >= 0) r(equation_[d]) = f(d);
+    if (prescribed_.cwiseAbs().maxCoeff() == 0.0) return r;
+    // Upper storage: entry (i, j), i <= j, stands for K_ij and K_ji.
+    for (Index j = 0; j < numDofs(); ++j)
+        for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+            const Index i = it.row();
+            if (i == j) continue;
+            if (equation_[i] >= 0 && equation_[j] < 0) r(equation_[i]) -= it.value() * prescribed_(j);
+            if (equation_[j] >= 0 && equation_[i] < 0) r(equation_[j]) -= it.value() * prescribed_(i);
+        }
+    return r;
+}
+
+Eigen::VectorXd DofMap::expand(const Eigen::VectorXd& free) const {
+    requireFinal("expand");
+    Eigen::VectorXd u = prescribed_;
+    for (Index d = 0; d < numDofs(); ++d)
+        if (equation_[d] >= 0) u(d) = free(equation_[d]);
+    return u;
+}
+
+Eigen::MatrixXd DofMap::expandHomogeneous(const Eigen::MatrixXd& free) const {
+    requireFinal("expandHomogeneous");
+    Eigen::MatrixXd u = Eigen::MatrixXd::Zero(numDofs(), free.cols());
+    for (Index d = 0; d < numDofs(); ++d)
+        if (equation_[d] >= 0) u.row(d) = free.row(equation_[d]);
+    return u;
+}
+
+}  // namespace flexehd::fem

@@ -1,0 +1,60 @@
+#pragma once
+// Map between the full DOF vector (dofsPerNode per node) and the free unknowns solved
+// for, written as u = T u_free + g: constrained DOFs take prescribed values g, free DOFs
+// are numbered in increasing order so that reduced matrices keep their upper-triangle
+// storage. With only Dirichlet constraints T is a selection and reduce() extracts K_ff
+// directly in O(nnz). Multi-point constraints (a node set tied to a reference node,
+// issue 3) extend the same picture: extra free DOFs for the reference node, dependent
+// DOFs expressed as rows of T, reduce() = Tᵀ K T.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fem/SparsityPattern.hpp"
+
+namespace flexehd::fem {
+
+/// Component selection for constraints: bit c set = component c constrained.
+enum ComponentMask : unsigned { kX = 1u, kY = 2u, kZ = 4u, kAllComponents = 7u };
+
+/// Parses "x", "xy", "xyz", "all" (case-insensitive); throws std::invalid_argument.
+unsigned parseComponents(const std::string& text);
+
+class DofMap {
+public:
+    DofMap(Index numNodes, int dofsPerNode);
+
+    /// Prescribes `value` on the selected components of `nodes`. Later calls override
+    /// earlier ones for the same DOF. Only before finalize().
+    void constrain(const std::vector<Index>& nodes, unsigned components, double value = 0.0);
+    void constrainDof(Index dof, double value);
+    /// Numbers the free DOFs; call once after all constraints.
+    void finalize();
+
+    Index numDofs() const { return static_cast<Index>(equation_.size()); }
+    Index numFree() const { return numFree_; }
+    Index numConstrained() const { return numDofs() - numFree_; }
+    int dofsPerNode() const { return dofsPerNode_; }
+    /// Free-equation number of a full DOF, -1 if constrained.
+    Index equation(Index dof) const { return equation_[dof]; }
+    const Eigen::VectorXd& prescribed() const { return prescribed_; }
+
+    /// Reduced matrix K_ff from a full upper-triangle matrix (upper triangle).
+    SparseMatrix reduce(const SparseMatrix& fullUpper) const;
+    /// Reduced load f_f - K_fc g_c (the prescribed values moved to the right-hand side).
+    Eigen::VectorXd reduceLoad(const Eigen::VectorXd& f, const SparseMatrix& fullUpper) const;
+    /// Full vector(s) from free values: u = T u_free + g (g = 0 for `homogeneous`).
+    Eigen::VectorXd expand(const Eigen::VectorXd& free) const;
+    Eigen::MatrixXd expandHomogeneous(const Eigen::MatrixXd& free) const;
+
+private:
+    void requireFinal(const char* what) const;
+    int dofsPerNode_;
+    std::vector<Index> equation_;  ///< before finalize: 0 free, -1 constrained
+    Eigen::VectorXd prescribed_;
+    Index numFree_ = 0;
+    bool final_ = false;
+};
+
+}  // namespace flexehd::fem

@@ -1,0 +1,34 @@
+#pragma once
+// Lowest eigenpairs of K φ = λ M φ (λ = ω²) by Lanczos (Spectra) in shift-invert mode:
+// the operator (K - σM)⁻¹ M is applied through one CHOLMOD factorization of K - σM.
+// A shift σ < 0 keeps K - σM positive definite for free bodies (λ = 0 rigid-body
+// modes), so they are found with everything else.
+#include <Eigen/Core>
+
+#include "fem/SparsityPattern.hpp"
+
+namespace flexehd::fem {
+
+struct EigenmodeOptions {
+    int count = 10;            ///< number of modes (lowest first)
+    double shift = 0.0;        ///< σ in (rad/s)^2; 0 = automatic (small negative, see docs)
+    double tolerance = 1e-10;  ///< relative Ritz-value tolerance
+    int maxIterations = 1000;  ///< Lanczos restarts
+};
+
+struct Eigenmodes {
+    Eigen::VectorXd eigenvalues;  ///< λ = ω², (rad/s)^2, ascending
+    Eigen::MatrixXd shapes;       ///< columns φ_k, M-orthonormal (φᵀMφ = 1)
+    double shift = 0.0;           ///< σ used
+    int iterations = 0;           ///< Lanczos restarts
+    int operations = 0;           ///< applications of (K - σM)⁻¹
+    double factorSeconds = 0.0, solveSeconds = 0.0;
+    /// f = sign(λ) √|λ| / 2π, Hz (tiny negatives of rigid-body modes keep their sign).
+    Eigen::VectorXd frequenciesHz() const;
+};
+
+/// K and M: upper triangles of the (constrained) stiffness and mass matrices.
+/// Throws std::runtime_error if the factorization fails or Lanczos does not converge.
+Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const EigenmodeOptions& options);
+
+}  // namespace flexehd::fem

@@ -1,0 +1,51 @@
+#include "fem/ModalAnalysis.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "fem/ElasticityAssembler.hpp"
+
+namespace flexehd::fem {
+
+FixedGroup parseFixedGroup(const std::string& text) {
+    const auto colon = text.find(':');
+    FixedGroup g;
+    g.group = text.substr(0, colon);
+    if (g.group.empty()) throw std::invalid_argument("fixed group '" + text + "': empty group name");
+    if (colon != std::string::npos) g.components = parseComponents(text.substr(colon + 1));
+    return g;
+}
+
+int ModalAnalysis::rigidBodyModes() const {
+    const auto& l = modes.eigenvalues;
+    if (l.size() == 0) return 0;
+    const double scale = l.cwiseAbs().maxCoeff();
+    int n = 0;
+    while (n < l.size() && std::abs(l(n)) < 1e-6 * scale) ++n;
+    return n;
+}
+
+ModalAnalysis analyseModes(const Mesh& mesh, const ElasticMaterial& material,
+                           const std::vector<FixedGroup>& fixed, const EigenmodeOptions& options) {
+    material.validate();
+    const auto t0 = std::chrono::steady_clock::now();
+    ElasticityAssembler assembler(mesh);
+    const SparseMatrix K = assembler.stiffness(material);
+    const SparseMatrix M = assembler.mass(material.rho);
+    DofMap dofs(mesh.numNodes(), 3);
+    for (const auto& f : fixed) dofs.constrain(mesh.groupNodes(f.group), f.components);
+    dofs.finalize();
+    ModalAnalysis out;
+    out.dofs = dofs.numDofs();
+    out.freeDofs = dofs.numFree();
+    const bool constrained = dofs.numConstrained() > 0;
+    const SparseMatrix Kf = constrained ? dofs.reduce(K) : K;
+    const SparseMatrix Mf = constrained ? dofs.reduce(M) : M;
+    out.assembleSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.modes = solveEigenmodes(Kf, Mf, options);
+    if (constrained) out.modes.shapes = dofs.expandHomogeneous(out.modes.shapes);
+    return out;
+}
+
+}  // namespace flexehd::fem
