@@ -19,13 +19,17 @@ std::mutex& gmshMutex() {
     return m;
 }
 
-void ensureGmsh() {
+// A fresh Gmsh session per load: options set by a .geo file (Mesh.MeshSizeMax, ...) and
+// onelab parameters (the `size` of DefineConstant) otherwise survive gmsh::clear() and
+// leak into the next file. Gmsh 4.8 has no way to restore option defaults.
+void freshGmsh() {
     static bool initialised = false;
-    if (initialised) return;
+    if (initialised) gmsh::finalize();
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.Verbosity", 2);
     gmsh::logger::start();
+    gmsh::onelab::clear();  // survives finalize()
     initialised = true;
 }
 
@@ -63,9 +67,7 @@ void loadIntoGmsh(const std::string& path, const MeshOptions& opt) {
         fail(path, "element order " + std::to_string(opt.order) + " not supported (1 or 2)");
     if (opt.size < 0.0) fail(path, "element size must be positive (m)");
 
-    ensureGmsh();
-    gmsh::clear();
-    gmshErrors();  // drop messages of earlier loads
+    freshGmsh();
     if (ext == ".geo" && opt.size > 0.0) gmsh::onelab::setNumber("Parameters/size", {opt.size});
     try {
         gmsh::open(path);

@@ -1,0 +1,108 @@
+// The `flexehd modes` command as a user runs it: JSON output, ParaView files, errors.
+#include <unistd.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../fem/TestData.hpp"
+
+using flexehd::test::dataPath;
+using testing::HasSubstr;
+
+namespace {
+struct CommandResult {
+    int status;
+    std::string out, err;
+};
+
+CommandResult runFlexehd(const std::string& args) {
+    const auto dir = std::filesystem::temp_directory_path();
+    const std::string errFile = (dir / ("flexehd_cli_err_" + std::to_string(::getpid()))).string();
+    const std::string cmd = std::string(FLEXEHD_BINARY) + " " + args + " 2>" + errFile;
+    CommandResult r;
+    FILE* p = popen(cmd.c_str(), "r");
+    std::array<char, 4096> buf;
+    while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
+    r.status = WEXITSTATUS(pclose(p));
+    std::ifstream e(errFile);
+    r.err.assign(std::istreambuf_iterator<char>(e), {});
+    std::filesystem::remove(errFile);
+    return r;
+}
+
+const std::string kSteel = " --E 2.1e11 --nu 0.3 --rho 7850";
+}  // namespace
+
+TEST(CliModes, JsonOutputOfCantilever) {
+    const CommandResult r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --fix clamped --count 4 --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);  // stdout holds only the JSON object
+    const auto f = doc.at("frequencies_hz").get<std::vector<double>>();
+    ASSERT_EQ(f.size(), 4u);
+    EXPECT_TRUE(std::is_sorted(f.begin(), f.end()));
+    // Euler–Bernoulli cantilever, L = 1 m, h = 0.02 m: f1 = 1.875104² / 2π √(E h² / 12ρ).
+    const double f1 = 1.875104 * 1.875104 / (2 * std::numbers::pi) * std::sqrt(2.1e11 * 4e-4 / (12 * 7850));
+    EXPECT_NEAR(f[0] / f1, 1.0, 0.015);
+    EXPECT_EQ(doc.at("dofs").get<int>(), 3 * doc.at("nodes").get<int>());
+    EXPECT_GT(doc.at("elements").get<int>(), 0);
+    EXPECT_EQ(doc.at("element_type"), "TET10");
+    EXPECT_EQ(doc.at("rigid_body_modes"), 0);
+    EXPECT_TRUE(doc.at("timings_s").contains("eigensolve"));
+}
+
+TEST(CliModes, ParaViewFilesOfFreeBody) {
+    const auto dir = flexehd::test::scratchDir();
+    const CommandResult r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --order 1 --count 8 --json --out " +
+                          dir.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc.at("rigid_body_modes"), 6);
+    EXPECT_EQ(doc.at("element_type"), "TET4");
+    std::ifstream pvd(dir / "modes.pvd");
+    std::stringstream s;
+    s << pvd.rdbuf();
+    for (int k = 1; k <= 8; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "mode_%03d.vtu", k);
+        EXPECT_THAT(s.str(), HasSubstr("timestep=\"" + std::to_string(k) + "\" group=\"\" part=\"0\" file=\"" + name));
+        ASSERT_TRUE(std::filesystem::exists(dir / name));
+        std::ifstream vtu(dir / name);
+        std::string head(2000, '\0');
+        vtu.read(head.data(), head.size());
+        EXPECT_THAT(head, HasSubstr("type=\"UnstructuredGrid\""));
+        EXPECT_THAT(head, HasSubstr("Name=\"displacement\" NumberOfComponents=\"3\" format=\"appended\""));
+        EXPECT_THAT(head, HasSubstr("Name=\"frequency_hz\""));
+    }
+    for (const auto& e : std::filesystem::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".tmp");
+}
+
+TEST(CliModes, UnknownGroupIsAnErrorListingTheGroups) {
+    const CommandResult r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --fix crown");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_THAT(r.err, HasSubstr("no physical group 'crown'"));
+    EXPECT_THAT(r.err, HasSubstr("clamped (surface)"));
+}
+
+TEST(CliModes, MissingMeshAndBadArgumentsFail) {
+    CommandResult r = runFlexehd("modes --mesh /nonexistent.msh" + kSteel);
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.err, HasSubstr("/nonexistent.msh"));
+    r = runFlexehd("modes --mesh " + dataPath("beam.geo") + " --E 2.1e11 --nu 0.7 --rho 7850");
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.err, HasSubstr("--nu"));
+    r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --fix clamped:q");
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.err, HasSubstr("components 'q'"));
+}
