@@ -3,10 +3,10 @@
 # 64×128 … 512×1024 (axial × circumferential) and writes the table into docs/lube.md between
 # the markers <!-- bench:begin --> and <!-- bench:end -->.
 #   scripts/bench_lube.sh [maxAxial=512] [tolerance=1e-8]
-# Uses build-lube/ (FLEXEHD_BUILD_DIR overrides) and builds only the bench_lube target.
+# Uses build/ (FLEXEHD_BUILD_DIR overrides) and builds only the bench_lube target.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build="${FLEXEHD_BUILD_DIR:-$root/build-lube}"
+build="${FLEXEHD_BUILD_DIR:-$root/build}"
 if [[ ! -f "$build/build.ninja" && ! -f "$build/Makefile" ]]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
 fi

@@ -18,6 +18,9 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
+/// Peak resident memory of this process so far, MiB (getrusage).
+double peakMemoryMiB();
+
 /// Prints a JSON document on stdout (the `--json` convention: nothing else goes there).
 void printJson(const nlohmann::json& doc);
 

@@ -114,6 +114,7 @@ void runModes(const ModesArgs& a) {
                             {"eigensolve", result.modes.solveSeconds},
                             {"write", writeSeconds},
                             {"total", total.seconds()}};
+        doc["peak_memory_mib"] = peakMemoryMiB();
         if (!a.out.empty()) doc["output"] = {{"directory", a.out}, {"files", files}};
         printJson(doc);
     } else {
@@ -123,7 +124,7 @@ void runModes(const ModesArgs& a) {
         std::printf("%6s  %16s\n", "mode", "frequency [Hz]");
         for (Eigen::Index k = 0; k < f.size(); ++k)
             std::printf("%6d  %16.6g%s\n", int(k + 1), f(k), k < rigid ? "  (rigid-body)" : "");
-        std::printf("total time %.2f s\n", total.seconds());
+        std::printf("total time %.2f s, peak memory %.0f MiB\n", total.seconds(), peakMemoryMiB());
     }
 }
 

@@ -1,0 +1,154 @@
+#include "lube/FilmIntegrals.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "lube/ReynoldsSystem.hpp"
+
+namespace flexehd::lube {
+
+namespace {
+
+void checkField(const FilmGrid& g, const Eigen::VectorXd* v, const char* what) {
+    if (v && v->size() != g.size())
+        throw std::invalid_argument(std::string("integrateFilm: ") + what + " has " +
+                                    std::to_string(v->size()) + " values, grid has " +
+                                    std::to_string(g.size()));
+}
+
+// Second-order derivative on a non-uniform 3-point stencil (one-sided at open ends).
+double derivative(double pm, double p0, double pp, double dm, double dp) {
+    return ((pp - p0) * dm / dp + (p0 - pm) * dp / dm) / (dm + dp);
+}
+
+Eigen::VectorXd nodalViscosity(const FilmGrid& g, const Lubricant& lub, const Eigen::VectorXd& p) {
+    Eigen::VectorXd eta(g.size());
+    for (int k = 0; k < g.size(); ++k) eta[k] = lub.viscosity(p[k] - g.ambientPressure());
+    return eta;
+}
+
+double faceFlow(const FilmGrid& g, const FilmState& film, const Eigen::VectorXd& eta,
+                const Eigen::VectorXd& p, const Eigen::VectorXd* phi, int a, int b, bool axial,
+                double L, double d) {
+    const double hf = faceValue(g, film.h, a, b);
+    const double ef = faceValue(g, eta, a, b);
+    const double U = axial ? film.sumAxial() : film.sumCircumferential();
+    const double frac = phi ? faceValue(g, *phi, a, b) : 1.0;
+    return hf * hf * hf * L / (12.0 * ef * d) * (p[a] - p[b]) + 0.5 * U * frac * hf * L;
+}
+
+}  // namespace
+
+FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubricant& lub,
+                        const Eigen::VectorXd& p, const FilmIntegralOptions& opt) {
+    validateFilmState(g, film);
+    if (p.size() != g.size())
+        throw std::invalid_argument("integrateFilm: pressure has " + std::to_string(p.size()) +
+                                    " values, grid has " + std::to_string(g.size()));
+    checkField(g, opt.contactPressure, "contact pressure");
+    checkField(g, opt.filmFraction, "film fraction");
+    const int nz = g.nAxial(), nt = g.nTheta();
+    const double R = g.radius(), pAmb = g.ambientPressure();
+    const Eigen::VectorXd eta = nodalViscosity(g, lub, p);
+    const double dVz = film.outer.axial - film.inner.axial;
+    const double dVt = film.outer.circumferential - film.inner.circumferential;
+    const double dV = std::hypot(dVz, dVt);
+
+    FilmLoads out;
+    out.minFilm = std::numeric_limits<double>::infinity();
+    out.maxPressure = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < nz; ++i) {
+        for (int j = 0; j < nt; ++j) {
+            const int k = g.index(i, j);
+            if (g.kind(k) == NodeKind::Void) continue;
+            const double A = g.area(k);
+            const double th = g.theta(j), c = std::cos(th), s = std::sin(th);
+            const Eigen::Vector3d er(c, s, 0.0), et(-s, c, 0.0), ez(0.0, 0.0, 1.0);
+            const Eigen::Vector3d r(R * c, R * s, g.z(i));
+            const double h = film.h[k];
+
+            // ∇p: ∂p/∂z and (1/R) ∂p/∂θ.
+            double dpdz, dpdy;
+            if (i == 0) dpdz = (p[g.index(1, j)] - p[k]) / (g.z(1) - g.z(0));
+            else if (i == nz - 1) dpdz = (p[k] - p[g.index(i - 1, j)]) / (g.z(i) - g.z(i - 1));
+            else dpdz = derivative(p[g.index(i - 1, j)], p[k], p[g.index(i + 1, j)],
+                                   g.z(i) - g.z(i - 1), g.z(i + 1) - g.z(i));
+            const double ds = R * g.dTheta();
+            if (g.periodic())
+                dpdy = (p[g.index(i, (j + 1) % nt)] - p[g.index(i, (j + nt - 1) % nt)]) / (2 * ds);
+            else if (j == 0) dpdy = (p[g.index(i, 1)] - p[k]) / ds;
+            else if (j == nt - 1) dpdy = (p[k] - p[g.index(i, j - 1)]) / ds;
+            else dpdy = (p[g.index(i, j + 1)] - p[g.index(i, j - 1)]) / (2 * ds);
+
+            const double phi = opt.filmFraction ? (*opt.filmFraction)[k] : 1.0;
+            const double couette = phi * eta[k] / h;
+            const double tz = couette * dVz - 0.5 * h * dpdz;
+            const double tt = couette * dVt - 0.5 * h * dpdy;
+            const double pc = opt.contactPressure ? (*opt.contactPressure)[k] : 0.0;
+
+            const Eigen::Vector3d fp = -(p[k] - pAmb) * A * er;
+            const Eigen::Vector3d fc = -pc * A * er;
+            const Eigen::Vector3d fs = (tz * ez + tt * et) * A;
+            Eigen::Vector3d fb = Eigen::Vector3d::Zero();
+            if (dV > 0.0) fb = opt.boundaryFriction * pc * A / dV * (dVz * ez + dVt * et);
+            out.pressureForce += fp;
+            out.contactForce += fc;
+            out.shearForce += fs;
+            out.boundaryFrictionForce += fb;
+            out.moment += (r - opt.referencePoint).cross(fp + fc + fs + fb);
+            out.viscousDissipation +=
+                (couette * dV * dV + h * h * h * (dpdz * dpdz + dpdy * dpdy) / (12.0 * eta[k])) * A;
+            out.boundaryFrictionPower += opt.boundaryFriction * pc * dV * A;
+            out.contactLoad += pc * A;
+            out.minFilm = std::min(out.minFilm, h);
+            out.maxPressure = std::max(out.maxPressure, p[k]);
+            out.filmArea += A;
+            if (g.kind(k) == NodeKind::Film && p[k] <= opt.cavitationPressure)
+                out.cavitatedArea += A;
+        }
+    }
+    if (!out.pressureForce.allFinite() || !out.shearForce.allFinite() || !out.moment.allFinite())
+        throw std::runtime_error("integrateFilm: non-finite load (check pressure and contact "
+                                 "fields for NaN)");
+    return out;
+}
+
+double circumferentialFlow(const FilmGrid& g, const FilmState& film, const Lubricant& lub,
+                           const Eigen::VectorXd& p, int j, const Eigen::VectorXd* phi) {
+    validateFilmState(g, film);
+    const int nt = g.nTheta();
+    if (j < 0 || j >= nt || (!g.periodic() && j == nt - 1))
+        throw std::out_of_range("circumferentialFlow: column " + std::to_string(j) +
+                                " has no face towards +theta");
+    const Eigen::VectorXd eta = nodalViscosity(g, lub, p);
+    double q = 0.0;
+    for (int i = 0; i < g.nAxial(); ++i) {
+        const int a = g.index(i, j), b = g.index(i, (j + 1) % nt);
+        if (g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void) continue;
+        q += faceFlow(g, film, eta, p, phi, a, b, false, g.axialWidth(i), g.radius() * g.dTheta());
+    }
+    return q;
+}
+
+double axialFlow(const FilmGrid& g, const FilmState& film, const Lubricant& lub,
+                 const Eigen::VectorXd& p, int i, const Eigen::VectorXd* phi) {
+    validateFilmState(g, film);
+    if (i < 0 || i >= g.nAxial() - 1)
+        throw std::out_of_range("axialFlow: row " + std::to_string(i) + " has no face towards +z");
+    const Eigen::VectorXd eta = nodalViscosity(g, lub, p);
+    double q = 0.0;
+    for (int j = 0; j < g.nTheta(); ++j) {
+        const int a = g.index(i, j), b = g.index(i + 1, j);
+        if (g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void) continue;
+        q += faceFlow(g, film, eta, p, phi, a, b, true, g.radius() * g.angularWidth(j),
+                      g.z(i + 1) - g.z(i));
+    }
+    return q;
+}
+
+}  // namespace flexehd::lube

@@ -1,0 +1,173 @@
+#include "lube/ReynoldsSolver.hpp"
+
+#include <cmath>
+#include <exception>
+#include <optional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace flexehd::lube {
+
+namespace {
+
+// Bilinear prolongation from a grid built by FilmGrid::coarsened to its parent.
+Eigen::VectorXd prolong(const Eigen::VectorXd& pc, const FilmGrid& coarse, const FilmGrid& fine,
+                        const std::vector<int>& axialMap) {
+    Eigen::VectorXd pf(fine.size());
+    const int ntc = coarse.nTheta(), ntf = fine.nTheta();
+    std::size_t I = 0;
+    for (int i = 0; i < fine.nAxial(); ++i) {
+        while (I + 2 < axialMap.size() && axialMap[I + 1] <= i) ++I;
+        const int i0 = axialMap[I], i1 = axialMap[I + 1];
+        const double wz = (fine.z(i) - fine.z(i0)) / (fine.z(i1) - fine.z(i0));
+        for (int j = 0; j < ntf; ++j) {
+            const int J0 = j / 2, J1 = (j % 2 == 0) ? J0 : (J0 + 1) % ntc;
+            auto at = [&](int II, int J) { return pc[coarse.index(static_cast<int>(II), J)]; };
+            const double lo = 0.5 * (at(static_cast<int>(I), J0) + at(static_cast<int>(I), J1));
+            const double hi = 0.5 * (at(static_cast<int>(I) + 1, J0) + at(static_cast<int>(I) + 1, J1));
+            pf[fine.index(i, j)] = (1 - wz) * lo + wz * hi;
+        }
+    }
+    return pf;
+}
+
+FilmState inject(const FilmState& f, const FilmGrid& coarse, const FilmGrid& fine,
+                 const std::vector<int>& axialMap) {
+    FilmState c;
+    c.inner = f.inner;
+    c.outer = f.outer;
+    c.h.resize(coarse.size());
+    if (f.dhdt.size()) c.dhdt.resize(coarse.size());
+    for (int I = 0; I < coarse.nAxial(); ++I)
+        for (int J = 0; J < coarse.nTheta(); ++J) {
+            const int kf = fine.index(axialMap[static_cast<std::size_t>(I)], 2 * J);
+            c.h[coarse.index(I, J)] = f.h[kf];
+            if (f.dhdt.size()) c.dhdt[coarse.index(I, J)] = f.dhdt[kf];
+        }
+    return c;
+}
+
+}  // namespace
+
+ReynoldsSolver::ReynoldsSolver(FilmGrid grid, Lubricant lubricant, ReynoldsOptions options)
+    : grid_(std::move(grid)), lubricant_(lubricant), options_(options),
+      psor_(options.omega) {
+    if (!std::isfinite(options_.cavitationPressure))
+        throw std::invalid_argument("ReynoldsSolver: cavitationPressure must be finite");
+    if (!(options_.control.tolerance > 0.0))
+        throw std::invalid_argument("ReynoldsSolver: tolerance must be positive");
+    if (options_.control.maxIterations < 1 || options_.maxPicardIterations < 1)
+        throw std::invalid_argument("ReynoldsSolver: iteration limits must be >= 1");
+    if (!(options_.picardRelaxation > 0.0 && options_.picardRelaxation <= 1.0))
+        throw std::invalid_argument("ReynoldsSolver: picardRelaxation must be in (0, 1]");
+    if (grid_.filmNodeCount() == 0)
+        throw std::invalid_argument("ReynoldsSolver: the grid has no Film node (all pressures "
+                                    "prescribed); refine it or change the edge conditions");
+    if (options_.gridSequencing && options_.solver == SolverKind::ActiveSet &&
+        options_.cavitation == Cavitation::Reynolds) {
+        const FilmGrid* g = &grid_;
+        std::vector<int> map;
+        while (g->size() > 2000) {
+            std::optional<FilmGrid> c = g->coarsened(map);
+            if (!c || c->filmNodeCount() == 0) break;
+            coarse_.push_back(Level{std::move(*c), map, ActiveSetSolver()});
+            g = &coarse_.back().grid;
+        }
+    }
+}
+
+Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coarseIterations) {
+    const int L = static_cast<int>(coarse_.size());
+    if (L == 0) return {};
+    auto gridAt = [&](int l) -> const FilmGrid& { return l == 0 ? grid_ : coarse_[static_cast<std::size_t>(l - 1)].grid; };
+    std::vector<FilmState> states{film};
+    for (int l = 1; l <= L; ++l)
+        states.push_back(inject(states.back(), gridAt(l), gridAt(l - 1),
+                                coarse_[static_cast<std::size_t>(l - 1)].axialMap));
+    Eigen::VectorXd p;
+    try {
+        for (int l = L; l >= 1; --l) {
+            const FilmGrid& g = gridAt(l);
+            const ReynoldsSystem sys(g, states[static_cast<std::size_t>(l)],
+                                     Eigen::VectorXd::Constant(g.size(), lubricant_.referenceDensity()),
+                                     Eigen::VectorXd::Constant(g.size(), lubricant_.referenceViscosity()));
+            const SolveReport rep = coarse_[static_cast<std::size_t>(l - 1)].solver.solve(
+                sys, p, options_.cavitationPressure, options_.control);
+            coarseIterations += rep.iterations;
+            p = prolong(p, g, gridAt(l - 1), coarse_[static_cast<std::size_t>(l - 1)].axialMap);
+        }
+    } catch (const std::exception&) {
+        return {};  // e.g. a coarse grid lost the only pressure datum: start cold instead
+    }
+    return p;
+}
+
+SolveReport ReynoldsSolver::solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd& p) {
+    const double lower = options_.cavitation == Cavitation::Reynolds
+                             ? options_.cavitationPressure
+                             : -std::numeric_limits<double>::infinity();
+    if (options_.solver == SolverKind::Psor) return psor_.solve(sys, p, lower, options_.control);
+    return fast_.solve(sys, p, lower, options_.control);
+}
+
+ReynoldsResult ReynoldsSolver::solve(const FilmState& film, const Eigen::VectorXd* warmStart) {
+    const int n = grid_.size();
+    ReynoldsResult res;
+    if (warmStart && warmStart->size() == n && warmStart->allFinite()) res.pressure = *warmStart;
+    else if (warmStart && warmStart->size() != 0 && warmStart->size() != n)
+        throw std::invalid_argument("ReynoldsSolver: warm start has " +
+                                    std::to_string(warmStart->size()) + " values, grid has " +
+                                    std::to_string(n));
+
+    if (res.pressure.size() != n && !coarse_.empty())
+        res.pressure = sequencedStart(film, res.coarseIterations);
+
+    Eigen::VectorXd rho = Eigen::VectorXd::Constant(n, lubricant_.referenceDensity());
+    Eigen::VectorXd eta = Eigen::VectorXd::Constant(n, lubricant_.referenceViscosity());
+    if (!lubricant_.pressureDependent()) {
+        ReynoldsSystem sys(grid_, film, rho, eta);
+        const SolveReport rep = solveOnce(sys, res.pressure);
+        res.iterations = rep.iterations;
+        res.residual = rep.residual;
+        res.picardIterations = 1;
+    } else {
+        // Picard iteration on the pressure-dependent properties.
+        if (res.pressure.size() != n) res.pressure = Eigen::VectorXd::Constant(n, grid_.ambientPressure());
+        double change = std::numeric_limits<double>::infinity();
+        for (int it = 1; it <= options_.maxPicardIterations; ++it) {
+            for (int k = 0; k < n; ++k) {
+                const double pg = res.pressure[k] - grid_.ambientPressure();
+                rho[k] = lubricant_.density(pg);
+                eta[k] = lubricant_.viscosity(pg);
+            }
+            ReynoldsSystem sys(grid_, film, rho, eta);
+            Eigen::VectorXd p = res.pressure;
+            const SolveReport rep = solveOnce(sys, p);
+            res.iterations += rep.iterations;
+            res.residual = rep.residual;
+            res.picardIterations = it;
+            const double scale = (p.array() - grid_.ambientPressure()).abs().maxCoeff();
+            change = (p - res.pressure).cwiseAbs().maxCoeff() / std::max(scale, 1e-300);
+            res.pressure += options_.picardRelaxation * (p - res.pressure);
+            if (!std::isfinite(change))
+                throw std::runtime_error("ReynoldsSolver: Picard iteration on the pressure-"
+                                         "dependent lubricant diverged at step " +
+                                         std::to_string(it));
+            if (change <= options_.picardTolerance || scale == 0.0) break;
+            if (it == options_.maxPicardIterations)
+                throw std::runtime_error(
+                    "ReynoldsSolver: Picard iteration on the pressure-dependent lubricant not "
+                    "converged after " + std::to_string(it) + " steps (relative change " +
+                    std::to_string(change) + " > " + std::to_string(options_.picardTolerance) +
+                    "); try picardRelaxation < 1");
+        }
+    }
+    if (options_.cavitation == Cavitation::HalfSommerfeld)
+        for (int k = 0; k < n; ++k)
+            if (grid_.kind(k) == NodeKind::Film && res.pressure[k] < options_.cavitationPressure)
+                res.pressure[k] = options_.cavitationPressure;
+    return res;
+}
+
+}  // namespace flexehd::lube

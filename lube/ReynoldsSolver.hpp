@@ -1,0 +1,82 @@
+#pragma once
+// ReynoldsSolver: one film solve — assemble the finite-volume Reynolds system (ReynoldsSystem)
+// for the caller's film state and solve it with the chosen cavitation condition and solver.
+//
+// Cavitation conditions:
+//   None            full-Sommerfeld: the linear system, sub-ambient pressures allowed;
+//   HalfSommerfeld  the full-Sommerfeld solution with p < p_cav clipped to p_cav afterwards
+//                   (not mass conserving; for comparison with classical charts);
+//   Reynolds        Swift–Stieber: p ≥ p_cav as a complementarity problem.
+// Solvers: Psor (baseline, PsorSolver) or ActiveSet (fast, ActiveSetSolver). A pressure-
+// dependent Lubricant makes the problem nonlinear; it is solved by Picard iteration on ρ(p),
+// η(p), each step a full solve warm-started from the previous one.
+#include <Eigen/Core>
+#include <vector>
+
+#include "lube/ActiveSetSolver.hpp"
+#include "lube/FilmGrid.hpp"
+#include "lube/FilmState.hpp"
+#include "lube/Lubricant.hpp"
+#include "lube/PsorSolver.hpp"
+#include "lube/ReynoldsSystem.hpp"
+#include "lube/SolverControl.hpp"
+
+namespace flexehd::lube {
+
+enum class Cavitation { None, HalfSommerfeld, Reynolds };
+enum class SolverKind { Psor, ActiveSet };
+
+struct ReynoldsOptions {
+    Cavitation cavitation = Cavitation::Reynolds;
+    SolverKind solver = SolverKind::ActiveSet;
+    double cavitationPressure = 0.0;  ///< p_cav (Pa), same datum as the grid pressures
+    SolverControl control;            ///< tolerance on ReynoldsSystem::residual
+    double omega = 0.0;               ///< PSOR relaxation, 0 = automatic
+    double picardTolerance = 1e-8;    ///< pressure-dependent lubricant: max|Δp| / max|p|
+    int maxPicardIterations = 200;
+    double picardRelaxation = 1.0;    ///< under-relaxation of p between Picard steps
+    /// Active-set solver, cold start: solve first on grids coarsened 2×, 4×, … (down to ~1000
+    /// nodes) and prolong bilinearly, so that the fine active set starts within a cell or two
+    /// of the answer (the active set moves one cell per iteration otherwise).
+    bool gridSequencing = true;
+};
+
+struct ReynoldsResult {
+    Eigen::VectorXd pressure;  ///< nodal pressure (Pa)
+    int iterations = 0;        ///< solver iterations, summed over Picard steps
+    int picardIterations = 0;  ///< 1 for a constant-property lubricant
+    int coarseIterations = 0;  ///< active-set iterations on the coarse grids (grid sequencing)
+    double residual = 0.0;     ///< final relative natural residual (before half-Sommerfeld clip)
+};
+
+class ReynoldsSolver {
+public:
+    ReynoldsSolver(FilmGrid grid, Lubricant lubricant, ReynoldsOptions options = {});
+
+    /// warmStart: a previous pressure field on the same grid (or nullptr).
+    ReynoldsResult solve(const FilmState& film, const Eigen::VectorXd* warmStart = nullptr);
+
+    const FilmGrid& grid() const { return grid_; }
+    const Lubricant& lubricant() const { return lubricant_; }
+    const ReynoldsOptions& options() const { return options_; }
+
+private:
+    SolveReport solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd& p);
+    /// Grid-sequenced starting pressure on the fine grid (empty if unavailable).
+    Eigen::VectorXd sequencedStart(const FilmState& film, int& coarseIterations);
+
+    struct Level {
+        FilmGrid grid;
+        std::vector<int> axialMap;  // row of the next finer grid for each row of this one
+        ActiveSetSolver solver;
+    };
+
+    FilmGrid grid_;
+    Lubricant lubricant_;
+    ReynoldsOptions options_;
+    PsorSolver psor_;
+    ActiveSetSolver fast_;
+    std::vector<Level> coarse_;  // coarse_[0] is 2× coarser than grid_, coarse_[1] 4×, ...
+};
+
+}  // namespace flexehd::lube

@@ -1,0 +1,95 @@
+#pragma once
+// ReynoldsSystem: the conservative finite-volume discretisation of the Reynolds equation
+// (GUIDE eq. 1) on a FilmGrid, written as the linear system A p = b of the mass balance of
+// every node's control volume V_k:
+//
+//   Σ_faces f  [ c_f (p_k − p_nb) + m_f ]  + A_k ρ_k ∂h_k/∂t = 0,
+//   c_f = ρ_f h_f³ L_f / (12 η_f d_f)        (Poiseuille conductance, kg/(s·Pa))
+//   m_f = (U_n/2) ρ_f h_f L_f                (Couette mass flux out of V_k, kg/s)
+//
+// with face values h_f = (h_k + h_nb)/2 (central, second order), L_f the face length and d_f
+// the node distance. Rows of Fixed and Void nodes are identity rows (p = prescribed); their
+// columns are eliminated into b, so A is symmetric positive definite and an M-matrix.
+//
+// Cavitation (Reynolds/Swift–Stieber) turns it into the linear complementarity problem
+//   p ≥ p_cav,  w = A p − b ≥ 0,  (p − p_cav)·w = 0      on Film nodes,
+// solved by PsorSolver or ActiveSetSolver. Convergence criterion (docs/lube.md §3): the
+// natural residual r_k = min(p_k − p_cav, w_k / A_kk) in pascals, relative to the pressure scale:
+//   residual = max_k |r_k| / max_k |p_k − p_ambient|.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <limits>
+#include <vector>
+
+#include "lube/FilmGrid.hpp"
+#include "lube/FilmState.hpp"
+
+namespace flexehd::lube {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+/// Visits every face of the node-centred control volumes once: visit(a, b, axial, L, d) with b
+/// the neighbour of a in +z (axial == true) or +θ, L the face length (m), d the distance (m).
+/// Faces between two Void nodes carry no film and are skipped.
+template <class Visit>
+void forEachFace(const FilmGrid& g, Visit&& visit) {
+    const int nz = g.nAxial(), nt = g.nTheta();
+    const double R = g.radius();
+    const double arcD = R * g.dTheta();
+    for (int i = 0; i < nz; ++i) {
+        for (int j = 0; j < nt; ++j) {
+            const int a = g.index(i, j);
+            if (i + 1 < nz) {
+                const int b = g.index(i + 1, j);
+                if (!(g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void))
+                    visit(a, b, true, R * g.angularWidth(j), g.z(i + 1) - g.z(i));
+            }
+            if (j + 1 < nt || g.periodic()) {
+                const int b = g.index(i, (j + 1) % nt);
+                if (!(g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void))
+                    visit(a, b, false, g.axialWidth(i), arcD);
+            }
+        }
+    }
+}
+
+/// Face value of a nodal field: the mean of both nodes, or the non-Void node's value when the
+/// face borders a Void node (the film ends there; a mask's h is not used).
+inline double faceValue(const FilmGrid& g, const Eigen::VectorXd& v, int a, int b) {
+    if (g.kind(a) == NodeKind::Void) return v[b];
+    if (g.kind(b) == NodeKind::Void) return v[a];
+    return 0.5 * (v[a] + v[b]);
+}
+
+/// Throws std::invalid_argument unless the film state fits the grid: h of size N, finite and
+/// positive on all non-Void nodes, dhdt empty or of size N and finite, velocities finite.
+void validateFilmState(const FilmGrid& grid, const FilmState& film);
+
+class ReynoldsSystem {
+public:
+    /// Assembles A and b for the nodal density ρ and viscosity η (sizes N, positive).
+    ReynoldsSystem(const FilmGrid& grid, const FilmState& film, const Eigen::VectorXd& density,
+                   const Eigen::VectorXd& viscosity);
+
+    const FilmGrid& grid() const { return *grid_; }
+    const SparseMatrix& matrix() const { return A_; }
+    const Eigen::VectorXd& rhs() const { return b_; }
+    const Eigen::VectorXd& diagonal() const { return diag_; }
+    /// True for the rows subject to the cavitation bound (Film nodes).
+    bool isFilm(int k) const { return grid_->kind(k) == NodeKind::Film; }
+
+    /// Natural residual (see header comment). pLower = −∞ for the unconstrained problem.
+    double residual(const Eigen::VectorXd& p,
+                    double pLower = -std::numeric_limits<double>::infinity()) const;
+
+    /// Starting vector: prescribed pressures on Fixed/Void nodes, max(pLower, ambient) on Film.
+    Eigen::VectorXd initialGuess(double pLower) const;
+
+private:
+    const FilmGrid* grid_;
+    SparseMatrix A_;
+    Eigen::VectorXd b_;
+    Eigen::VectorXd diag_;
+};
+
+}  // namespace flexehd::lube

@@ -1,0 +1,17 @@
+#pragma once
+// Settings and report shared by the complementarity solvers (PsorSolver, ActiveSetSolver).
+namespace flexehd::lube {
+
+struct SolverControl {
+    /// Stop when ReynoldsSystem::residual (relative natural residual) <= tolerance.
+    double tolerance = 1e-8;
+    /// PSOR sweeps or active-set iterations before giving up (std::runtime_error).
+    int maxIterations = 200000;
+};
+
+struct SolveReport {
+    int iterations = 0;     ///< PSOR sweeps, or active-set iterations (= factorizations)
+    double residual = 0.0;  ///< final relative natural residual
+};
+
+}  // namespace flexehd::lube
