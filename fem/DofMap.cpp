@@ -40,14 +40,59 @@ void DofMap::constrainDof(Index dof, double value) {
     if (final_) throw std::logic_error("DofMap: constraints added after finalize()");
     if (dof < 0 || dof >= numDofs())
         throw std::out_of_range("DofMap: DOF " + std::to_string(dof) + " out of range");
+    if (equation_[dof] == -2)
+        throw std::invalid_argument("DofMap: DOF " + std::to_string(dof) + " is tied by a rigid link, cannot be held");
     equation_[dof] = -1;
     prescribed_(dof) = value;
+}
+
+int DofMap::addRigidLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& x, const Eigen::Vector3d& point) {
+    if (final_) throw std::logic_error("DofMap: link added after finalize()");
+    if (dofsPerNode_ != 3) throw std::logic_error("DofMap: rigid links need 3 DOFs per node");
+    if (nodes.empty()) throw std::invalid_argument("rigid link: the node set is empty");
+    Link link{nodes, Eigen::Matrix3Xd(3, nodes.size())};
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        const Index n = nodes[k];
+        for (int c = 0; c < 3; ++c) {
+            Index& e = equation_[3 * n + c];
+            if (e == -1) throw std::invalid_argument("rigid link: node " + std::to_string(n) + " is also held");
+            if (e == -2) throw std::invalid_argument("rigid link: node " + std::to_string(n) + " is in two links");
+            e = -2;
+        }
+        link.offsets.col(k) = x.col(n) - point;
+    }
+    links_.push_back(std::move(link));
+    return numLinks() - 1;
 }
 
 void DofMap::finalize() {
     if (final_) return;
     numFree_ = 0;
-    for (auto& e : equation_) e = (e < 0) ? -1 : numFree_++;
+    for (auto& e : equation_)
+        if (e >= 0) e = numFree_++;
+    numFree_ += 6 * numLinks();
+    // T: identity rows for free DOFs; [I  -[d]x] blocks for linked nodes (θ × d = -[d]x θ).
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(equation_.size() + 12 * equation_.size() / 3);
+    for (Index d = 0; d < numDofs(); ++d)
+        if (equation_[d] >= 0) t.emplace_back(d, equation_[d], 1.0);
+    for (int l = 0; l < numLinks(); ++l) {
+        const Index r = linkEquation(l);
+        const Link& link = links_[l];
+        for (std::size_t k = 0; k < link.nodes.size(); ++k) {
+            const Eigen::Vector3d dv = link.offsets.col(k);
+            Eigen::Matrix3d skew;
+            skew << 0, -dv(2), dv(1), dv(2), 0, -dv(0), -dv(1), dv(0), 0;
+            for (int i = 0; i < 3; ++i) {
+                const Index row = 3 * link.nodes[k] + i;
+                t.emplace_back(row, r + i, 1.0);
+                for (int j = 0; j < 3; ++j)
+                    if (skew(i, j) != 0.0) t.emplace_back(row, r + 3 + j, -skew(i, j));
+            }
+        }
+    }
+    T_.resize(numDofs(), numFree_);
+    T_.setFromTriplets(t.begin(), t.end());
     final_ = true;
 }
 
@@ -59,6 +104,11 @@ SparseMatrix DofMap::reduce(const SparseMatrix& K) const {
     requireFinal("reduce");
     if (K.rows() != numDofs() || K.cols() != numDofs())
         throw std::invalid_argument("DofMap::reduce: matrix size does not match the DOF map");
+    if (numLinks() > 0) {  // general path: Tᵀ K T
+        const SparseMatrix full = K.selfadjointView<Eigen::Upper>();
+        const SparseMatrix R = T_.transpose() * full * T_;
+        return R.triangularView<Eigen::Upper>();
+    }
     std::vector<int> outer(std::size_t(numFree_) + 1, 0);
     for (Index j = 0; j < numDofs(); ++j) {
         const Index cj = equation_[j];
@@ -85,6 +135,10 @@ SparseMatrix DofMap::reduce(const SparseMatrix& K) const {
 Eigen::VectorXd DofMap::reduceLoad(const Eigen::VectorXd& f, const SparseMatrix& K) const {
     requireFinal("reduceLoad");
     if (f.size() != numDofs()) throw std::invalid_argument("DofMap::reduceLoad: load size mismatch");
+    if (numLinks() > 0) {  // f_r = Tᵀ (f - K g)
+        if (prescribed_.cwiseAbs().maxCoeff() == 0.0) return T_.transpose() * f;
+        return T_.transpose() * (f - K.selfadjointView<Eigen::Upper>() * prescribed_);
+    }
     Eigen::VectorXd r(numFree_);
     for (Index d = 0; d < numDofs(); ++d)
         if (equation_[d] >= 0) r(equation_[d]) = f(d);
@@ -102,6 +156,7 @@ Eigen::VectorXd DofMap::reduceLoad(const Eigen::VectorXd& f, const SparseMatrix&
 
 Eigen::VectorXd DofMap::expand(const Eigen::VectorXd& free) const {
     requireFinal("expand");
+    if (numLinks() > 0) return T_ * free + prescribed_;
     Eigen::VectorXd u = prescribed_;
     for (Index d = 0; d < numDofs(); ++d)
         if (equation_[d] >= 0) u(d) = free(equation_[d]);
@@ -110,6 +165,7 @@ Eigen::VectorXd DofMap::expand(const Eigen::VectorXd& free) const {
 
 Eigen::MatrixXd DofMap::expandHomogeneous(const Eigen::MatrixXd& free) const {
     requireFinal("expandHomogeneous");
+    if (numLinks() > 0) return T_ * free;
     Eigen::MatrixXd u = Eigen::MatrixXd::Zero(numDofs(), free.cols());
     for (Index d = 0; d < numDofs(); ++d)
         if (equation_[d] >= 0) u.row(d) = free.row(equation_[d]);

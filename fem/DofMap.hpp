@@ -29,14 +29,23 @@ public:
     /// earlier ones for the same DOF. Only before finalize().
     void constrain(const std::vector<Index>& nodes, unsigned components, double value = 0.0);
     void constrainDof(Index dof, double value);
+    /// RBE2: ties the nodes rigidly to a new 6-DOF reference node at `point`,
+    /// u_s = u_r + θ_r × (x_s - x_r). The reference DOFs (u_x, u_y, u_z, θ_x, θ_y, θ_z)
+    /// become free unknowns numbered after all nodal ones, link by link. Needs
+    /// dofsPerNode == 3. Returns the link's index. Only before finalize().
+    int addRigidLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& nodeCoordinates,
+                     const Eigen::Vector3d& point);
     /// Numbers the free DOFs; call once after all constraints.
     void finalize();
 
     Index numDofs() const { return static_cast<Index>(equation_.size()); }
     Index numFree() const { return numFree_; }
-    Index numConstrained() const { return numDofs() - numFree_; }
+    Index numConstrained() const { return numDofs() - numFree_ + 6 * numLinks(); }
+    int numLinks() const { return static_cast<int>(links_.size()); }
+    /// First free-equation number of link l's six reference DOFs.
+    Index linkEquation(int l) const { return numFree_ - 6 * (numLinks() - l); }
     int dofsPerNode() const { return dofsPerNode_; }
-    /// Free-equation number of a full DOF, -1 if constrained.
+    /// Free-equation number of a full DOF, -1 if constrained, -2 if tied by a link.
     Index equation(Index dof) const { return equation_[dof]; }
     const Eigen::VectorXd& prescribed() const { return prescribed_; }
 
@@ -48,8 +57,17 @@ public:
     Eigen::VectorXd expand(const Eigen::VectorXd& free) const;
     Eigen::MatrixXd expandHomogeneous(const Eigen::MatrixXd& free) const;
 
+    /// The map as a matrix: u = T u_free + g (numDofs x numFree).
+    const SparseMatrix& transformation() const { return T_; }
+
 private:
+    struct Link {
+        std::vector<Index> nodes;
+        Eigen::Matrix3Xd offsets;  ///< x_s - x_r per node
+    };
     void requireFinal(const char* what) const;
+    std::vector<Link> links_;
+    SparseMatrix T_;
     int dofsPerNode_;
     std::vector<Index> equation_;  ///< before finalize: 0 free, -1 constrained
     Eigen::VectorXd prescribed_;

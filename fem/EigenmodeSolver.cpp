@@ -20,10 +20,12 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 class CholmodShiftInvert {
 public:
     using Scalar = double;
-    CholmodShiftInvert(const SparseMatrix& K, const SparseMatrix& M) : K_(K), M_(M) {}
+    CholmodShiftInvert(const SparseMatrix& K, const SparseMatrix& M, const StaticSolver* factorOfK)
+        : K_(K), M_(M), external_(factorOfK) {}
     Eigen::Index rows() const { return K_.rows(); }
     Eigen::Index cols() const { return K_.cols(); }
     void set_shift(double sigma) {
+        if (external_) return;  // σ = 0: the caller's factorization of K
         const auto t0 = Clock::now();
         llt_.compute(K_ - sigma * M_);
         if (llt_.info() != Eigen::Success)
@@ -33,7 +35,8 @@ public:
         factorSeconds = since(t0);
     }
     void perform_op(const double* x, double* y) const {
-        Eigen::Map<Eigen::VectorXd>(y, rows()) = llt_.solve(Eigen::Map<const Eigen::VectorXd>(x, rows()));
+        const Eigen::Map<const Eigen::VectorXd> in(x, rows());
+        Eigen::Map<Eigen::VectorXd>(y, rows()) = external_ ? external_->solve(Eigen::VectorXd(in)) : llt_.solve(in);
         ++operations;
     }
     double factorSeconds = 0.0;
@@ -42,6 +45,7 @@ public:
 private:
     const SparseMatrix& K_;
     const SparseMatrix& M_;
+    const StaticSolver* external_;
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> llt_;
 };
 
@@ -62,7 +66,8 @@ Eigen::VectorXd Eigenmodes::frequenciesHz() const {
     return f;
 }
 
-Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const EigenmodeOptions& opt) {
+Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const EigenmodeOptions& opt,
+                           const StaticSolver* factorOfK) {
     const Eigen::Index n = K.rows();
     if (K.cols() != n || M.rows() != n || M.cols() != n)
         throw std::invalid_argument("eigenmodes: K and M must be square and of equal size");
@@ -70,9 +75,11 @@ Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const E
         throw std::invalid_argument("eigenmodes: number of modes must be in [1, " + std::to_string(n - 1) +
                                     "], got " + std::to_string(opt.count));
     Eigenmodes out;
-    out.shift = opt.shift != 0.0 ? opt.shift : automaticShift(K, M);
+    if (factorOfK && factorOfK->size() != n)
+        throw std::invalid_argument("eigenmodes: the given factorization does not match K");
+    out.shift = factorOfK ? 0.0 : opt.shift != 0.0 ? opt.shift : automaticShift(K, M);
 
-    CholmodShiftInvert op(K, M);
+    CholmodShiftInvert op(K, M, factorOfK);
     Spectra::SparseSymMatProd<double, Eigen::Upper> Bop(M);
     const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * opt.count + 1, 20));
     Spectra::SymGEigsShiftSolver<CholmodShiftInvert, decltype(Bop), Spectra::GEigsMode::ShiftInvert> eigs(

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "fem/SparsityPattern.hpp"
+#include "fem/StaticSolver.hpp"
 
 namespace flexehd::fem {
 
@@ -29,6 +30,10 @@ struct Eigenmodes {
 
 /// K and M: upper triangles of the (constrained) stiffness and mass matrices.
 /// Throws std::runtime_error if the factorization fails or Lanczos does not converge.
-Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const EigenmodeOptions& options);
+/// With `factorOfK` (a factorization of K, which must then be positive definite, e.g. a
+/// body held at its interface) the shift is 0 and that factorization is reused instead
+/// of factoring K - σM again.
+Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const EigenmodeOptions& options,
+                           const StaticSolver* factorOfK = nullptr);
 
 }  // namespace flexehd::fem

@@ -72,14 +72,25 @@ Eigen::VectorXd ElasticityAssembler::thermalLoad(const ElasticMaterial& material
 }
 
 Eigen::VectorXd ElasticityAssembler::pressureLoad(const BoundarySurface& surface, double pressure) const {
+    return pressureLoad(surface, Eigen::VectorXd::Constant(mesh_.numNodes(), pressure));
+}
+
+Eigen::VectorXd ElasticityAssembler::pressureLoad(const BoundarySurface& surface,
+                                                  const Eigen::VectorXd& nodalPressure) const {
+    if (nodalPressure.size() != mesh_.numNodes())
+        throw std::invalid_argument("pressure load on '" + surface.name() + "': " +
+                                    std::to_string(nodalPressure.size()) + " nodal values for " +
+                                    std::to_string(mesh_.numNodes()) + " nodes");
     Eigen::VectorXd f = Eigen::VectorXd::Zero(numDofs());
     withType(mesh_.surface.type, [&]<ElementType T>() {
         if constexpr (dimension(T) == 2) {
             using El = SurfaceElement<T>;
             typename El::NodalVector fe;
+            typename El::Vector pe;
             for (std::size_t k = 0; k < surface.triangles().size(); ++k) {
                 const Index t = surface.triangles()[k];
-                El::pressure(elementCoordinates<El::kNodes>(mesh_.nodes, mesh_.surface, t), pressure,
+                for (int a = 0; a < El::kNodes; ++a) pe(a) = nodalPressure(mesh_.surface.nodes(a, t));
+                El::pressure(elementCoordinates<El::kNodes>(mesh_.nodes, mesh_.surface, t), pe,
                              surface.orientation()[k], fe);
                 for (int a = 0; a < El::kNodes; ++a)
                     f.segment<3>(3 * mesh_.surface.nodes(a, t)) += fe.template segment<3>(3 * a);

@@ -23,6 +23,9 @@ public:
                                 const Eigen::VectorXd& temperature, double referenceTemperature) const;
     /// Nodal forces of a uniform pressure p (Pa, positive pushes into the body).
     Eigen::VectorXd pressureLoad(const BoundarySurface& surface, double pressure) const;
+    /// Nodal forces of a pressure field given by nodal values (Pa, one per mesh node; only
+    /// the surface's nodes are used), interpolated with the surface shape functions.
+    Eigen::VectorXd pressureLoad(const BoundarySurface& surface, const Eigen::VectorXd& nodalPressure) const;
 
 private:
     const Mesh& mesh_;

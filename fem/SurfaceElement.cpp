@@ -53,6 +53,16 @@ void SurfaceElement<T>::pressure(const Coordinates& X, double p, double sign, No
     }
 }
 
+template <ElementType T>
+void SurfaceElement<T>::pressure(const Coordinates& X, const Vector& p, double sign, NodalVector& f) {
+    f.setZero();
+    for (const auto& q : rule<T>()) {
+        const auto N = Shape<T>::N(q.xi);
+        const Eigen::Vector3d n = (-N.dot(p) * sign * q.weight) * parametricNormal<T>(X, q.xi);
+        for (int a = 0; a < kNodes; ++a) f.template segment<3>(3 * a) += N(a) * n;
+    }
+}
+
 template struct SurfaceElement<ElementType::Tri3>;
 template struct SurfaceElement<ElementType::Tri6>;
 

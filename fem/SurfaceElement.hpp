@@ -24,6 +24,8 @@ struct SurfaceElement {
     /// -p ∫ N_a n dA (outward n = sign × the parametric normal): nodal forces of a uniform
     /// pressure p acting on the body.
     static void pressure(const Coordinates& X, double p, double sign, NodalVector& f);
+    /// The same for a pressure interpolated from nodal values p(ξ) = Σ N_a p_a.
+    static void pressure(const Coordinates& X, const Vector& p, double sign, NodalVector& f);
 };
 
 extern template struct SurfaceElement<ElementType::Tri3>;

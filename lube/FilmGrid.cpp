@@ -111,17 +111,21 @@ void FilmGrid::fixNode(int k, double pressure) {
                                 " outside [0, " + std::to_string(size()) + ")");
     if (!std::isfinite(pressure))
         throw std::invalid_argument("FilmGrid::fixNode: pressure must be finite");
-    userKind_[static_cast<std::size_t>(k)] = NodeKind::Fixed;
-    userPressure_[static_cast<std::size_t>(k)] = pressure;
-    refreshKinds();
+    const auto sk = static_cast<std::size_t>(k);
+    userKind_[sk] = NodeKind::Fixed;
+    userPressure_[sk] = pressure;
+    kind_[sk] = NodeKind::Fixed;  // a user override wins over edges: no full refresh (O(N))
+    fixedPressure_[sk] = pressure;
 }
 
 void FilmGrid::voidNode(int k) {
     if (k < 0 || k >= size())
         throw std::out_of_range("FilmGrid::voidNode: node " + std::to_string(k) +
                                 " outside [0, " + std::to_string(size()) + ")");
-    userKind_[static_cast<std::size_t>(k)] = NodeKind::Void;
-    refreshKinds();
+    const auto sk = static_cast<std::size_t>(k);
+    userKind_[sk] = NodeKind::Void;
+    kind_[sk] = NodeKind::Void;
+    fixedPressure_[sk] = ambient_;
 }
 
 double FilmGrid::prescribedPressure(int k) const {

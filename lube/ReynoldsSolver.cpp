@@ -1,5 +1,6 @@
 #include "lube/ReynoldsSolver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <optional>
@@ -64,14 +65,14 @@ ReynoldsSolver::ReynoldsSolver(FilmGrid grid, Lubricant lubricant, ReynoldsOptio
     if (grid_.filmNodeCount() == 0)
         throw std::invalid_argument("ReynoldsSolver: the grid has no Film node (all pressures "
                                     "prescribed); refine it or change the edge conditions");
-    if (options_.gridSequencing && options_.solver == SolverKind::ActiveSet &&
+    if (options_.gridSequencing && options_.solver != SolverKind::Psor &&
         options_.cavitation == Cavitation::Reynolds) {
         const FilmGrid* g = &grid_;
         std::vector<int> map;
         while (g->size() > 2000) {
             std::optional<FilmGrid> c = g->coarsened(map);
             if (!c || c->filmNodeCount() == 0) break;
-            coarse_.push_back(Level{std::move(*c), map, ActiveSetSolver()});
+            coarse_.push_back(Level{std::move(*c), map, ActiveSetSolver(), MultigridSolver()});
             g = &coarse_.back().grid;
         }
     }
@@ -92,8 +93,15 @@ Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coars
             const ReynoldsSystem sys(g, states[static_cast<std::size_t>(l)],
                                      Eigen::VectorXd::Constant(g.size(), lubricant_.referenceDensity()),
                                      Eigen::VectorXd::Constant(g.size(), lubricant_.referenceViscosity()));
-            const SolveReport rep = coarse_[static_cast<std::size_t>(l - 1)].solver.solve(
-                sys, p, options_.cavitationPressure, options_.control);
+            Level& lev = coarse_[static_cast<std::size_t>(l - 1)];
+            // Nested iteration: a coarse answer is only a start, accurate well below the
+            // coarse discretisation error at 1e-4.
+            SolverControl coarseControl = options_.control;
+            coarseControl.tolerance = std::max(coarseControl.tolerance, 1e-4);
+            const SolveReport rep =
+                options_.solver == SolverKind::Multigrid
+                    ? lev.multigrid.solve(sys, p, options_.cavitationPressure, coarseControl)
+                    : lev.solver.solve(sys, p, options_.cavitationPressure, options_.control);
             coarseIterations += rep.iterations;
             p = prolong(p, g, gridAt(l - 1), coarse_[static_cast<std::size_t>(l - 1)].axialMap);
         }
@@ -108,6 +116,8 @@ SolveReport ReynoldsSolver::solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd
                              ? options_.cavitationPressure
                              : -std::numeric_limits<double>::infinity();
     if (options_.solver == SolverKind::Psor) return psor_.solve(sys, p, lower, options_.control);
+    if (options_.solver == SolverKind::Multigrid)
+        return multigrid_.solve(sys, p, lower, options_.control);
     return fast_.solve(sys, p, lower, options_.control);
 }
 

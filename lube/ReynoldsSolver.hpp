@@ -7,7 +7,8 @@
 //   HalfSommerfeld  the full-Sommerfeld solution with p < p_cav clipped to p_cav afterwards
 //                   (not mass conserving; for comparison with classical charts);
 //   Reynolds        Swift–Stieber: p ≥ p_cav as a complementarity problem.
-// Solvers: Psor (baseline, PsorSolver) or ActiveSet (fast, ActiveSetSolver). A pressure-
+// Solvers: Psor (baseline, PsorSolver), ActiveSet (exact, ActiveSetSolver) or Multigrid (fast,
+// cost-linear, MultigridSolver). A pressure-
 // dependent Lubricant makes the problem nonlinear; it is solved by Picard iteration on ρ(p),
 // η(p), each step a full solve warm-started from the previous one.
 #include <Eigen/Core>
@@ -17,6 +18,7 @@
 #include "lube/FilmGrid.hpp"
 #include "lube/FilmState.hpp"
 #include "lube/Lubricant.hpp"
+#include "lube/MultigridSolver.hpp"
 #include "lube/PsorSolver.hpp"
 #include "lube/ReynoldsSystem.hpp"
 #include "lube/SolverControl.hpp"
@@ -24,7 +26,7 @@
 namespace flexehd::lube {
 
 enum class Cavitation { None, HalfSommerfeld, Reynolds };
-enum class SolverKind { Psor, ActiveSet };
+enum class SolverKind { Psor, ActiveSet, Multigrid };
 
 struct ReynoldsOptions {
     Cavitation cavitation = Cavitation::Reynolds;
@@ -35,9 +37,10 @@ struct ReynoldsOptions {
     double picardTolerance = 1e-8;    ///< pressure-dependent lubricant: max|Δp| / max|p|
     int maxPicardIterations = 200;
     double picardRelaxation = 1.0;    ///< under-relaxation of p between Picard steps
-    /// Active-set solver, cold start: solve first on grids coarsened 2×, 4×, … (down to ~1000
-    /// nodes) and prolong bilinearly, so that the fine active set starts within a cell or two
-    /// of the answer (the active set moves one cell per iteration otherwise).
+    /// Active-set and multigrid solvers, cold start: solve first on grids coarsened 2×, 4×, …
+    /// (down to ~2000 nodes) and prolong bilinearly, so that the fine active set starts within a
+    /// cell or two of the answer (the active set moves one cell per iteration otherwise); for
+    /// multigrid this is nested iteration (full multigrid start).
     bool gridSequencing = true;
 };
 
@@ -45,7 +48,7 @@ struct ReynoldsResult {
     Eigen::VectorXd pressure;  ///< nodal pressure (Pa)
     int iterations = 0;        ///< solver iterations, summed over Picard steps
     int picardIterations = 0;  ///< 1 for a constant-property lubricant
-    int coarseIterations = 0;  ///< active-set iterations on the coarse grids (grid sequencing)
+    int coarseIterations = 0;  ///< solver iterations on the coarse grids (grid sequencing)
     double residual = 0.0;     ///< final relative natural residual (before half-Sommerfeld clip)
 };
 
@@ -69,6 +72,7 @@ private:
         FilmGrid grid;
         std::vector<int> axialMap;  // row of the next finer grid for each row of this one
         ActiveSetSolver solver;
+        MultigridSolver multigrid;
     };
 
     FilmGrid grid_;
@@ -76,6 +80,7 @@ private:
     ReynoldsOptions options_;
     PsorSolver psor_;
     ActiveSetSolver fast_;
+    MultigridSolver multigrid_;
     std::vector<Level> coarse_;  // coarse_[0] is 2× coarser than grid_, coarse_[1] 4×, ...
 };
 

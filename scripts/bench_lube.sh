@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times PSOR and the active-set solver on a skirt-like film and a journal bearing at grids
+# Times PSOR, the active-set and the multigrid solver on a skirt-like film and a journal bearing at grids
 # 64×128 … 512×1024 (axial × circumferential) and writes the table into docs/lube.md between
 # the markers <!-- bench:begin --> and <!-- bench:end -->.
 #   scripts/bench_lube.sh [maxAxial=512] [tolerance=1e-8]

@@ -7,5 +7,8 @@
 namespace flexehd::cli {
 
 void addModesCommand(CLI::App& app);
+void addReduceCommand(CLI::App& app);
+void addInspectCommand(CLI::App& app);
+void addExportModesCommand(CLI::App& app);
 
 }  // namespace flexehd::cli

@@ -1,14 +1,12 @@
 // `flexehd modes`: natural frequencies and mode shapes of an elastic body, written for
 // ParaView (one .vtu per mode, a .pvd whose time steps are the mode numbers).
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "cosim/PvdWriter.hpp"
-#include "cosim/VtuWriter.hpp"
+#include "cosim/ModeShapeExport.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "fem/MeshReader.hpp"
@@ -28,36 +26,6 @@ struct ModesArgs {
     std::string out;
     bool json = false;
 };
-
-// Mode shapes are M-normalised (units kg^-1/2); for viewing they are scaled so that the
-// largest displacement is 5 % of the model's bounding-box diagonal, and the factor back
-// to the M-normalised shape is stored with each file.
-void writeModeFiles(const ModesArgs& a, const fem::Mesh& mesh, const fem::ModalAnalysis& result,
-                    nlohmann::json& files) {
-    namespace fs = std::filesystem;
-    fs::create_directories(a.out);
-    const double diagonal = (mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff()).norm();
-    const Eigen::VectorXd f = result.modes.frequenciesHz();
-    cosim::PvdCollection pvd;
-    for (Eigen::Index k = 0; k < result.modes.shapes.cols(); ++k) {
-        Eigen::MatrixXd u = Eigen::Map<const Eigen::MatrixXd>(result.modes.shapes.col(k).data(), 3, mesh.numNodes());
-        const double umax = u.colwise().norm().maxCoeff();
-        const double scale = umax > 0.0 ? 0.05 * diagonal / umax : 1.0;
-        u *= scale;
-        const std::string name = fmt::format("mode_{:03d}.vtu", k + 1);
-        cosim::writeVtu((fs::path(a.out) / name).string(), mesh, {{"displacement", u}},
-                        {{"mode", double(k + 1)},
-                         {"frequency_hz", f(k)},
-                         {"eigenvalue_rad2_per_s2", result.modes.eigenvalues(k)},
-                         {"mass_normalisation_factor", 1.0 / scale}});
-        pvd.add(double(k + 1), name);
-        files.push_back(name);
-    }
-    const std::string pvdPath = (fs::path(a.out) / "modes.pvd").string();
-    pvd.write(pvdPath);
-    files.push_back("modes.pvd");
-    spdlog::info("wrote {} mode shapes and {}", result.modes.shapes.cols(), pvdPath);
-}
 
 void runModes(const ModesArgs& a) {
     Stopwatch total;
@@ -86,7 +54,10 @@ void runModes(const ModesArgs& a) {
     double writeSeconds = 0.0;
     if (!a.out.empty()) {
         Stopwatch w;
-        writeModeFiles(a, mesh, result, files);
+        for (const auto& name : cosim::writeModeShapes(a.out, mesh, result.modes.shapes,
+                                                       result.modes.frequenciesHz(), result.modes.eigenvalues))
+            files.push_back(name);
+        spdlog::info("wrote {} mode shapes and {}/modes.pvd", result.modes.shapes.cols(), a.out);
         writeSeconds = w.seconds();
     }
 

@@ -25,6 +25,9 @@ int main(int argc, char** argv) {
     });
 
     flexehd::cli::addModesCommand(app);
+    flexehd::cli::addReduceCommand(app);
+    flexehd::cli::addInspectCommand(app);
+    flexehd::cli::addExportModesCommand(app);
 
     try {
         app.parse(argc, argv);

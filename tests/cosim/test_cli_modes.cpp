@@ -1,9 +1,5 @@
 // The `flexehd modes` command as a user runs it: JSON output, ParaView files, errors.
-#include <unistd.h>
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,31 +12,14 @@
 #include <nlohmann/json.hpp>
 
 #include "../fem/TestData.hpp"
+#include "CliRunner.hpp"
 
+using flexehd::test::CommandResult;
 using flexehd::test::dataPath;
+using flexehd::test::runFlexehd;
 using testing::HasSubstr;
 
 namespace {
-struct CommandResult {
-    int status;
-    std::string out, err;
-};
-
-CommandResult runFlexehd(const std::string& args) {
-    const auto dir = std::filesystem::temp_directory_path();
-    const std::string errFile = (dir / ("flexehd_cli_err_" + std::to_string(::getpid()))).string();
-    const std::string cmd = std::string(FLEXEHD_BINARY) + " " + args + " 2>" + errFile;
-    CommandResult r;
-    FILE* p = popen(cmd.c_str(), "r");
-    std::array<char, 4096> buf;
-    while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
-    r.status = WEXITSTATUS(pclose(p));
-    std::ifstream e(errFile);
-    r.err.assign(std::istreambuf_iterator<char>(e), {});
-    std::filesystem::remove(errFile);
-    return r;
-}
-
 const std::string kSteel = " --E 2.1e11 --nu 0.3 --rho 7850";
 }  // namespace
 

@@ -1,4 +1,4 @@
-// bench_lube: times PSOR and the active-set solver to the same relative natural residual on a
+// bench_lube: times PSOR, the active-set and the multigrid solver to the same relative natural residual on a
 // skirt-like film and on a plain journal bearing, at grids nAxial×nTheta from 64×128 up.
 // Not a test: prints a Markdown table (scripts/bench_lube.sh writes it into docs/).
 //   bench_lube [maxAxial=512] [tolerance=1e-8]
@@ -63,17 +63,19 @@ int main(int argc, char** argv) {
     const int maxAxial = argc > 1 ? std::atoi(argv[1]) : 512;
     const double tol = argc > 2 ? std::atof(argv[2]) : 1e-8;
     std::printf("| problem | grid (axial×circ.) | nodes | PSOR sweeps | PSOR s | active-set it. "
-                "(coarse) | active-set s | speed-up | max |Δp|/p_max |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+                "(coarse) | active-set s | multigrid it. (coarse) | multigrid s | multigrid µs/node "
+                "| speed-up vs PSOR | max |Δp|/p_max PSOR | max |Δp|/p_max multigrid |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    const SolverKind kinds[3] = {SolverKind::Psor, SolverKind::ActiveSet, SolverKind::Multigrid};
     for (const std::string name : {"skirt", "journal"}) {
         for (int nz = 64; nz <= maxAxial; nz *= 2) {
             const int nt = 2 * nz;
-            ReynoldsResult res[2];
-            double sec[2];
-            for (int s = 0; s < 2; ++s) {
+            ReynoldsResult res[3];
+            double sec[3];
+            for (int s = 0; s < 3; ++s) {
                 Problem pb = name == "skirt" ? skirt(nz, nt) : journal(nz, nt);
                 ReynoldsOptions opt;
-                opt.solver = s == 0 ? SolverKind::Psor : SolverKind::ActiveSet;
+                opt.solver = kinds[s];
                 opt.control.tolerance = tol;
                 opt.control.maxIterations = 1000000;
                 ReynoldsSolver rs(pb.grid, Lubricant(0.01), opt);
@@ -81,11 +83,15 @@ int main(int argc, char** argv) {
                 res[s] = rs.solve(pb.film);
                 sec[s] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             }
+            // Errors against the active-set answer (exact to round-off).
             const double pmax = res[1].pressure.maxCoeff();
-            std::printf("| %s | %d×%d | %d | %d | %.3f | %d (%d) | %.3f | %.2f | %.1e |\n",
+            auto err = [&](int s) { return (res[s].pressure - res[1].pressure).cwiseAbs().maxCoeff() / pmax; };
+            std::printf("| %s | %d×%d | %d | %d | %.3f | %d (%d) | %.3f | %d (%d) | %.3f | %.2f | %.0f | "
+                        "%.1e | %.1e |\n",
                         name.c_str(), nz, nt, nz * nt, res[0].iterations, sec[0],
-                        res[1].iterations, res[1].coarseIterations, sec[1], sec[0] / sec[1],
-                        (res[0].pressure - res[1].pressure).cwiseAbs().maxCoeff() / pmax);
+                        res[1].iterations, res[1].coarseIterations, sec[1], res[2].iterations,
+                        res[2].coarseIterations, sec[2], 1e6 * sec[2] / (nz * nt), sec[0] / sec[2],
+                        err(0), err(2));
             std::fflush(stdout);
         }
     }

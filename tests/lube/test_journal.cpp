@@ -97,7 +97,7 @@ TEST(JournalLong, HalfSommerfeldComponents) {
             EXPECT_NEAR(Wr, 0.47669, 1e-5);
             EXPECT_NEAR(Wt, 0.99839, 1e-5);
         }
-        for (SolverKind s : {SolverKind::ActiveSet, SolverKind::Psor}) {
+        for (SolverKind s : {SolverKind::ActiveSet, SolverKind::Psor, SolverKind::Multigrid}) {
             const LongResult r = solveLong(jb, 240, Cavitation::HalfSommerfeld, s);
             EXPECT_NEAR(r.Wr, Wr, 5e-3 * std::hypot(Wr, Wt)) << "eps " << eps;
             EXPECT_NEAR(r.Wt, Wt, 5e-3 * std::hypot(Wr, Wt)) << "eps " << eps;
@@ -117,6 +117,9 @@ TEST(JournalLong, ReynoldsConditionMatchesShooting) {
         for (int n : {120, 480}) {
             const LongResult fast = solveLong(jb, n, Cavitation::Reynolds, SolverKind::ActiveSet);
             const double err = std::hypot(fast.Wr - ref.Wr, fast.Wt - ref.Wt) / W;
+            const LongResult mg = solveLong(jb, n, Cavitation::Reynolds, SolverKind::Multigrid);
+            EXPECT_NEAR(mg.Wr, fast.Wr, 1e-8 * W) << "multigrid = active set";
+            EXPECT_NEAR(mg.Wt, fast.Wt, 1e-8 * W) << "multigrid = active set";
             EXPECT_LT(err, n == 480 ? 5e-3 : 2e-2) << "eps " << eps << " n " << n;
             EXPECT_LT(err, prev) << "eps " << eps;
             prev = err;

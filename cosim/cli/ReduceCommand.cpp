@@ -1,0 +1,130 @@
+// `flexehd reduce`: Craig–Bampton reduced body of a mesh, written as an HDF5 file
+// (docs/reduced-body-format.md) for the co-simulation.
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include <spdlog/spdlog.h>
+
+#include "cosim/cli/CliSupport.hpp"
+#include "cosim/cli/Commands.hpp"
+#include "fem/MeshReader.hpp"
+#include "modal/CraigBamptonReducer.hpp"
+#include "modal/ReducedBodyFile.hpp"
+
+namespace flexehd::cli {
+namespace {
+
+struct ReduceArgs {
+    std::string mesh, out;
+    int order = 0;
+    double size = 0.0;
+    fem::ElasticMaterial material{0, 0, 0};
+    std::vector<std::string> interfaces;
+    modal::ReductionSettings settings;
+    bool json = false;
+};
+
+void runReduce(const ReduceArgs& a) {
+    Stopwatch total;
+    std::vector<modal::InterfaceSpec> specs;
+    for (const auto& s : a.interfaces) specs.push_back(modal::parseInterface(s));
+    spdlog::info("reading mesh {}", a.mesh);
+    const fem::Mesh mesh = fem::readMesh(a.mesh, {a.order, a.size, true});
+    spdlog::info("mesh: {} nodes, {} {} elements, {} DOFs", mesh.numNodes(), mesh.volume.size(),
+                 fem::name(mesh.volume.type), 3 * mesh.numNodes());
+    spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s)", specs.size(),
+                 a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "", a.settings.staticCorrection.size());
+    modal::ReductionReport rep;
+    modal::ReducedBody body = modal::CraigBamptonReducer(mesh, a.material).reduce(specs, a.settings, &rep);
+    body.meshPath = a.mesh;
+    body.meshHash = modal::fnv1a64File(a.mesh);
+    body.meshSize = a.size;
+    spdlog::info("basis: {} constraint + {} normal + {} static-correction vectors ({} dependent dropped) -> {} modes",
+                 rep.constraintModes, rep.normalModes, rep.staticCorrectionModes, rep.droppedDependent,
+                 body.numModes());
+    Stopwatch w;
+    modal::writeReducedBody(body, a.out);
+    const double writeSeconds = w.seconds();
+    spdlog::info("wrote {} ({:.2f} s)", a.out, writeSeconds);
+
+    const int rigid = static_cast<int>(std::count(body.rigidBody.begin(), body.rigidBody.end(), 1));
+    if (a.json) {
+        nlohmann::json doc;
+        doc["mesh"] = a.mesh;
+        doc["output"] = a.out;
+        doc["dofs"] = rep.dofs;
+        doc["modes"] = body.numModes();
+        doc["basis"] = {{"constraint", rep.constraintModes},
+                        {"normal", rep.normalModes},
+                        {"static_correction", rep.staticCorrectionModes},
+                        {"dropped_dependent", rep.droppedDependent}};
+        doc["rigid_body_modes"] = rigid;
+        doc["frequencies_hz"] = std::vector<double>(body.frequenciesHz.data(),
+                                                    body.frequenciesHz.data() + body.frequenciesHz.size());
+        doc["timings_s"] = {{"assemble", rep.assembleSeconds},
+                            {"factorize", rep.factorSeconds},
+                            {"constraint_modes", rep.constraintModeSeconds},
+                            {"normal_modes", rep.normalModeSeconds},
+                            {"static_correction", rep.staticCorrectionSeconds},
+                            {"orthonormalise", rep.orthonormaliseSeconds},
+                            {"write", writeSeconds},
+                            {"total", total.seconds()}};
+        doc["peak_memory_mib"] = peakMemoryMiB();
+        printJson(doc);
+        return;
+    }
+    std::printf("%s -> %s: %d modes (%d constraint, %d normal, %d static correction), %d rigid-body\n",
+                a.mesh.c_str(), a.out.c_str(), body.numModes(), rep.constraintModes, rep.normalModes,
+                rep.staticCorrectionModes, rigid);
+    std::printf("%6s  %16s\n", "mode", "frequency [Hz]");
+    for (int k = 0; k < body.numModes(); ++k)
+        std::printf("%6d  %16.6g%s\n", k + 1, body.frequenciesHz(k), body.rigidBody[k] ? "  (rigid-body)" : "");
+    std::printf("total time %.2f s, peak memory %.0f MiB\n", total.seconds(), peakMemoryMiB());
+}
+
+}  // namespace
+
+void addReduceCommand(CLI::App& app) {
+    auto a = std::make_shared<ReduceArgs>();
+    a->settings.normalModes = 30;
+    a->settings.axialOrder = 4;
+    a->settings.circumferentialOrder = 6;
+    a->settings.dampingRatio = 0.02;
+    CLI::App* cmd = app.add_subcommand("reduce", "Craig–Bampton reduced body of a mesh, written to an HDF5 file");
+    cmd->add_option("--mesh", a->mesh, "Mesh file: .msh or .geo")->required();
+    cmd->add_option("--order", a->order, "Element order 1 or 2 (default: .geo → 2, .msh → as stored)")
+        ->check(CLI::IsMember({1, 2}));
+    cmd->add_option("--size", a->size, "Target element size for .geo files [m]")->check(CLI::PositiveNumber);
+    cmd->add_option("--E", a->material.E, "Young's modulus [Pa]")->required()->check(CLI::PositiveNumber);
+    cmd->add_option("--nu", a->material.nu, "Poisson's ratio [-]")->required()->check(CLI::Range(-0.999, 0.499));
+    cmd->add_option("--rho", a->material.rho, "Density [kg/m^3]")->required()->check(CLI::PositiveNumber);
+    cmd->add_option("--interface", a->interfaces,
+                    "Interface node set tied to a 6-DOF reference node: GROUP[:rbe2][@x,y,z] (point in m; "
+                    "default: centroid of the set); repeatable")
+        ->required();
+    cmd->add_option("--modes", a->settings.normalModes, "Fixed-interface normal modes to keep")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--cutoff", a->settings.cutoffHz, "Keep the normal modes below this frequency [Hz] instead")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--static-correction", a->settings.staticCorrection,
+                    "Surface group with static-correction modes for pressure loads; repeatable");
+    cmd->add_option("--axial-order", a->settings.axialOrder, "Load patterns: Legendre degree along z")
+        ->check(CLI::Range(0, 20));
+    cmd->add_option("--axial-hats", a->settings.axialHats,
+                    "Load patterns: this many piecewise-linear hats along z instead (travelling loads, e.g. liner)")
+        ->check(CLI::Range(0, 200));
+    cmd->add_option("--circumferential-order", a->settings.circumferentialOrder,
+                    "Load patterns: highest Fourier order in the angle")
+        ->check(CLI::Range(0, 40));
+    cmd->add_option("--damping", a->settings.dampingRatio, "Modal damping ratio of the elastic modes [-]")
+        ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--out", a->out, "Reduced-body file to write (.h5)")->required();
+    cmd->add_flag("--json", a->json, "Print one JSON object on stdout instead of the table");
+    cmd->callback([a] {
+        if (a->settings.cutoffHz > 0 && a->settings.normalModes == 30) a->settings.normalModes = 0;
+        runReduce(*a);
+    });
+}
+
+}  // namespace flexehd::cli

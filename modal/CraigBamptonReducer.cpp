@@ -1,0 +1,229 @@
+#include "modal/CraigBamptonReducer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Eigenvalues>
+
+#include "fem/BoundarySurface.hpp"
+#include "fem/DofMap.hpp"
+#include "fem/ElasticityAssembler.hpp"
+#include "fem/EigenmodeSolver.hpp"
+#include "fem/StaticSolver.hpp"
+#include "modal/LoadPatterns.hpp"
+
+namespace flexehd::modal {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point& t) {
+    const auto now = Clock::now();
+    const double s = std::chrono::duration<double>(now - t).count();
+    t = now;
+    return s;
+}
+
+// Lowest fixed-interface modes: `count` of them, or, with a cut-off, all below it
+// (computed in growing batches).
+fem::Eigenmodes normalModes(const fem::SparseMatrix& Kii, const fem::SparseMatrix& Mii,
+                            const fem::StaticSolver& factor, const ReductionSettings& s) {
+    const int maxModes = static_cast<int>(std::min<Eigen::Index>(Kii.rows() - 1, 2000));
+    if (s.normalModes > maxModes)
+        throw std::invalid_argument("reduction: " + std::to_string(s.normalModes) +
+                                    " normal modes requested, the interior has only " +
+                                    std::to_string(Kii.rows()) + " DOFs");
+    fem::EigenmodeOptions opt;
+    if (s.cutoffHz <= 0.0) {
+        if (s.normalModes <= 0) return {};
+        opt.count = s.normalModes;
+        return fem::solveEigenmodes(Kii, Mii, opt, &factor);
+    }
+    const double lambdaCut = std::pow(2 * std::numbers::pi * s.cutoffHz, 2);
+    opt.count = std::min(maxModes, s.normalModes > 0 ? s.normalModes : 20);
+    for (;;) {
+        fem::Eigenmodes m = fem::solveEigenmodes(Kii, Mii, opt, &factor);
+        const auto keep = std::count_if(m.eigenvalues.begin(), m.eigenvalues.end(),
+                                        [&](double l) { return l <= lambdaCut; });
+        if (keep < m.eigenvalues.size() || opt.count == maxModes) {
+            m.eigenvalues.conservativeResize(keep);
+            m.shapes.conservativeResize(Eigen::NoChange, keep);
+            return m;
+        }
+        opt.count = std::min(maxModes, 2 * opt.count);
+    }
+}
+
+}  // namespace
+
+InterfaceSpec parseInterface(const std::string& text) {
+    InterfaceSpec s;
+    std::string rest = text;
+    if (const auto at = rest.find('@'); at != std::string::npos) {
+        std::stringstream p(rest.substr(at + 1));
+        Eigen::Vector3d x;
+        char c1 = 0, c2 = 0;
+        if (!(p >> x(0) >> c1 >> x(1) >> c2 >> x(2)) || c1 != ',' || c2 != ',' || !p.eof())
+            throw std::invalid_argument("interface '" + text + "': reference point must be @x,y,z in metres");
+        s.referencePoint = x;
+        rest = rest.substr(0, at);
+    }
+    const auto colon = rest.find(':');
+    s.group = rest.substr(0, colon);
+    if (s.group.empty()) throw std::invalid_argument("interface '" + text + "': empty group name");
+    if (colon != std::string::npos) {
+        const std::string kind = rest.substr(colon + 1);
+        if (kind == "rbe2") s.kind = InterfaceKind::Rbe2;
+        else if (kind == "rbe3") s.kind = InterfaceKind::Rbe3;
+        else throw std::invalid_argument("interface '" + text + "': kind '" + kind + "', expected rbe2 or rbe3");
+    }
+    return s;
+}
+
+CraigBamptonReducer::CraigBamptonReducer(const fem::Mesh& mesh, const fem::ElasticMaterial& material)
+    : mesh_(mesh), material_(material) {
+    material_.validate();
+}
+
+ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs, const ReductionSettings& settings,
+                                        ReductionReport* report) const {
+    ReductionReport rep;
+    auto t = Clock::now();
+    if (specs.empty())
+        throw std::invalid_argument("reduction: no interface given; the body must be held at an interface");
+    ReducedBody body;
+    body.mesh = mesh_;
+    body.material = material_;
+    body.settings = settings;
+    body.elementOrder = mesh_.order();
+
+    // --- interfaces: node sets tied to reference nodes (RBE2) ---
+    fem::DofMap dofs(mesh_.numNodes(), 3);
+    for (const auto& s : specs) {
+        if (s.kind == InterfaceKind::Rbe3)
+            throw std::invalid_argument("interface '" + s.group +
+                                        "': rbe3 (averaging) interfaces are not implemented yet; use rbe2");
+        Interface itf{s.group, s.kind, Eigen::Vector3d::Zero(), mesh_.groupNodes(s.group)};
+        if (itf.nodes.empty()) throw std::invalid_argument("interface '" + s.group + "' has no nodes");
+        for (auto n : itf.nodes) itf.referencePoint += mesh_.nodes.col(n);
+        itf.referencePoint /= double(itf.nodes.size());
+        if (s.referencePoint) itf.referencePoint = *s.referencePoint;
+        try {
+            dofs.addRigidLink(itf.nodes, mesh_.nodes, itf.referencePoint);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("interface '" + s.group + "' overlaps another interface (" + e.what() + ")");
+        }
+        body.interfaces.push_back(std::move(itf));
+    }
+    dofs.finalize();
+
+    fem::ElasticityAssembler assembler(mesh_);
+    const fem::SparseMatrix Kr = dofs.reduce(assembler.stiffness(material_));
+    const fem::SparseMatrix Mr = dofs.reduce(assembler.mass(material_.rho));
+    const Eigen::Index nf = dofs.numFree(), nb = 6 * dofs.numLinks(), ni = nf - nb;
+    rep.dofs = dofs.numDofs();
+    // Interior first, boundary (reference DOFs) last: blocks by index range.
+    const fem::SparseMatrix Kii = Kr.topLeftCorner(ni, ni), Mii = Mr.topLeftCorner(ni, ni);
+    const Eigen::MatrixXd Kib = Eigen::MatrixXd(Kr.topRightCorner(ni, nb));
+    const Eigen::MatrixXd Mib = Eigen::MatrixXd(Mr.topRightCorner(ni, nb));
+    rep.assembleSeconds = since(t);
+
+    std::unique_ptr<fem::StaticSolver> factor;
+    try {
+        factor = std::make_unique<fem::StaticSolver>(Kii);
+    } catch (const std::runtime_error&) {
+        throw std::runtime_error(
+            "reduction: the interfaces do not hold the body (interior stiffness singular): a part of the "
+            "mesh is disconnected from every interface, or an interface cannot stop rigid motion");
+    }
+    rep.factorSeconds = since(t);
+    const Eigen::MatrixXd Psi = -factor->solve(Kib);
+    rep.constraintModes = int(nb);
+    rep.constraintModeSeconds = since(t);
+
+    const fem::Eigenmodes fixed = normalModes(Kii, Mii, *factor, settings);
+    const Eigen::MatrixXd& Phi = fixed.shapes;
+    rep.normalModes = int(Phi.cols());
+    body.settings.normalModes = rep.normalModes;
+    rep.normalModeSeconds = since(t);
+
+    // --- static correction: residual attachment modes, M-orthogonal to Φ ---
+    // Always: inertia relief, the interior's static response to the inertia forces of a
+    // unit boundary acceleration, -(M_ii Ψ + M_ib). It carries the coupling between the
+    // interface's (rigid) motion and elastic deformation that fixed-interface modes
+    // converge to slowly.
+    Eigen::MatrixXd X = factor->solve(Eigen::MatrixXd(-(Mii.selfadjointView<Eigen::Upper>() * Psi + Mib)));
+    if (Phi.cols() > 0) X -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * X));
+    for (const auto& surface : settings.staticCorrection) {
+        const fem::BoundarySurface s(mesh_, surface);
+        const Eigen::MatrixXd P =
+            surfacePressurePatterns(mesh_, surface, settings.axialOrder, settings.circumferentialOrder, settings.axialHats);
+        Eigen::MatrixXd Fi(ni, P.cols());
+        for (Eigen::Index j = 0; j < P.cols(); ++j)
+            Fi.col(j) = dofs.reduceLoad(assembler.pressureLoad(s, Eigen::VectorXd(P.col(j))), Kr).head(ni);
+        Eigen::MatrixXd Xs = factor->solve(Fi);
+        if (Phi.cols() > 0) Xs -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * Xs));
+        X.conservativeResize(Eigen::NoChange, X.cols() + Xs.cols());
+        X.rightCols(Xs.cols()) = Xs;
+    }
+    rep.staticCorrectionModes = int(X.cols());
+    rep.staticCorrectionSeconds = since(t);
+
+    // --- basis in the free DOFs and its projected matrices ---
+    const Eigen::Index m0 = nb + Phi.cols() + X.cols();
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(nf, m0);
+    B.topLeftCorner(ni, nb) = Psi;
+    B.bottomLeftCorner(nb, nb).setIdentity();
+    B.block(0, nb, ni, Phi.cols()) = Phi;
+    B.block(0, nb + Phi.cols(), ni, X.cols()) = X;
+    // Unit M-norm columns first: attachment vectors of unit-pascal patterns are ~1e-12 m,
+    // and a dependence threshold must compare directions, not magnitudes.
+    for (Eigen::Index j = 0; j < m0; ++j) {
+        const double mj = B.col(j).dot(Mr.selfadjointView<Eigen::Upper>() * B.col(j));
+        if (!(mj > 0.0)) throw std::runtime_error("reduction: basis vector " + std::to_string(j) + " has no mass");
+        B.col(j) /= std::sqrt(mj);
+    }
+    const Eigen::MatrixXd Mb = B.transpose() * (Mr.selfadjointView<Eigen::Upper>() * B);
+    const Eigen::MatrixXd Kb = B.transpose() * (Kr.selfadjointView<Eigen::Upper>() * B);
+
+    // --- orthonormalisation: Mb = U S Uᵀ, drop dependent directions, then Kq = V Λ Vᵀ ---
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> me(0.5 * (Mb + Mb.transpose()));
+    const double smax = me.eigenvalues().maxCoeff();
+    std::vector<Eigen::Index> keep;
+    for (Eigen::Index k = 0; k < m0; ++k)
+        if (me.eigenvalues()(k) > 1e-10 * smax) keep.push_back(k);
+    rep.droppedDependent = int(m0 - keep.size());
+    Eigen::MatrixXd Q(m0, keep.size());
+    for (std::size_t k = 0; k < keep.size(); ++k)
+        Q.col(k) = me.eigenvectors().col(keep[k]) / std::sqrt(me.eigenvalues()(keep[k]));
+    const Eigen::MatrixXd Kq = Q.transpose() * Kb * Q;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ke(0.5 * (Kq + Kq.transpose()));
+    const Eigen::MatrixXd C = Q * ke.eigenvectors();
+    const Eigen::MatrixXd BC = B * C;
+
+    body.shapes = dofs.expandHomogeneous(BC);
+    body.massMatrix = C.transpose() * Mb * C;
+    body.stiffnessMatrix = C.transpose() * Kb * C;
+    body.interfaceMotion = BC.bottomRows(nb);
+    const Eigen::VectorXd lambda = ke.eigenvalues();
+    const double lmax = lambda.cwiseAbs().maxCoeff();
+    const int m = int(lambda.size());
+    body.frequenciesHz.resize(m);
+    body.rigidBody.assign(m, 0);
+    body.dampingRatios = Eigen::VectorXd::Constant(m, settings.dampingRatio);
+    for (int k = 0; k < m; ++k) {
+        body.frequenciesHz(k) = std::copysign(std::sqrt(std::abs(lambda(k))), lambda(k)) / (2 * std::numbers::pi);
+        if (std::abs(lambda(k)) < 1e-6 * lmax) {  // same criterion as fem::ModalAnalysis
+            body.rigidBody[k] = 1;
+            body.dampingRatios(k) = 0.0;
+        }
+    }
+    rep.orthonormaliseSeconds = since(t);
+    if (report) *report = rep;
+    return body;
+}
+
+}  // namespace flexehd::modal

@@ -1,0 +1,49 @@
+#pragma once
+// Modal superposition on a reduced body: displacements u = Φ q anywhere on the mesh,
+// modal forces Φᵀ f, and the quasi-static and dynamic modal responses.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "modal/ReducedBody.hpp"
+
+namespace flexehd::modal {
+
+class ModalSuperposition {
+public:
+    explicit ModalSuperposition(const ReducedBody& body);
+
+    /// Full displacement vector (3·nodes), m.
+    Eigen::VectorXd displacement(const Eigen::VectorXd& q) const;
+    /// Displacements of selected nodes (3 x nodes.size()), m.
+    Eigen::Matrix3Xd displacementAt(const std::vector<fem::Index>& nodes, const Eigen::VectorXd& q) const;
+    /// Modal forces Φᵀ f from nodal forces f (3·nodes), N.
+    Eigen::VectorXd modalForce(const Eigen::VectorXd& nodalForce) const;
+    /// Quasi-static response K_r q = Φᵀ f with the reference nodes of `heldInterfaces` held
+    /// (their six motions zero, enforced exactly by eliminating them from q). Throws if
+    /// the body can still move rigidly.
+    Eigen::VectorXd quasiStatic(const Eigen::VectorXd& modalForce, const std::vector<int>& heldInterfaces) const;
+
+private:
+    const ReducedBody& body_;
+};
+
+/// Dynamic modal response M_r q̈ + C_r q̇ + K_r q = Φᵀ f with M_r = I, K_r = diag(ω²),
+/// C_r = diag(2ζω): each mode integrated by the implicit trapezoidal (Newmark average
+/// acceleration) rule, unconditionally stable and energy-conserving without damping.
+class ModalDynamics {
+public:
+    ModalDynamics(const ReducedBody& body, double timeStep);
+    /// Advances one step to the force at the end of the step.
+    void step(const Eigen::VectorXd& modalForce);
+    const Eigen::VectorXd& q() const { return q_; }
+    const Eigen::VectorXd& velocity() const { return v_; }
+    const Eigen::VectorXd& acceleration() const { return a_; }
+    void setState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& force);
+
+private:
+    double dt_;
+    Eigen::VectorXd omega2_, c_, q_, v_, a_;
+};
+
+}  // namespace flexehd::modal
