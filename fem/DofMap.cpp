@@ -104,11 +104,6 @@ SparseMatrix DofMap::reduce(const SparseMatrix& K) const {
     requireFinal("reduce");
     if (K.rows() != numDofs() || K.cols() != numDofs())
         throw std::invalid_argument("DofMap::reduce: matrix size does not match the DOF map");
-    if (numLinks() > 0) {  // general path: Tᵀ K T
-        const SparseMatrix full = K.selfadjointView<Eigen::Upper>();
-        const SparseMatrix R = T_.transpose() * full * T_;
-        return R.triangularView<Eigen::Upper>();
-    }
     std::vector<int> outer(std::size_t(numFree_) + 1, 0);
     for (Index j = 0; j < numDofs(); ++j) {
         const Index cj = equation_[j];
@@ -129,7 +124,45 @@ SparseMatrix DofMap::reduce(const SparseMatrix& K) const {
                 R.valuePtr()[p++] = it.value();
             }
     }
+    if (numLinks() > 0) appendLinkColumns(K, R);
     return R;
+}
+
+// Rigid links: T = [S L] with S selecting the free nodal DOFs and L the reference DOFs
+// (numbered last). Sᵀ K S is the selection above; the last 6·links columns of Tᵀ K T are
+// [Sᵀ K L; Lᵀ K L], formed with KL = K L in one pass over K's upper triangle — O(nnz),
+// where the general sparse product Tᵀ K T costs several full passes and copies.
+void DofMap::appendLinkColumns(const SparseMatrix& K, SparseMatrix& R) const {
+    const Index nl = 6 * numLinks(), first = numFree_ - nl;
+    const Eigen::MatrixXd L = Eigen::MatrixXd(T_.rightCols(nl));
+    Eigen::MatrixXd KL = Eigen::MatrixXd::Zero(numDofs(), nl);
+    for (Index j = 0; j < numDofs(); ++j)
+        for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+            const Index i = it.row();
+            if (equation_[j] == -2) KL.row(i) += it.value() * L.row(j);
+            if (i != j && equation_[i] == -2) KL.row(j) += it.value() * L.row(i);
+        }
+    const Eigen::MatrixXd LKL = L.transpose() * KL;
+    std::vector<int> outer(R.outerIndexPtr(), R.outerIndexPtr() + first + 1);
+    std::vector<int> inner(R.innerIndexPtr(), R.innerIndexPtr() + outer.back());
+    std::vector<double> values(R.valuePtr(), R.valuePtr() + outer.back());
+    for (Index c = 0; c < nl; ++c) {
+        for (Index d = 0; d < numDofs(); ++d)
+            if (equation_[d] >= 0 && KL(d, c) != 0.0) {
+                inner.push_back(equation_[d]);
+                values.push_back(KL(d, c));
+            }
+        for (Index r = 0; r <= c; ++r) {
+            inner.push_back(first + r);
+            values.push_back(LKL(r, c));
+        }
+        outer.push_back(static_cast<int>(inner.size()));
+    }
+    R = SparseMatrix(numFree_, numFree_);
+    R.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+    std::copy(outer.begin(), outer.end(), R.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), R.innerIndexPtr());
+    std::copy(values.begin(), values.end(), R.valuePtr());
 }
 
 Eigen::VectorXd DofMap::reduceLoad(const Eigen::VectorXd& f, const SparseMatrix& K) const {

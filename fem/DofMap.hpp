@@ -66,6 +66,7 @@ private:
         Eigen::Matrix3Xd offsets;  ///< x_s - x_r per node
     };
     void requireFinal(const char* what) const;
+    void appendLinkColumns(const SparseMatrix& K, SparseMatrix& R) const;
     std::vector<Link> links_;
     SparseMatrix T_;
     int dofsPerNode_;

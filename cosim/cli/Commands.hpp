@@ -10,5 +10,6 @@ void addModesCommand(CLI::App& app);
 void addReduceCommand(CLI::App& app);
 void addInspectCommand(CLI::App& app);
 void addExportModesCommand(CLI::App& app);
+void addBearingCommand(CLI::App& app);
 
 }  // namespace flexehd::cli

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
     flexehd::cli::addReduceCommand(app);
     flexehd::cli::addInspectCommand(app);
     flexehd::cli::addExportModesCommand(app);
+    flexehd::cli::addBearingCommand(app);
 
     try {
         app.parse(argc, argv);

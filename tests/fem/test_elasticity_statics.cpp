@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "TestData.hpp"
@@ -172,4 +173,41 @@ TEST(StaticSolver, UnconstrainedBodyIsReported) {
     ElasticityAssembler asm_(m);
     const std::string msg = flexehd::test::errorOf([&] { StaticSolver s(asm_.stiffness(kSteel)); });
     EXPECT_NE(msg.find("not constrained"), std::string::npos) << msg;
+}
+
+// Rigid links (RBE2): the O(nnz) reduction against the plain sparse product Tᵀ K T, and
+// the tie itself: a held reference node holds the whole set (exact zero displacement).
+TEST(DofMapRigidLink, ReductionMatchesTransformationProduct) {
+    const Mesh m = readMesh(dataPath("thick_cylinder.geo"), {2, 0.02});
+    ElasticityAssembler asm_(m);
+    const SparseMatrix K = asm_.stiffness(kSteel);
+    DofMap dofs(m.numNodes(), 3);
+    const auto inner = m.groupNodes("inner");
+    dofs.addRigidLink(inner, m.nodes, Eigen::Vector3d(0.0, 0.0, 0.01));
+    std::vector<Index> bottom;  // the bottom face without the edge it shares with the link
+    for (Index n : m.groupNodes("bottom"))
+        if (!std::binary_search(inner.begin(), inner.end(), n)) bottom.push_back(n);
+    dofs.constrain(bottom, kZ);
+    dofs.finalize();
+    const SparseMatrix R = dofs.reduce(K);
+    const SparseMatrix full = K.selfadjointView<Eigen::Upper>();
+    const SparseMatrix ref = dofs.transformation().transpose() * full * dofs.transformation();
+    const SparseMatrix Rfull = R.selfadjointView<Eigen::Upper>();
+    EXPECT_LT((Rfull - ref).norm(), 1e-12 * ref.norm());
+    // A unit rotation of the reference about z moves every tied node by e_z × (x - x_r).
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(dofs.numFree());
+    q(dofs.linkEquation(0) + 5) = 1.0;
+    const Eigen::VectorXd u = dofs.expand(q);
+    for (Index n : m.groupNodes("inner")) {
+        const Eigen::Vector3d d = m.nodes.col(n) - Eigen::Vector3d(0.0, 0.0, 0.01);
+        EXPECT_LT((u.segment<3>(3 * n) - Eigen::Vector3d::UnitZ().cross(d)).norm(), 1e-15);
+    }
+    // Holding a linked DOF is refused.
+    EXPECT_THROW(
+        {
+            DofMap bad(m.numNodes(), 3);
+            bad.addRigidLink(m.groupNodes("inner"), m.nodes, Eigen::Vector3d::Zero());
+            bad.constrain(m.groupNodes("inner"), kX);
+        },
+        std::invalid_argument);
 }

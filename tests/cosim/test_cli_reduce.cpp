@@ -1,0 +1,55 @@
+// `flexehd reduce` end to end: reduce a cantilever through the command line, read the
+// file, and load the reduced body at the tip: the quasi-static deflection must match
+// Euler–Bernoulli, δ = P L³ / (3 E I).
+#include <cmath>
+#include <filesystem>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../fem/TestData.hpp"
+#include "CliRunner.hpp"
+#include "modal/ModalSuperposition.hpp"
+#include "modal/ReducedBodyFile.hpp"
+
+using flexehd::test::dataPath;
+using flexehd::test::runFlexehd;
+using testing::HasSubstr;
+using namespace flexehd;
+
+TEST(CliReduce, CantileverTipDeflectionFromTheFile) {
+    const auto dir = flexehd::test::scratchDir();
+    const std::string h5 = (dir / "beam.h5").string();
+    const auto r = runFlexehd("reduce --mesh " + dataPath("beam.geo") +
+                              " --E 2.1e11 --nu 0.3 --rho 7850 --interface clamped:rbe2@0,0.01,0.01 --modes 12"
+                              " --out " + h5 + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc.at("basis").at("constraint"), 6);
+    EXPECT_EQ(doc.at("basis").at("normal"), 12);
+    EXPECT_EQ(doc.at("rigid_body_modes"), 6);
+    EXPECT_TRUE(doc.at("timings_s").contains("factorize"));
+
+    const modal::ReducedBody body = modal::readReducedBody(h5);
+    ASSERT_EQ(body.interfaces.size(), 1u);
+    EXPECT_EQ(body.interfaces[0].referencePoint, Eigen::Vector3d(0, 0.01, 0.01));
+    // Tip force P = 10 N along y, spread evenly over the tip face's nodes.
+    const auto tip = body.mesh.groupNodes("tip");
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(body.shapes.rows());
+    for (auto n : tip) f(3 * n + 1) = 10.0 / double(tip.size());
+    modal::ModalSuperposition sup(body);
+    const Eigen::VectorXd u = sup.displacement(sup.quasiStatic(sup.modalForce(f), {0}));
+    double uy = 0.0;
+    for (auto n : tip) uy += u(3 * n + 1) / double(tip.size());
+    const double I = std::pow(0.02, 4) / 12.0, delta = 10.0 * 1.0 / (3.0 * 2.1e11 * I);
+    EXPECT_NEAR(uy / delta, 1.0, 0.01);
+}
+
+TEST(CliReduce, UnknownInterfaceGroupFails) {
+    const auto r = runFlexehd("reduce --mesh " + dataPath("beam.geo") +
+                              " --E 2.1e11 --nu 0.3 --rho 7850 --interface pin_bore:rbe2 --out /tmp/x.h5");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_THAT(r.err, HasSubstr("no physical group 'pin_bore'"));
+    EXPECT_FALSE(std::filesystem::exists("/tmp/x.h5"));
+}
