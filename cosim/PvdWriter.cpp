@@ -4,12 +4,12 @@
 #include <iomanip>
 #include <stdexcept>
 
-#include "cosim/AtomicFile.hpp"
+#include "fem/AtomicFile.hpp"
 
 namespace flexehd::cosim {
 
 void PvdCollection::write(const std::string& path) const {
-    writeAtomically(path, [&](const std::string& tmp) {
+    fem::writeAtomically(path, [&](const std::string& tmp) {
         std::ofstream out(tmp);
         if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
         out << "<?xml version=\"1.0\"?>\n"

@@ -13,7 +13,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include "cosim/AtomicFile.hpp"
+#include "fem/AtomicFile.hpp"
 
 namespace flexehd::cosim {
 namespace {
@@ -66,7 +66,7 @@ void writeVtu(const std::string& path, const fem::Mesh& mesh, const std::vector<
     for (const auto& d : fieldData)
         grid->GetFieldData()->AddArray(makeArray(d.name, Eigen::MatrixXd::Constant(1, 1, d.value), path));
 
-    writeAtomically(path, [&](const std::string& tmp) {
+    fem::writeAtomically(path, [&](const std::string& tmp) {
         vtkNew<vtkXMLUnstructuredGridWriter> writer;
         writer->SetFileName(tmp.c_str());
         writer->SetInputData(grid);

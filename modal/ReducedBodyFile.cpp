@@ -1,5 +1,7 @@
 #include "modal/ReducedBodyFile.hpp"
 
+#include "fem/AtomicFile.hpp"
+
 #include <hdf5.h>
 
 #include <algorithm>
@@ -625,25 +627,14 @@ ReducedBody readContent(const Reader& r) {
 void writeReducedBody(const ReducedBody& body, const std::string& path) {
     checkConsistent(body);
     const QuietHdf5Errors quiet;
-    // Same protocol as cosim::writeAtomically (which modal cannot link: cosim depends on
-    // modal): write "<path>.tmp", rename over `path` only once closed without error.
-    namespace fs = std::filesystem;
-    const std::string tmp = path + ".tmp";
-    try {
+    fem::writeAtomically(path, [&](const std::string& tmp) {
         Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
         if (!file.valid())
             throw std::runtime_error("cannot create reduced-body file '" + tmp + "'" + hdf5Detail());
         writeContent(body, Writer(path, file.get()));
         if (file.close() < 0)
             throw std::runtime_error("cannot write reduced-body file '" + tmp + "'" + hdf5Detail());
-    } catch (...) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        throw;
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) throw std::runtime_error("cannot write reduced-body file '" + path + "': " + ec.message());
+    });
 }
 
 ReducedBody readReducedBody(const std::string& path) {

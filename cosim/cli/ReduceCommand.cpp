@@ -10,6 +10,7 @@
 #include "cosim/cli/Commands.hpp"
 #include "fem/MeshReader.hpp"
 #include "modal/CraigBamptonReducer.hpp"
+#include "modal/ModalDamping.hpp"
 #include "modal/ReducedBodyFile.hpp"
 
 namespace flexehd::cli {
@@ -20,7 +21,7 @@ struct ReduceArgs {
     int order = 0;
     double size = 0.0;
     fem::ElasticMaterial material{0, 0, 0};
-    std::vector<std::string> interfaces;
+    std::vector<std::string> interfaces, dampingBands;
     modal::ReductionSettings settings;
     bool json = false;
 };
@@ -29,6 +30,7 @@ void runReduce(const ReduceArgs& a) {
     Stopwatch total;
     std::vector<modal::InterfaceSpec> specs;
     for (const auto& s : a.interfaces) specs.push_back(modal::parseInterface(s));
+    for (const auto& b : a.dampingBands) modal::parseDampingBand(b);  // fail before the long work
     spdlog::info("reading mesh {}", a.mesh);
     const fem::Mesh mesh = fem::readMesh(a.mesh, {a.order, a.size, true});
     spdlog::info("mesh: {} nodes, {} {} elements, {} DOFs", mesh.numNodes(), mesh.volume.size(),
@@ -37,6 +39,11 @@ void runReduce(const ReduceArgs& a) {
                  a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "", a.settings.staticCorrection.size());
     modal::ReductionReport rep;
     modal::ReducedBody body = modal::CraigBamptonReducer(mesh, a.material).reduce(specs, a.settings, &rep);
+    if (!a.dampingBands.empty()) {
+        std::vector<modal::DampingBand> bands;
+        for (const auto& b : a.dampingBands) bands.push_back(modal::parseDampingBand(b));
+        modal::assignModalDamping(body, a.settings.dampingRatio, bands);
+    }
     body.meshPath = a.mesh;
     body.meshHash = modal::fnv1a64File(a.mesh);
     body.meshSize = a.size;
@@ -119,6 +126,9 @@ void addReduceCommand(CLI::App& app) {
         ->check(CLI::Range(0, 40));
     cmd->add_option("--damping", a->settings.dampingRatio, "Modal damping ratio of the elastic modes [-]")
         ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--damping-band", a->dampingBands,
+                    "Damping per band FMAX:ZETA [Hz:-]: elastic modes up to FMAX get ZETA (lowest band first), "
+                    "modes above all bands get --damping; repeatable");
     cmd->add_option("--out", a->out, "Reduced-body file to write (.h5)")->required();
     cmd->add_flag("--json", a->json, "Print one JSON object on stdout instead of the table");
     cmd->callback([a] {

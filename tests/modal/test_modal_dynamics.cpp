@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "modal/ModalDamping.hpp"
 #include "modal/ModalSuperposition.hpp"
 
 using namespace flexehd::modal;
@@ -63,4 +64,20 @@ TEST(ModalSuperposition, QuasiStaticIsStaticDeflectionAndForcesTranspose) {
     EXPECT_NEAR(q(0), 1.0 / 100.0, 1e-15);
     EXPECT_NEAR(q(1), 2.0 / 400.0, 1e-15);
     EXPECT_DOUBLE_EQ(sup.displacement(q)(1), q(1));
+}
+
+TEST(ModalDamping, BandsAssignRatiosByFrequencyRigidModesUndamped) {
+    ReducedBody b;
+    b.frequenciesHz = Eigen::VectorXd(5);
+    b.frequenciesHz << 0.0, 900.0, 3000.0, 8000.0, 20000.0;
+    b.rigidBody = {1, 0, 0, 0, 0};
+    b.shapes = Eigen::MatrixXd::Zero(3, 5);
+    assignModalDamping(b, 0.05, {parseDampingBand("10000:0.02"), parseDampingBand("1000:0.01")});
+    EXPECT_EQ(b.dampingRatios(0), 0.0);
+    EXPECT_EQ(b.dampingRatios(1), 0.01);
+    EXPECT_EQ(b.dampingRatios(2), 0.02);
+    EXPECT_EQ(b.dampingRatios(3), 0.02);
+    EXPECT_EQ(b.dampingRatios(4), 0.05);
+    EXPECT_THROW(parseDampingBand("1000"), std::invalid_argument);
+    EXPECT_THROW(parseDampingBand("1000:1.5"), std::invalid_argument);
 }

@@ -4,10 +4,10 @@
 #include <functional>
 #include <string>
 
-namespace flexehd::cosim {
+namespace flexehd::fem {
 
 /// Calls `write(temporaryPath)`, then atomically renames the result to `path`.
 /// Throws std::runtime_error naming the file if writing or renaming fails.
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
 
-}  // namespace flexehd::cosim
+}  // namespace flexehd::fem

@@ -1,10 +1,10 @@
-#include "cosim/AtomicFile.hpp"
+#include "fem/AtomicFile.hpp"
 
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
 
-namespace flexehd::cosim {
+namespace flexehd::fem {
 
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write) {
     namespace fs = std::filesystem;
@@ -21,4 +21,4 @@ void writeAtomically(const std::string& path, const std::function<void(const std
     if (ec) throw std::runtime_error("cannot write '" + path + "': " + ec.message());
 }
 
-}  // namespace flexehd::cosim
+}  // namespace flexehd::fem
