@@ -4,6 +4,8 @@
 #include <cctype>
 #include <stdexcept>
 
+#include <Eigen/LU>
+
 namespace flexehd::fem {
 
 unsigned parseComponents(const std::string& text) {
@@ -40,27 +42,95 @@ void DofMap::constrainDof(Index dof, double value) {
     if (final_) throw std::logic_error("DofMap: constraints added after finalize()");
     if (dof < 0 || dof >= numDofs())
         throw std::out_of_range("DofMap: DOF " + std::to_string(dof) + " out of range");
-    if (equation_[dof] == -2)
-        throw std::invalid_argument("DofMap: DOF " + std::to_string(dof) + " is tied by a rigid link, cannot be held");
+    if (linked_.count(dof))
+        throw std::invalid_argument("DofMap: DOF " + std::to_string(dof) + " belongs to a link, cannot be held");
     equation_[dof] = -1;
     prescribed_(dof) = value;
 }
 
-int DofMap::addRigidLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& x, const Eigen::Vector3d& point) {
+void DofMap::markLinked(const std::vector<Index>& nodes, bool tied) {
     if (final_) throw std::logic_error("DofMap: link added after finalize()");
-    if (dofsPerNode_ != 3) throw std::logic_error("DofMap: rigid links need 3 DOFs per node");
-    if (nodes.empty()) throw std::invalid_argument("rigid link: the node set is empty");
-    Link link{nodes, Eigen::Matrix3Xd(3, nodes.size())};
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-        const Index n = nodes[k];
+    if (dofsPerNode_ != 3) throw std::logic_error("DofMap: links need 3 DOFs per node");
+    if (nodes.empty()) throw std::invalid_argument("link: the node set is empty");
+    for (Index n : nodes)
         for (int c = 0; c < 3; ++c) {
-            Index& e = equation_[3 * n + c];
-            if (e == -1) throw std::invalid_argument("rigid link: node " + std::to_string(n) + " is also held");
-            if (e == -2) throw std::invalid_argument("rigid link: node " + std::to_string(n) + " is in two links");
-            e = -2;
+            const Index d = 3 * n + c;
+            if (equation_[d] == -1) throw std::invalid_argument("link: node " + std::to_string(n) + " is also held");
+            if (linked_.count(d)) throw std::invalid_argument("link: node " + std::to_string(n) + " is in two links");
+            linked_.insert(d);
+            if (tied) equation_[d] = -2;
         }
-        link.offsets.col(k) = x.col(n) - point;
+}
+
+int DofMap::addRigidLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& x, const Eigen::Vector3d& point) {
+    markLinked(nodes, true);
+    Link link;
+    link.nodes = nodes;
+    link.offsets.resize(3, Eigen::Index(nodes.size()));
+    for (std::size_t k = 0; k < nodes.size(); ++k) link.offsets.col(k) = x.col(nodes[k]) - point;
+    links_.push_back(std::move(link));
+    return numLinks() - 1;
+}
+
+int DofMap::addAveragingLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& x,
+                             const Eigen::Vector3d& point) {
+    if (nodes.size() < 3) throw std::invalid_argument("averaging link: needs at least 3 nodes");
+    const Index ns = static_cast<Index>(nodes.size());
+    Link link;
+    link.nodes = nodes;
+    link.offsets.resize(3, ns);
+    link.averaging = true;
+    Eigen::MatrixXd G(3 * ns, 6);
+    for (Index k = 0; k < ns; ++k) {
+        const Eigen::Vector3d d = x.col(nodes[k]) - point;
+        link.offsets.col(k) = d;
+        G.block<3, 3>(3 * k, 0).setIdentity();
+        G.block<3, 3>(3 * k, 3) << 0, d(2), -d(1), -d(2), 0, d(0), d(1), -d(0), 0;  // -[d]x
     }
+    const Eigen::MatrixXd GtG = G.transpose() * G;
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(GtG);
+    if (lu.rank() < 6) throw std::invalid_argument("averaging link: the nodes are collinear, no rotation defined");
+    const Eigen::MatrixXd R = lu.solve(G.transpose());  // 6 x 3ns
+    // Dependent DOFs: among the 9 components of three far-apart nodes, the 6 whose columns
+    // of R are best conditioned (largest |det|), so the elimination is stable.
+    Index a = 0, b = 0, c = 0;
+    for (Index k = 0; k < ns; ++k)
+        if ((link.offsets.col(k) - link.offsets.col(a)).norm() > (link.offsets.col(b) - link.offsets.col(a)).norm()) b = k;
+    const Eigen::Vector3d ab = (link.offsets.col(b) - link.offsets.col(a)).normalized();
+    double best = -1.0;
+    for (Index k = 0; k < ns; ++k) {
+        const Eigen::Vector3d v = link.offsets.col(k) - link.offsets.col(a);
+        if (const double dist = (v - v.dot(ab) * ab).norm(); dist > best) best = dist, c = k;
+    }
+    const Index cand[9] = {3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2, 3 * c, 3 * c + 1, 3 * c + 2};
+    double bestDet = 0.0;
+    std::vector<Index> pick;
+    for (unsigned mask = 0; mask < 512; ++mask) {
+        if (__builtin_popcount(mask) != 6) continue;
+        std::vector<Index> sel;
+        for (int i = 0; i < 9; ++i)
+            if (mask & (1u << i)) sel.push_back(cand[i]);
+        Eigen::Matrix<double, 6, 6> Rg;
+        for (int i = 0; i < 6; ++i) Rg.col(i) = R.col(sel[i]);
+        if (const double det = std::abs(Rg.determinant()); det > bestDet) bestDet = det, pick = sel;
+    }
+    if (bestDet <= 0.0) throw std::invalid_argument("averaging link: no stable set of dependent DOFs");
+    Eigen::Matrix<double, 6, 6> Rg;
+    for (int i = 0; i < 6; ++i) Rg.col(i) = R.col(pick[i]);
+    std::vector<Index> restLocal;
+    for (Index j = 0; j < 3 * ns; ++j)
+        if (std::find(pick.begin(), pick.end(), j) == pick.end()) restLocal.push_back(j);
+    Eigen::MatrixXd Rrest(6, restLocal.size());
+    for (std::size_t j = 0; j < restLocal.size(); ++j) Rrest.col(j) = R.col(restLocal[j]);
+    // R_g u_dep + R_rest u_rest = q_r  =>  u_dep = R_g⁻¹ q_r - R_g⁻¹ R_rest u_rest.
+    const Eigen::Matrix<double, 6, 6> RgInv = Rg.inverse();
+    link.fromReference = RgInv;
+    link.fromRest = -RgInv * Rrest;
+    auto global = [&](Index local) { return 3 * nodes[local / 3] + local % 3; };
+    for (Index j : pick) link.dependent.push_back(global(j));
+    for (Index j : restLocal) link.rest.push_back(global(j));
+    markLinked(nodes, false);
+    for (Index d : link.dependent) equation_[d] = -2;
     links_.push_back(std::move(link));
     return numLinks() - 1;
 }
@@ -79,6 +149,14 @@ void DofMap::finalize() {
     for (int l = 0; l < numLinks(); ++l) {
         const Index r = linkEquation(l);
         const Link& link = links_[l];
+        if (link.averaging) {  // six dense rows: u_dep = fromReference q_r + fromRest u_rest
+            for (int i = 0; i < 6; ++i) {
+                for (int j = 0; j < 6; ++j) t.emplace_back(link.dependent[i], r + j, link.fromReference(i, j));
+                for (std::size_t j = 0; j < link.rest.size(); ++j)
+                    t.emplace_back(link.dependent[i], equation_[link.rest[j]], link.fromRest(i, j));
+            }
+            continue;
+        }
         for (std::size_t k = 0; k < link.nodes.size(); ++k) {
             const Eigen::Vector3d dv = link.offsets.col(k);
             Eigen::Matrix3d skew;
@@ -104,6 +182,11 @@ SparseMatrix DofMap::reduce(const SparseMatrix& K) const {
     requireFinal("reduce");
     if (K.rows() != numDofs() || K.cols() != numDofs())
         throw std::invalid_argument("DofMap::reduce: matrix size does not match the DOF map");
+    if (hasAveragingLinks()) {  // dense rows couple the whole set: the general Tᵀ K T
+        const SparseMatrix full = K.selfadjointView<Eigen::Upper>();
+        const SparseMatrix R = T_.transpose() * full * T_;
+        return R.triangularView<Eigen::Upper>();
+    }
     std::vector<int> outer(std::size_t(numFree_) + 1, 0);
     for (Index j = 0; j < numDofs(); ++j) {
         const Index cj = equation_[j];
@@ -126,6 +209,10 @@ SparseMatrix DofMap::reduce(const SparseMatrix& K) const {
     }
     if (numLinks() > 0) appendLinkColumns(K, R);
     return R;
+}
+
+bool DofMap::hasAveragingLinks() const {
+    return std::any_of(links_.begin(), links_.end(), [](const Link& l) { return l.averaging; });
 }
 
 // Rigid links: T = [S L] with S selecting the free nodal DOFs and L the reference DOFs

@@ -7,6 +7,7 @@
 // issue 3) extend the same picture: extra free DOFs for the reference node, dependent
 // DOFs expressed as rows of T, reduce() = Tᵀ K T.
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -35,6 +36,13 @@ public:
     /// dofsPerNode == 3. Returns the link's index. Only before finalize().
     int addRigidLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& nodeCoordinates,
                      const Eigen::Vector3d& point);
+    /// RBE3: a reference node at `point` that follows the average motion of the nodes,
+    /// q_r = R u_S with R = (GᵀG)⁻¹Gᵀ the least-squares rigid fit (G_s = [I, -[x_s - x_r]×]),
+    /// adding no stiffness. The reference DOFs become free unknowns (numbered last, like
+    /// a rigid link's); six well-conditioned DOFs of the set are eliminated through the
+    /// constraint, all others stay unknowns. Needs 3 non-collinear nodes.
+    int addAveragingLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& nodeCoordinates,
+                         const Eigen::Vector3d& point);
     /// Numbers the free DOFs; call once after all constraints.
     void finalize();
 
@@ -64,9 +72,16 @@ private:
     struct Link {
         std::vector<Index> nodes;
         Eigen::Matrix3Xd offsets;  ///< x_s - x_r per node
+        bool averaging = false;    ///< RBE3
+        std::vector<Index> dependent, rest;  ///< RBE3: eliminated set DOFs, the others
+        Eigen::MatrixXd fromReference;       ///< RBE3: u_dep = fromReference q_r + fromRest u_rest
+        Eigen::MatrixXd fromRest;
     };
+    void markLinked(const std::vector<Index>& nodes, bool allDofs);
     void requireFinal(const char* what) const;
     void appendLinkColumns(const SparseMatrix& K, SparseMatrix& R) const;
+    bool hasAveragingLinks() const;
+    std::unordered_set<Index> linked_;  ///< DOFs of all link node sets
     std::vector<Link> links_;
     SparseMatrix T_;
     int dofsPerNode_;

@@ -107,16 +107,16 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     // --- interfaces: node sets tied to reference nodes (RBE2) ---
     fem::DofMap dofs(mesh_.numNodes(), 3);
     for (const auto& s : specs) {
-        if (s.kind == InterfaceKind::Rbe3)
-            throw std::invalid_argument("interface '" + s.group +
-                                        "': rbe3 (averaging) interfaces are not implemented yet; use rbe2");
         Interface itf{s.group, s.kind, Eigen::Vector3d::Zero(), mesh_.groupNodes(s.group)};
         if (itf.nodes.empty()) throw std::invalid_argument("interface '" + s.group + "' has no nodes");
         for (auto n : itf.nodes) itf.referencePoint += mesh_.nodes.col(n);
         itf.referencePoint /= double(itf.nodes.size());
         if (s.referencePoint) itf.referencePoint = *s.referencePoint;
         try {
-            dofs.addRigidLink(itf.nodes, mesh_.nodes, itf.referencePoint);
+            if (s.kind == InterfaceKind::Rbe2)
+                dofs.addRigidLink(itf.nodes, mesh_.nodes, itf.referencePoint);
+            else
+                dofs.addAveragingLink(itf.nodes, mesh_.nodes, itf.referencePoint);
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("interface '" + s.group + "' overlaps another interface (" + e.what() + ")");
         }

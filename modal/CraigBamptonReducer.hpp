@@ -5,8 +5,8 @@
 //   X = (I - Φ Φᵀ M_ii) K_ii⁻¹ F_i (static-correction / residual attachment modes: inertia
 //   relief F_i = -(M_ii Ψ + M_ib), and the pressure patterns of LoadPatterns on the named
 //   surfaces).
-// Boundary DOFs are the 6 DOFs of a reference node per interface (a node set tied to it,
-// RBE2). The basis is then orthonormalised: Mᵣ = I, Kᵣ = diag(ω²), rigid-body modes flagged.
+// Boundary DOFs are the 6 DOFs of a reference node per interface: a node set tied to it
+// rigidly (RBE2) or followed by it on average (RBE3). The basis is then orthonormalised: Mᵣ = I, Kᵣ = diag(ω²), rigid-body modes flagged.
 // One factorization of K_ii serves Ψ, the Lanczos iterations and X.
 #include <optional>
 #include <string>

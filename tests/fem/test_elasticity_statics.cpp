@@ -9,6 +9,7 @@
 
 #include "TestData.hpp"
 #include "fem/DofMap.hpp"
+#include "fem/EigenmodeSolver.hpp"
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/ElasticityElement.hpp"
 #include "fem/MeshReader.hpp"
@@ -210,4 +211,37 @@ TEST(DofMapRigidLink, ReductionMatchesTransformationProduct) {
             bad.constrain(m.groupNodes("inner"), kX);
         },
         std::invalid_argument);
+}
+
+// RBE3: whatever the unknowns, the set's displacements satisfy the least-squares fit
+// Gᵀ u_S = GᵀG q_r (G_s = [I, -[d_s]x]), i.e. the reference follows the average motion;
+// and the link adds no stiffness: a free body keeps exactly its frequencies.
+TEST(DofMapAveragingLink, ReferenceFollowsTheLeastSquaresFitAndAddsNoStiffness) {
+    const Mesh m = readMesh(dataPath("beam.geo"), {2, 0.01});
+    const auto tip = m.groupNodes("tip");
+    const Eigen::Vector3d xr(1.0, 0.01, 0.01);
+    DofMap dofs(m.numNodes(), 3);
+    dofs.addAveragingLink(tip, m.nodes, xr);
+    dofs.finalize();
+    Eigen::VectorXd w = Eigen::VectorXd::Random(dofs.numFree());
+    const Eigen::VectorXd u = dofs.expand(w);
+    const Eigen::Matrix<double, 6, 1> q = w.tail<6>();
+    Eigen::Matrix<double, 6, 1> Gtu = Eigen::Matrix<double, 6, 1>::Zero(), GtGq = Gtu;
+    for (Index n : tip) {
+        const Eigen::Vector3d d = m.nodes.col(n) - xr, us = u.segment<3>(3 * n);
+        const Eigen::Vector3d rigid = q.head<3>() + q.tail<3>().cross(d);  // G_s q
+        Gtu.head<3>() += us;
+        Gtu.tail<3>() += d.cross(us);
+        GtGq.head<3>() += rigid;
+        GtGq.tail<3>() += d.cross(rigid);
+    }
+    EXPECT_LT((Gtu - GtGq).norm(), 1e-10 * GtGq.norm());
+
+    ElasticityAssembler a(m);
+    const SparseMatrix K = a.stiffness(kSteel), M = a.mass(kSteel.rho);
+    EigenmodeOptions opt;
+    opt.count = 12;
+    const Eigen::VectorXd plain = solveEigenmodes(K, M, opt).frequenciesHz();
+    const Eigen::VectorXd linked = solveEigenmodes(dofs.reduce(K), dofs.reduce(M), opt).frequenciesHz();
+    for (int k = 6; k < 12; ++k) EXPECT_NEAR(linked(k) / plain(k), 1.0, 1e-8) << "mode " << k + 1;
 }

@@ -12,6 +12,7 @@
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/EigenmodeSolver.hpp"
 #include "fem/MeshReader.hpp"
+#include "fem/ModalAnalysis.hpp"
 #include "fem/StaticSolver.hpp"
 #include "modal/CraigBamptonReducer.hpp"
 #include "modal/ModalSuperposition.hpp"
@@ -173,6 +174,19 @@ TEST(CraigBampton, BadInputGivesClearErrors) {
                 HasSubstr("overlaps"));
     EXPECT_THAT(errorOf([&] { reducer.reduce({modal::parseInterface("pin_bore")}, settings(10000000)); }),
                 HasSubstr("normal modes requested"));
+}
+
+// An RBE3 interface adds no constraint: the reduced free beam converges to the plain free
+// beam (no link at all), an independent reference.
+TEST(CraigBampton, Rbe3InterfaceConvergesToThePlainFreeBody) {
+    const fem::Mesh m = fem::readMesh(test::dataPath("beam.geo"), {2, 0.01});
+    const fem::ElasticMaterial steel{2.1e11, 0.3, 7850.0};
+    fem::EigenmodeOptions opt;
+    opt.count = 12;
+    const Eigen::VectorXd plain = fem::analyseModes(m, steel, {}, opt).modes.frequenciesHz();
+    const auto body = modal::CraigBamptonReducer(m, steel).reduce({modal::parseInterface("clamped:rbe3")}, settings(20));
+    ASSERT_EQ(std::count(body.rigidBody.begin(), body.rigidBody.end(), 1), 6);
+    for (int k = 6; k < 12; ++k) EXPECT_NEAR(body.frequenciesHz(k) / plain(k), 1.0, 1e-3) << "mode " << k + 1;
 }
 
 TEST(CraigBampton, InterfaceThatCannotHoldTheBodyIsReported) {
