@@ -6,6 +6,20 @@
 
 namespace flexehd::cli {
 
+void addMeshOptions(CLI::App* cmd, MeshArguments& mesh) {
+    cmd->add_option("--mesh", mesh.path, "Mesh file: .msh (Gmsh 2.2 or 4.1) or .geo (meshed on load)")->required();
+    cmd->add_option("--order", mesh.options.order, "Element order 1 or 2 (default: .geo → 2, .msh → as stored)")
+        ->check(CLI::IsMember({1, 2}));
+    cmd->add_option("--size", mesh.options.size, "Target element size for .geo files [m]")
+        ->check(CLI::PositiveNumber);
+}
+
+void addMaterialOptions(CLI::App* cmd, fem::ElasticMaterial& material) {
+    cmd->add_option("--E", material.E, "Young's modulus [Pa]")->required()->check(CLI::PositiveNumber);
+    cmd->add_option("--nu", material.nu, "Poisson's ratio [-]")->required()->check(CLI::Range(-0.999, 0.499));
+    cmd->add_option("--rho", material.rho, "Density [kg/m^3]")->required()->check(CLI::PositiveNumber);
+}
+
 double peakMemoryMiB() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);

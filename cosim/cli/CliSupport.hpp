@@ -3,7 +3,11 @@
 #include <chrono>
 #include <string>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+
+#include "fem/Material.hpp"
+#include "fem/MeshReader.hpp"
 
 namespace flexehd::cli {
 
@@ -17,6 +21,16 @@ public:
 private:
     std::chrono::steady_clock::time_point start_;
 };
+
+/// The mesh options every mesh-reading subcommand shares: --mesh, --order, --size.
+struct MeshArguments {
+    std::string path;
+    fem::MeshOptions options;
+};
+void addMeshOptions(CLI::App* cmd, MeshArguments& mesh);
+
+/// The elastic material options: --E, --nu, --rho (all required, SI).
+void addMaterialOptions(CLI::App* cmd, fem::ElasticMaterial& material);
 
 /// Peak resident memory of this process so far, MiB (getrusage).
 double peakMemoryMiB();

@@ -16,9 +16,7 @@ namespace flexehd::cli {
 namespace {
 
 struct ModesArgs {
-    std::string mesh;
-    int order = 0;
-    double size = 0.0;
+    MeshArguments mesh;
     fem::ElasticMaterial material;
     std::vector<std::string> fix;
     int count = 12;
@@ -29,9 +27,9 @@ struct ModesArgs {
 
 void runModes(const ModesArgs& a) {
     Stopwatch total;
-    spdlog::info("reading mesh {}", a.mesh);
+    spdlog::info("reading mesh {}", a.mesh.path);
     Stopwatch t;
-    const fem::Mesh mesh = fem::readMesh(a.mesh, {a.order, a.size, true});
+    const fem::Mesh mesh = fem::readMesh(a.mesh.path, a.mesh.options);
     const double readSeconds = t.seconds();
     spdlog::info("mesh: {} nodes, {} {} elements ({:.2f} s)", mesh.numNodes(), mesh.volume.size(),
                  fem::name(mesh.volume.type), readSeconds);
@@ -65,7 +63,7 @@ void runModes(const ModesArgs& a) {
     const int rigid = result.rigidBodyModes();
     if (a.json) {
         nlohmann::json doc;
-        doc["mesh"] = a.mesh;
+        doc["mesh"] = a.mesh.path;
         doc["element_type"] = std::string(fem::name(mesh.volume.type));
         doc["nodes"] = mesh.numNodes();
         doc["elements"] = mesh.volume.size();
@@ -89,7 +87,7 @@ void runModes(const ModesArgs& a) {
         if (!a.out.empty()) doc["output"] = {{"directory", a.out}, {"files", files}};
         printJson(doc);
     } else {
-        std::printf("%s: %d nodes, %d %s elements, %d DOFs (%d free)\n", a.mesh.c_str(), int(mesh.numNodes()),
+        std::printf("%s: %d nodes, %d %s elements, %d DOFs (%d free)\n", a.mesh.path.c_str(), int(mesh.numNodes()),
                     int(mesh.volume.size()), std::string(fem::name(mesh.volume.type)).c_str(), int(result.dofs),
                     int(result.freeDofs));
         std::printf("%6s  %16s\n", "mode", "frequency [Hz]");
@@ -105,14 +103,8 @@ void addModesCommand(CLI::App& app) {
     auto a = std::make_shared<ModesArgs>();
     a->material = {0.0, 0.0, 0.0};
     CLI::App* cmd = app.add_subcommand("modes", "Natural frequencies and mode shapes of an elastic body");
-    cmd->add_option("--mesh", a->mesh, "Mesh file: .msh (Gmsh 2.2 or 4.1) or .geo (meshed on load)")
-        ->required();
-    cmd->add_option("--order", a->order, "Element order 1 or 2 (default: .geo → 2, .msh → as stored)")
-        ->check(CLI::IsMember({1, 2}));
-    cmd->add_option("--size", a->size, "Target element size for .geo files [m]")->check(CLI::PositiveNumber);
-    cmd->add_option("--E", a->material.E, "Young's modulus [Pa]")->required()->check(CLI::PositiveNumber);
-    cmd->add_option("--nu", a->material.nu, "Poisson's ratio [-]")->required()->check(CLI::Range(-0.999, 0.499));
-    cmd->add_option("--rho", a->material.rho, "Density [kg/m^3]")->required()->check(CLI::PositiveNumber);
+    addMeshOptions(cmd, a->mesh);
+    addMaterialOptions(cmd, a->material);
     cmd->add_option("--fix", a->fix,
                     "Physical group to hold, all components (GROUP) or some (GROUP:xy); repeatable. "
                     "None: free body, six rigid-body modes included");

@@ -17,9 +17,8 @@ namespace flexehd::cli {
 namespace {
 
 struct ReduceArgs {
-    std::string mesh, out;
-    int order = 0;
-    double size = 0.0;
+    MeshArguments mesh;
+    std::string out;
     fem::ElasticMaterial material{0, 0, 0};
     std::vector<std::string> interfaces, dampingBands;
     modal::ReductionSettings settings;
@@ -31,8 +30,8 @@ void runReduce(const ReduceArgs& a) {
     std::vector<modal::InterfaceSpec> specs;
     for (const auto& s : a.interfaces) specs.push_back(modal::parseInterface(s));
     for (const auto& b : a.dampingBands) modal::parseDampingBand(b);  // fail before the long work
-    spdlog::info("reading mesh {}", a.mesh);
-    const fem::Mesh mesh = fem::readMesh(a.mesh, {a.order, a.size, true});
+    spdlog::info("reading mesh {}", a.mesh.path);
+    const fem::Mesh mesh = fem::readMesh(a.mesh.path, a.mesh.options);
     spdlog::info("mesh: {} nodes, {} {} elements, {} DOFs", mesh.numNodes(), mesh.volume.size(),
                  fem::name(mesh.volume.type), 3 * mesh.numNodes());
     spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s)", specs.size(),
@@ -44,9 +43,9 @@ void runReduce(const ReduceArgs& a) {
         for (const auto& b : a.dampingBands) bands.push_back(modal::parseDampingBand(b));
         modal::assignModalDamping(body, a.settings.dampingRatio, bands);
     }
-    body.meshPath = a.mesh;
-    body.meshHash = modal::fnv1a64File(a.mesh);
-    body.meshSize = a.size;
+    body.meshPath = a.mesh.path;
+    body.meshHash = modal::fnv1a64File(a.mesh.path);
+    body.meshSize = a.mesh.options.size;
     spdlog::info("basis: {} constraint + {} normal + {} static-correction vectors ({} dependent dropped) -> {} modes",
                  rep.constraintModes, rep.normalModes, rep.staticCorrectionModes, rep.droppedDependent,
                  body.numModes());
@@ -58,7 +57,7 @@ void runReduce(const ReduceArgs& a) {
     const int rigid = static_cast<int>(std::count(body.rigidBody.begin(), body.rigidBody.end(), 1));
     if (a.json) {
         nlohmann::json doc;
-        doc["mesh"] = a.mesh;
+        doc["mesh"] = a.mesh.path;
         doc["output"] = a.out;
         doc["dofs"] = rep.dofs;
         doc["modes"] = body.numModes();
@@ -82,7 +81,7 @@ void runReduce(const ReduceArgs& a) {
         return;
     }
     std::printf("%s -> %s: %d modes (%d constraint, %d normal, %d static correction), %d rigid-body\n",
-                a.mesh.c_str(), a.out.c_str(), body.numModes(), rep.constraintModes, rep.normalModes,
+                a.mesh.path.c_str(), a.out.c_str(), body.numModes(), rep.constraintModes, rep.normalModes,
                 rep.staticCorrectionModes, rigid);
     std::printf("%6s  %16s\n", "mode", "frequency [Hz]");
     for (int k = 0; k < body.numModes(); ++k)
@@ -99,13 +98,8 @@ void addReduceCommand(CLI::App& app) {
     a->settings.circumferentialOrder = 6;
     a->settings.dampingRatio = 0.02;
     CLI::App* cmd = app.add_subcommand("reduce", "Craig–Bampton reduced body of a mesh, written to an HDF5 file");
-    cmd->add_option("--mesh", a->mesh, "Mesh file: .msh or .geo")->required();
-    cmd->add_option("--order", a->order, "Element order 1 or 2 (default: .geo → 2, .msh → as stored)")
-        ->check(CLI::IsMember({1, 2}));
-    cmd->add_option("--size", a->size, "Target element size for .geo files [m]")->check(CLI::PositiveNumber);
-    cmd->add_option("--E", a->material.E, "Young's modulus [Pa]")->required()->check(CLI::PositiveNumber);
-    cmd->add_option("--nu", a->material.nu, "Poisson's ratio [-]")->required()->check(CLI::Range(-0.999, 0.499));
-    cmd->add_option("--rho", a->material.rho, "Density [kg/m^3]")->required()->check(CLI::PositiveNumber);
+    addMeshOptions(cmd, a->mesh);
+    addMaterialOptions(cmd, a->material);
     cmd->add_option("--interface", a->interfaces,
                     "Interface node set tied to a 6-DOF reference node: GROUP[:rbe2][@x,y,z] (point in m; "
                     "default: centroid of the set); repeatable")
