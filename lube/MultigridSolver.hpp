@@ -19,9 +19,11 @@
 // Grids: the structured FilmGrid hierarchy, coarsened by 2 in each direction where it halves
 // (semicoarsening otherwise): bilinear P with the true axial coordinates (non-uniform spacing),
 // periodic wrap in θ; masks, supply nodes and open edges enter only through the truncation.
-// Smoother: alternating line Gauss–Seidel (tridiagonal solves along z, then along θ, cyclic when
-// periodic), robust to the grid anisotropy of long skirts (Δz ≪ RΔθ) and slender bearings.
-// Coarsest grid (≤ 400 nodes): dense LDLT. Unbounded problems (pLower = −∞) use the same loop
+// Smoother: line Gauss–Seidel along the strongly coupled direction of each level (zebra
+// tridiagonal solves along z for skirts, Δz ≪ RΔθ; cyclic ones along θ for long bearings;
+// alternating when neither dominates), factorizations cached per line. When the frozen set
+// changes, only the coarse Galerkin rows it reaches are rebuilt. Coarsest grid (≤ 400 nodes):
+// dense LDLT. Unbounded problems (pLower = −∞) use the same loop
 // without projection: a linear multigrid iteration with exact line search.
 // Convergence criterion: ReynoldsSystem::residual ≤ tolerance (docs/lube.md §3); iterations =
 // outer (V-cycle) iterations. Cost per iteration is O(N).

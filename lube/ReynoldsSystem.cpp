@@ -47,9 +47,10 @@ ReynoldsSystem::ReynoldsSystem(const FilmGrid& grid, const FilmState& film,
                                         std::to_string(eta[k]) + ", rho = " +
                                         std::to_string(rho[k]) + ")");
 
+    // Face conductances c_f, stored at the face's lower node: axial face (i,j)–(i+1,j) in cz,
+    // circumferential face (i,j)–(i,j+1 mod nθ) in ct; 0 where there is no face.
     b_ = Eigen::VectorXd::Zero(n);
-    std::vector<Eigen::Triplet<double, int>> trip;
-    trip.reserve(static_cast<std::size_t>(5 * n));
+    std::vector<double> cz(static_cast<std::size_t>(n), 0.0), ct(static_cast<std::size_t>(n), 0.0);
     const double Uz = film.sumAxial(), Ut = film.sumCircumferential();
     auto film_ = [&](int k) { return grid.kind(k) == NodeKind::Film; };
 
@@ -59,31 +60,70 @@ ReynoldsSystem::ReynoldsSystem(const FilmGrid& grid, const FilmState& film,
         const double ef = faceValue(grid, eta, a, b);
         const double c = rf * hf * hf * hf * L / (12.0 * ef * d);
         const double m = 0.5 * (axial ? Uz : Ut) * rf * hf * L;  // Couette flux a → b
+        (axial ? cz : ct)[static_cast<std::size_t>(a)] = c;
         if (film_(a)) {
-            trip.emplace_back(a, a, c);
-            if (film_(b)) trip.emplace_back(a, b, -c);
-            else b_[a] += c * grid.prescribedPressure(b);
+            if (!film_(b)) b_[a] += c * grid.prescribedPressure(b);
             b_[a] -= m;
         }
         if (film_(b)) {
-            trip.emplace_back(b, b, c);
-            if (film_(a)) trip.emplace_back(b, a, -c);
-            else b_[b] += c * grid.prescribedPressure(a);
+            if (!film_(a)) b_[b] += c * grid.prescribedPressure(a);
             b_[b] += m;
         }
     });
     for (int k = 0; k < n; ++k) {
-        if (!film_(k)) {
-            trip.emplace_back(k, k, 1.0);
-            b_[k] = grid.prescribedPressure(k);
-        } else if (film.dhdt.size() != 0) {
-            b_[k] -= grid.area(k) * rho[k] * film.dhdt[k];  // squeeze: ∂(ρh)/∂t V_k
+        if (!film_(k)) b_[k] = grid.prescribedPressure(k);
+        else if (film.dhdt.size() != 0) b_[k] -= grid.area(k) * rho[k] * film.dhdt[k];  // squeeze: ∂(ρh)/∂t V_k
+    }
+
+    // A in compressed columns, written directly (symmetric: column k = row k). Film node k:
+    // diagonal Σ_f c_f over its faces (summed in the face-visiting order of forEachFace), −c_f
+    // towards Film neighbours; Fixed/Void nodes: identity.
+    const int nz = grid.nAxial(), nt = grid.nTheta();
+    const bool periodic = grid.periodic();
+    A_.resize(n, n);
+    A_.resizeNonZeros(5 * n);
+    int* outer = A_.outerIndexPtr();
+    int* inner = A_.innerIndexPtr();
+    double* val = A_.valuePtr();
+    diag_.resize(n);
+    int nnz = 0;
+    for (int i = 0; i < nz; ++i) {
+        for (int j = 0; j < nt; ++j) {
+            const int k = i * nt + j;
+            outer[k] = nnz;
+            if (!film_(k)) {
+                inner[nnz] = k;
+                val[nnz++] = 1.0;
+                diag_[k] = 1.0;
+                continue;
+            }
+            const auto sk = static_cast<std::size_t>(k);
+            const bool hasLeft = j > 0 || periodic, hasRight = j + 1 < nt || periodic;
+            const int left = j > 0 ? k - 1 : k + nt - 1, right = j + 1 < nt ? k + 1 : k - nt + 1;
+            const double cUp = i > 0 ? cz[sk - static_cast<std::size_t>(nt)] : 0.0;
+            const double cDown = i + 1 < nz ? cz[sk] : 0.0;
+            const double cLeft = hasLeft ? ct[static_cast<std::size_t>(left)] : 0.0;
+            const double cRight = hasRight ? ct[sk] : 0.0;
+            const double diag = j > 0 ? cUp + cLeft + cDown + cRight : cUp + cDown + cRight + cLeft;
+            // Rows in increasing order (the periodic wrap neighbours sit at the far end).
+            auto emit = [&](int row, double v) {
+                inner[nnz] = row;
+                val[nnz++] = v;
+            };
+            const bool up = i > 0 && film_(k - nt), down = i + 1 < nz && film_(k + nt);
+            const bool l = hasLeft && film_(left), r = hasRight && film_(right);
+            if (up) emit(k - nt, -cUp);
+            if (periodic && j == nt - 1 && r) emit(right, -cRight);
+            if (l && left < k) emit(left, -cLeft);
+            emit(k, diag);
+            if (r && right > k) emit(right, -cRight);
+            if (periodic && j == 0 && l) emit(left, -cLeft);
+            if (down) emit(k + nt, -cDown);
+            diag_[k] = diag;
         }
     }
-    A_.resize(n, n);
-    A_.setFromTriplets(trip.begin(), trip.end());
-    A_.makeCompressed();
-    diag_ = A_.diagonal();
+    outer[n] = nnz;
+    A_.resizeNonZeros(nnz);
     for (int k = 0; k < n; ++k)
         if (film_(k) && !(diag_[k] > 0.0))
             throw std::invalid_argument("ReynoldsSystem: film node " + std::to_string(k) +

@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -79,10 +80,15 @@ std::pair<int, int> parseGrid(const std::string& s) {
     return {nt, nz};
 }
 
+std::string str(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
 void requirePositive(double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v))
-        throw std::invalid_argument(std::string(what) + " must be positive and finite (got " +
-                                    std::to_string(v) + ")");
+        throw std::invalid_argument(std::string(what) + " must be positive and finite (got " + str(v) + ")");
 }
 
 const char* name(Model m) {
@@ -116,7 +122,7 @@ void runBearing(const BearingArgs& a) {
         throw std::invalid_argument("--omega must be in (0, 2), or 0 for automatic");
     if (!(a.eccentricity > 0.0 && a.eccentricity < 1.0))
         throw std::invalid_argument("--eccentricity must be in (0, 1), the journal touches the sleeve at 1 (got " +
-                                    std::to_string(a.eccentricity) + ")");
+                                    str(a.eccentricity) + ")");
     if (a.length > 0.0 && a.lengthOverDiameter > 0.0)
         throw std::invalid_argument("give either --length or --length-over-diameter, not both");
     if (a.length != 0.0) requirePositive(a.length, "--length");

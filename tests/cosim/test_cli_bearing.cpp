@@ -93,7 +93,8 @@ TEST(CliBearing, ShortBearingOcvirk) {
 // Raimondi & Boyd (ASLE Trans. 1 (1958) 159), full 360° bearing, L/D = 1, ε = 0.6 (h0/c = 0.4),
 // Reynolds condition, p = 0 at the maximum film: S = 0.121, φ = 50.58°, (R/c)f = 3.22,
 // Q/(RcNL) = 4.33, Qs/Q = 0.680, P/p_max = 0.415 (table as reproduced in Shigley's Mechanical
-// Engineering Design). Chart values have 3 digits; the side flow depends on where the leakage
+// Engineering Design; quoted from memory by two developers independently and not re-checked
+// against the printed table in the session that added it). Chart values have 3 digits; the side flow depends on where the leakage
 // is measured (here half a cell inside the ends), hence 3% on Qs/Q.
 TEST(CliBearing, RaimondiBoydTableRow) {
     const auto d = bearing("--eccentricity 0.6 --length-over-diameter 1 --grid 256x65");

@@ -1,7 +1,11 @@
 // bench_lube: times PSOR, the active-set and the multigrid solver to the same relative natural residual on a
 // skirt-like film and on a plain journal bearing, at grids nAxial×nTheta from 64×128 up.
 // Not a test: prints a Markdown table (scripts/bench_lube.sh writes it into docs/).
-//   bench_lube [maxAxial=512] [tolerance=1e-8]
+//   bench_lube [maxAxial=512] [tolerance=1e-8] [repeats=1] [multigrid]
+// Each time is the best of `repeats` cold solves (a fresh ReynoldsSolver each), which filters
+// out the noise of a shared machine. With a fourth argument `multigrid` only the multigrid solver
+// is timed (short table), for profiling and before/after comparisons.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -62,6 +66,29 @@ Problem skirt(int nz, int nt) {
 int main(int argc, char** argv) {
     const int maxAxial = argc > 1 ? std::atoi(argv[1]) : 512;
     const double tol = argc > 2 ? std::atof(argv[2]) : 1e-8;
+    const int repeats = std::max(1, argc > 3 ? std::atoi(argv[3]) : 1);
+    if (argc > 4 && std::string(argv[4]) == "multigrid") {
+        std::printf("| problem | grid | multigrid it. (coarse) | best multigrid s | µs/node |\n|---|---|---|---|---|\n");
+        for (const std::string name : {"skirt", "journal"})
+            for (int nz = 64; nz <= maxAxial; nz *= 2) {
+                double best = 1e300;
+                ReynoldsResult r;
+                for (int rep = 0; rep < repeats; ++rep) {
+                    Problem pb = name == "skirt" ? skirt(nz, 2 * nz) : journal(nz, 2 * nz);
+                    ReynoldsOptions opt;
+                    opt.solver = SolverKind::Multigrid;
+                    opt.control.tolerance = tol;
+                    ReynoldsSolver rs(pb.grid, Lubricant(0.01), opt);
+                    const auto t0 = std::chrono::steady_clock::now();
+                    r = rs.solve(pb.film);
+                    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                }
+                std::printf("| %s | %d×%d | %d (%d) | %.4f | %.3f |\n", name.c_str(), nz, 2 * nz, r.iterations,
+                            r.coarseIterations, best, 1e6 * best / (2 * nz * nz));
+                std::fflush(stdout);
+            }
+        return 0;
+    }
     std::printf("| problem | grid (axial×circ.) | nodes | PSOR sweeps | PSOR s | active-set it. "
                 "(coarse) | active-set s | multigrid it. (coarse) | multigrid s | multigrid µs/node "
                 "| speed-up vs PSOR | max |Δp|/p_max PSOR | max |Δp|/p_max multigrid |\n");
@@ -73,15 +100,18 @@ int main(int argc, char** argv) {
             ReynoldsResult res[3];
             double sec[3];
             for (int s = 0; s < 3; ++s) {
-                Problem pb = name == "skirt" ? skirt(nz, nt) : journal(nz, nt);
-                ReynoldsOptions opt;
-                opt.solver = kinds[s];
-                opt.control.tolerance = tol;
-                opt.control.maxIterations = 1000000;
-                ReynoldsSolver rs(pb.grid, Lubricant(0.01), opt);
-                const auto t0 = std::chrono::steady_clock::now();
-                res[s] = rs.solve(pb.film);
-                sec[s] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                sec[s] = 1e300;
+                for (int rep = 0; rep < repeats; ++rep) {
+                    Problem pb = name == "skirt" ? skirt(nz, nt) : journal(nz, nt);
+                    ReynoldsOptions opt;
+                    opt.solver = kinds[s];
+                    opt.control.tolerance = tol;
+                    opt.control.maxIterations = 1000000;
+                    ReynoldsSolver rs(pb.grid, Lubricant(0.01), opt);
+                    const auto t0 = std::chrono::steady_clock::now();
+                    res[s] = rs.solve(pb.film);
+                    sec[s] = std::min(sec[s], std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                }
             }
             // Errors against the active-set answer (exact to round-off).
             const double pmax = res[1].pressure.maxCoeff();
