@@ -52,17 +52,35 @@ void DofMap::markLinked(const std::vector<Index>& nodes, bool tied) {
     if (final_) throw std::logic_error("DofMap: link added after finalize()");
     if (dofsPerNode_ != 3) throw std::logic_error("DofMap: links need 3 DOFs per node");
     if (nodes.empty()) throw std::invalid_argument("link: the node set is empty");
+    for (Index n : nodes) {  // validate everything before changing anything
+        if (n < 0 || 3 * n + 2 >= numDofs()) throw std::out_of_range("link: node " + std::to_string(n) + " out of range");
+        for (int c = 0; c < 3; ++c) {
+            if (equation_[3 * n + c] == -1)
+                throw std::invalid_argument("link: node " + std::to_string(n) + " is also held");
+            if (linked_.count(3 * n + c))
+                throw std::invalid_argument("link: node " + std::to_string(n) + " is in two links (overlapping interfaces)");
+        }
+    }
     for (Index n : nodes)
         for (int c = 0; c < 3; ++c) {
-            const Index d = 3 * n + c;
-            if (equation_[d] == -1) throw std::invalid_argument("link: node " + std::to_string(n) + " is also held");
-            if (linked_.count(d)) throw std::invalid_argument("link: node " + std::to_string(n) + " is in two links");
-            linked_.insert(d);
-            if (tied) equation_[d] = -2;
+            linked_.insert(3 * n + c);
+            if (tied) equation_[3 * n + c] = -2;
         }
 }
 
 int DofMap::addRigidLink(const std::vector<Index>& nodes, const Eigen::Matrix3Xd& x, const Eigen::Vector3d& point) {
+    // The reference rotation must be fixed by the set: at least three non-collinear nodes
+    // (rank of Σ GᵀG = 6), else the rotation about their line has no stiffness.
+    Eigen::Matrix<double, 6, 6> GtG = Eigen::Matrix<double, 6, 6>::Zero();
+    for (Index n : nodes) {
+        Eigen::Matrix<double, 3, 6> G;
+        const Eigen::Vector3d d = x.col(n) - point;
+        G.leftCols<3>().setIdentity();
+        G.rightCols<3>() << 0, d(2), -d(1), -d(2), 0, d(0), d(1), -d(0), 0;
+        GtG += G.transpose() * G;
+    }
+    if (Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>>(GtG).rank() < 6)
+        throw std::invalid_argument("rigid link: the nodes are collinear (or fewer than 3), the reference rotation is undefined");
     markLinked(nodes, true);
     Link link;
     link.nodes = nodes;

@@ -59,6 +59,10 @@ double automaticShift(const SparseMatrix& K, const SparseMatrix& M) {
 
 }  // namespace
 
+double rigidBodyThreshold(const SparseMatrix& K, const SparseMatrix& M) {
+    return 1e-10 * K.diagonal().sum() / M.diagonal().sum();
+}
+
 Eigen::VectorXd Eigenmodes::frequenciesHz() const {
     Eigen::VectorXd f(eigenvalues.size());
     for (Eigen::Index i = 0; i < f.size(); ++i)

@@ -28,6 +28,11 @@ struct Eigenmodes {
     Eigen::VectorXd frequenciesHz() const;
 };
 
+/// Eigenvalues below this are rigid-body modes: 1e-10 tr(K)/tr(M), where tr(K)/tr(M)
+/// is the square of a typical element frequency. Independent of how many modes were
+/// computed (a threshold relative to the largest computed eigenvalue is not).
+double rigidBodyThreshold(const SparseMatrix& K, const SparseMatrix& M);
+
 /// K and M: upper triangles of the (constrained) stiffness and mass matrices.
 /// Throws std::runtime_error if the factorization fails or Lanczos does not converge.
 /// With `factorOfK` (a factorization of K, which must then be positive definite, e.g. a

@@ -65,7 +65,7 @@ void loadIntoGmsh(const std::string& path, const MeshOptions& opt) {
         fail(path, "unsupported extension '" + ext + "' (expected .msh or .geo)");
     if (opt.order < 0 || opt.order > 2)
         fail(path, "element order " + std::to_string(opt.order) + " not supported (1 or 2)");
-    if (opt.size < 0.0) fail(path, "element size must be positive (m)");
+    if (!(opt.size >= 0.0)) fail(path, "element size must be a positive number of metres");
 
     freshGmsh();
     if (ext == ".geo" && opt.size > 0.0) gmsh::onelab::setNumber("Parameters/size", {opt.size});

@@ -19,10 +19,8 @@ FixedGroup parseFixedGroup(const std::string& text) {
 
 int ModalAnalysis::rigidBodyModes() const {
     const auto& l = modes.eigenvalues;
-    if (l.size() == 0) return 0;
-    const double scale = l.cwiseAbs().maxCoeff();
     int n = 0;
-    while (n < l.size() && std::abs(l(n)) < 1e-6 * scale) ++n;
+    while (n < l.size() && std::abs(l(n)) < rigidThreshold) ++n;
     return n;
 }
 
@@ -42,6 +40,7 @@ ModalAnalysis analyseModes(const Mesh& mesh, const ElasticMaterial& material,
     const bool constrained = dofs.numConstrained() > 0;
     const SparseMatrix Kf = constrained ? dofs.reduce(K) : K;
     const SparseMatrix Mf = constrained ? dofs.reduce(M) : M;
+    out.rigidThreshold = rigidBodyThreshold(Kf, Mf);
     out.assembleSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.modes = solveEigenmodes(Kf, Mf, options);
     if (constrained) out.modes.shapes = dofs.expandHomogeneous(out.modes.shapes);

@@ -24,8 +24,9 @@ struct ModalAnalysis {
     Eigenmodes modes;             ///< shapes expanded to all 3 x nodes DOFs (held DOFs zero)
     Index dofs = 0, freeDofs = 0;
     double assembleSeconds = 0.0;
-    /// Number of leading modes with |λ| below 1e-6 of the largest computed eigenvalue:
-    /// the rigid-body modes of an insufficiently held body.
+    double rigidThreshold = 0.0;  ///< (rad/s)^2, see fem::rigidBodyThreshold
+    /// Number of leading modes with |λ| below rigidThreshold: the rigid-body modes of an
+    /// insufficiently held body.
     int rigidBodyModes() const;
 };
 

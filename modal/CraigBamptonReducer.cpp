@@ -35,8 +35,8 @@ fem::Eigenmodes normalModes(const fem::SparseMatrix& Kii, const fem::SparseMatri
     const int maxModes = static_cast<int>(std::min<Eigen::Index>(Kii.rows() - 1, 2000));
     if (s.normalModes > maxModes)
         throw std::invalid_argument("reduction: " + std::to_string(s.normalModes) +
-                                    " normal modes requested, the interior has only " +
-                                    std::to_string(Kii.rows()) + " DOFs");
+                                    " normal modes requested; at most " + std::to_string(maxModes) +
+                                    " (2000, and fewer than the " + std::to_string(Kii.rows()) + " interior DOFs)");
     fem::EigenmodeOptions opt;
     // The basis is Rayleigh–Ritz projected afterwards (orthonormalisation), so the
     // fixed-interface vectors need not be converged to round-off.
@@ -98,6 +98,14 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     auto t = Clock::now();
     if (specs.empty())
         throw std::invalid_argument("reduction: no interface given; the body must be held at an interface");
+    // Cheap checks first: everything below can take minutes on a production mesh.
+    if (!(settings.cutoffHz >= 0.0)) throw std::invalid_argument("reduction: cut-off frequency must be >= 0 Hz");
+    if (!(settings.dampingRatio >= 0.0 && settings.dampingRatio < 1.0))
+        throw std::invalid_argument("reduction: damping ratio must lie in [0, 1)");
+    if (settings.axialHats == 1 || settings.axialHats < 0 || settings.axialOrder < 0 ||
+        settings.circumferentialOrder < 0)
+        throw std::invalid_argument("reduction: load patterns need orders >= 0 and axial hats 0 or >= 2");
+    for (const auto& surface : settings.staticCorrection) fem::BoundarySurface(mesh_, surface);
     ReducedBody body;
     body.mesh = mesh_;
     body.material = material_;
@@ -118,7 +126,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
             else
                 dofs.addAveragingLink(itf.nodes, mesh_.nodes, itf.referencePoint);
         } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("interface '" + s.group + "' overlaps another interface (" + e.what() + ")");
+            throw std::invalid_argument("interface '" + s.group + "': " + e.what());
         }
         body.interfaces.push_back(std::move(itf));
     }
@@ -161,19 +169,21 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     // converge to slowly.
     Eigen::MatrixXd X = factor->solve(Eigen::MatrixXd(-(Mii.selfadjointView<Eigen::Upper>() * Psi + Mib)));
     if (Phi.cols() > 0) X -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * X));
+    rep.inertiaReliefModes = int(X.cols());
     for (const auto& surface : settings.staticCorrection) {
         const fem::BoundarySurface s(mesh_, surface);
         const Eigen::MatrixXd P =
             surfacePressurePatterns(mesh_, surface, settings.axialOrder, settings.circumferentialOrder, settings.axialHats);
         Eigen::MatrixXd Fi(ni, P.cols());
         for (Eigen::Index j = 0; j < P.cols(); ++j)
-            Fi.col(j) = dofs.reduceLoad(assembler.pressureLoad(s, Eigen::VectorXd(P.col(j))), Kr).head(ni);
+            Fi.col(j) = (dofs.transformation().transpose() * assembler.pressureLoad(s, Eigen::VectorXd(P.col(j))))
+                            .head(ni);
         Eigen::MatrixXd Xs = factor->solve(Fi);
         if (Phi.cols() > 0) Xs -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * Xs));
         X.conservativeResize(Eigen::NoChange, X.cols() + Xs.cols());
         X.rightCols(Xs.cols()) = Xs;
     }
-    rep.staticCorrectionModes = int(X.cols());
+    rep.staticCorrectionModes = int(X.cols()) - rep.inertiaReliefModes;
     rep.staticCorrectionSeconds = since(t);
 
     // --- basis in the free DOFs and its projected matrices ---
@@ -193,8 +203,11 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     const Eigen::MatrixXd MB = RowMatrix(fem::SparseMatrix(Mr.selfadjointView<Eigen::Upper>()) * Brow);
     const Eigen::MatrixXd KB = RowMatrix(fem::SparseMatrix(Kr.selfadjointView<Eigen::Upper>()) * Brow);
     const Eigen::VectorXd norms = (B.cwiseProduct(MB)).colwise().sum().transpose();
-    if (!(norms.minCoeff() > 0.0)) throw std::runtime_error("reduction: a basis vector has no mass");
-    const Eigen::VectorXd d = norms.cwiseSqrt().cwiseInverse();
+    // A pattern that loads nothing (e.g. sin mθ on a surface in a plane through the axis)
+    // gives a zero vector: weight 0 here, dropped below as a dependent direction.
+    Eigen::VectorXd d(norms.size());
+    for (Eigen::Index j = 0; j < norms.size(); ++j)
+        d(j) = norms(j) > 1e-28 * norms.maxCoeff() ? 1.0 / std::sqrt(norms(j)) : 0.0;
     B = B * d.asDiagonal();
     const Eigen::MatrixXd Mb = multiplyTransposed(B, MB) * d.asDiagonal();  // D Bᵀ M B D
     const Eigen::MatrixXd Kb = multiplyTransposed(B, KB) * d.asDiagonal();
@@ -205,6 +218,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     std::vector<Eigen::Index> keep;
     for (Eigen::Index k = 0; k < m0; ++k)
         if (me.eigenvalues()(k) > 1e-10 * smax) keep.push_back(k);
+    if (smax <= 0.0) throw std::runtime_error("reduction: the basis is empty");
     rep.droppedDependent = int(m0 - keep.size());
     Eigen::MatrixXd Q(m0, keep.size());
     for (std::size_t k = 0; k < keep.size(); ++k)
@@ -219,14 +233,14 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     body.stiffnessMatrix = C.transpose() * Kb * C;
     body.interfaceMotion = BC.bottomRows(nb);
     const Eigen::VectorXd lambda = ke.eigenvalues();
-    const double lmax = lambda.cwiseAbs().maxCoeff();
+    const double rigidThreshold = fem::rigidBodyThreshold(Kr, Mr);
     const int m = int(lambda.size());
     body.frequenciesHz.resize(m);
     body.rigidBody.assign(m, 0);
     body.dampingRatios = Eigen::VectorXd::Constant(m, settings.dampingRatio);
     for (int k = 0; k < m; ++k) {
         body.frequenciesHz(k) = std::copysign(std::sqrt(std::abs(lambda(k))), lambda(k)) / (2 * std::numbers::pi);
-        if (std::abs(lambda(k)) < 1e-6 * lmax) {  // same criterion as fem::ModalAnalysis
+        if (std::abs(lambda(k)) < rigidThreshold) {  // same criterion as fem::ModalAnalysis
             body.rigidBody[k] = 1;
             body.dampingRatios(k) = 0.0;
         }

@@ -29,7 +29,8 @@ InterfaceSpec parseInterface(const std::string& text);
 struct ReductionReport {
     double assembleSeconds = 0, factorSeconds = 0, constraintModeSeconds = 0, normalModeSeconds = 0,
            staticCorrectionSeconds = 0, orthonormaliseSeconds = 0;
-    int constraintModes = 0, normalModes = 0, staticCorrectionModes = 0, droppedDependent = 0;
+    int constraintModes = 0, normalModes = 0, inertiaReliefModes = 0, staticCorrectionModes = 0,
+        droppedDependent = 0;
     long long dofs = 0;
 };
 

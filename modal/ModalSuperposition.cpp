@@ -28,6 +28,9 @@ Eigen::VectorXd ModalSuperposition::modalForce(const Eigen::VectorXd& f) const {
 
 Eigen::VectorXd ModalSuperposition::quasiStatic(const Eigen::VectorXd& g, const std::vector<int>& held) const {
     const Eigen::Index m = body_.numModes();
+    if (g.size() != m)
+        throw std::invalid_argument("quasi-static: " + std::to_string(g.size()) + " modal forces for " +
+                                    std::to_string(m) + " modes");
     // Constraint A q = 0 (held reference motions); q = N y with N an orthonormal null-space basis.
     Eigen::MatrixXd A(6 * held.size(), m);
     for (std::size_t i = 0; i < held.size(); ++i) {
@@ -41,6 +44,7 @@ Eigen::VectorXd ModalSuperposition::quasiStatic(const Eigen::VectorXd& g, const 
         const Eigen::Index r = qr.rank();
         N = (qr.householderQ() * Eigen::MatrixXd::Identity(m, m)).rightCols(m - r);
     }
+    if (N.cols() == 0) return Eigen::VectorXd::Zero(m);  // held interfaces fix every mode
     const Eigen::MatrixXd Kn = N.transpose() * body_.stiffnessMatrix * N;
     Eigen::LDLT<Eigen::MatrixXd> ldlt(Kn);
     const double scale = body_.stiffnessMatrix.diagonal().cwiseAbs().maxCoeff();

@@ -22,6 +22,9 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
+/// Rejects NaN and infinities (CLI11's range checks let NaN through).
+extern const CLI::Validator kFinite;
+
 /// The mesh options every mesh-reading subcommand shares: --mesh, --order, --size.
 struct MeshArguments {
     std::string path;

@@ -46,9 +46,10 @@ void runReduce(const ReduceArgs& a) {
     body.meshPath = a.mesh.path;
     body.meshHash = modal::fnv1a64File(a.mesh.path);
     body.meshSize = a.mesh.options.size;
-    spdlog::info("basis: {} constraint + {} normal + {} static-correction vectors ({} dependent dropped) -> {} modes",
-                 rep.constraintModes, rep.normalModes, rep.staticCorrectionModes, rep.droppedDependent,
-                 body.numModes());
+    spdlog::info("basis: {} constraint + {} normal + {} inertia-relief + {} static-correction vectors ({} dependent "
+                 "dropped) -> {} modes",
+                 rep.constraintModes, rep.normalModes, rep.inertiaReliefModes, rep.staticCorrectionModes,
+                 rep.droppedDependent, body.numModes());
     Stopwatch w;
     modal::writeReducedBody(body, a.out);
     const double writeSeconds = w.seconds();
@@ -63,6 +64,7 @@ void runReduce(const ReduceArgs& a) {
         doc["modes"] = body.numModes();
         doc["basis"] = {{"constraint", rep.constraintModes},
                         {"normal", rep.normalModes},
+                        {"inertia_relief", rep.inertiaReliefModes},
                         {"static_correction", rep.staticCorrectionModes},
                         {"dropped_dependent", rep.droppedDependent}};
         doc["rigid_body_modes"] = rigid;
@@ -101,25 +103,25 @@ void addReduceCommand(CLI::App& app) {
     addMeshOptions(cmd, a->mesh);
     addMaterialOptions(cmd, a->material);
     cmd->add_option("--interface", a->interfaces,
-                    "Interface node set tied to a 6-DOF reference node: GROUP[:rbe2][@x,y,z] (point in m; "
-                    "default: centroid of the set); repeatable")
+                    "Interface node set and its 6-DOF reference node: GROUP[:rbe2|:rbe3][@x,y,z] (rbe2 rigid, "
+                    "rbe3 averaging; point in m, default: centroid of the set); repeatable")
         ->required();
     cmd->add_option("--modes", a->settings.normalModes, "Fixed-interface normal modes to keep")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--cutoff", a->settings.cutoffHz, "Keep the normal modes below this frequency [Hz] instead")
-        ->check(CLI::PositiveNumber);
+        ->check(kFinite & CLI::PositiveNumber);
     cmd->add_option("--static-correction", a->settings.staticCorrection,
                     "Surface group with static-correction modes for pressure loads; repeatable");
     cmd->add_option("--axial-order", a->settings.axialOrder, "Load patterns: Legendre degree along z")
         ->check(CLI::Range(0, 20));
     cmd->add_option("--axial-hats", a->settings.axialHats,
                     "Load patterns: this many piecewise-linear hats along z instead (travelling loads, e.g. liner)")
-        ->check(CLI::Range(0, 200));
+        ->check(CLI::Range(0, 200) & !CLI::IsMember({1}));
     cmd->add_option("--circumferential-order", a->settings.circumferentialOrder,
                     "Load patterns: highest Fourier order in the angle")
         ->check(CLI::Range(0, 40));
-    cmd->add_option("--damping", a->settings.dampingRatio, "Modal damping ratio of the elastic modes [-]")
-        ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--damping", a->settings.dampingRatio, "Modal damping ratio of the elastic modes, in [0, 1) [-]")
+        ->check(kFinite & CLI::Range(0.0, 0.999999));
     cmd->add_option("--damping-band", a->dampingBands,
                     "Damping per band FMAX:ZETA [Hz:-]: elastic modes up to FMAX get ZETA (lowest band first), "
                     "modes above all bands get --damping; repeatable");

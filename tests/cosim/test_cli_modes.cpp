@@ -66,6 +66,13 @@ TEST(CliModes, ParaViewFilesOfFreeBody) {
     for (const auto& e : std::filesystem::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".tmp");
 }
 
+TEST(CliModes, RigidBodyModesCountedWhenOnlyFewModesAreAsked) {
+    // Six modes of a free body are all rigid: the flag must not depend on the spectrum computed.
+    const CommandResult r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --count 6 --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out).at("rigid_body_modes"), 6);
+}
+
 TEST(CliModes, UnknownGroupIsAnErrorListingTheGroups) {
     const CommandResult r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --fix crown");
     EXPECT_EQ(r.status, 1);
@@ -81,6 +88,9 @@ TEST(CliModes, MissingMeshAndBadArgumentsFail) {
     r = runFlexehd("modes --mesh " + dataPath("beam.geo") + " --E 2.1e11 --nu 0.7 --rho 7850");
     EXPECT_NE(r.status, 0);
     EXPECT_THAT(r.err, HasSubstr("--nu"));
+    r = runFlexehd("modes --mesh " + dataPath("beam.geo") + " --E nan --nu 0.3 --rho 7850");
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.err, HasSubstr("not a finite number"));
     r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --fix clamped:q");
     EXPECT_NE(r.status, 0);
     EXPECT_THAT(r.err, HasSubstr("components 'q'"));

@@ -171,7 +171,7 @@ TEST(CraigBampton, BadInputGivesClearErrors) {
     EXPECT_THAT(errorOf([&] {
                     reducer.reduce({modal::parseInterface("pin_bore"), modal::parseInterface("pin_bore")}, settings(5));
                 }),
-                HasSubstr("overlaps"));
+                HasSubstr("overlapping interfaces"));
     EXPECT_THAT(errorOf([&] { reducer.reduce({modal::parseInterface("pin_bore")}, settings(10000000)); }),
                 HasSubstr("normal modes requested"));
 }
@@ -194,4 +194,26 @@ TEST(CraigBampton, InterfaceThatCannotHoldTheBodyIsReported) {
     modal::CraigBamptonReducer reducer(m, kIron);
     EXPECT_THAT(test::errorOf([&] { reducer.reduce({modal::parseInterface("left_end")}, settings(4)); }),
                 testing::HasSubstr("do not hold the body"));
+}
+
+// Review findings: patterns that load nothing are dropped, not fatal; rigid-body flags do
+// not depend on how many (or how stiff) basis vectors were computed; collinear RBE2 sets
+// are refused with a reason.
+TEST(CraigBampton, DegeneratePatternsAreDroppedAndRigidModesCountedRight) {
+    const fem::Mesh m = fem::readMesh(test::dataPath("cube.geo"), {2, 0.5});
+    auto s = settings(6, {"xmin"});  // face x = 0: θ = ±π/2 everywhere, so cos θ, sin 2θ, ... vanish
+    modal::ReductionReport rep;
+    const auto body = modal::CraigBamptonReducer(m, kIron).reduce({modal::parseInterface("xmax:rbe2")}, s, &rep);
+    EXPECT_GT(rep.droppedDependent, 0);
+    EXPECT_EQ(std::count(body.rigidBody.begin(), body.rigidBody.end(), 1), 6);
+    // A free unit cube of iron: its first elastic mode is far from zero (~1 kHz scale).
+    EXPECT_GT(body.frequenciesHz(6), 100.0);
+}
+
+TEST(CraigBampton, CollinearRigidInterfaceIsRefused) {
+    const fem::Mesh m = fem::readMesh(test::dataPath("cube.geo"), {1, 0.5});
+    fem::DofMap dofs(m.numNodes(), 3);
+    const std::vector<fem::Index> one{0};
+    EXPECT_THAT(test::errorOf([&] { dofs.addRigidLink(one, m.nodes, Eigen::Vector3d::Zero()); }),
+                testing::HasSubstr("collinear"));
 }
