@@ -119,6 +119,8 @@ struct Setup {
     LoadMappingStats& stats;
     std::vector<Eigen::Triplet<double>>& triplets;
     std::vector<RulePoint> rule;
+    std::vector<Eigen::Triplet<double>>* axialShear = nullptr;     // τ_z e_z, when requested
+    std::vector<Eigen::Triplet<double>>* circShear = nullptr;      // τ_θ e_θ, when requested
     double zMin = std::numeric_limits<double>::infinity();
     double zMax = -std::numeric_limits<double>::infinity();
 
@@ -230,8 +232,9 @@ void Setup::run() {
                     if (pieceArea <= 1e-14 * (z1 - z0) * dTh) continue;
                     ++stats.fragments;
                     stats.coveredArea += R * pieceArea;
-                    // block(a, 2 l + d): ∫ N_a φ_l n_d over the piece, φ_l the cell's bilinears.
-                    Eigen::Matrix<double, kN, 8> block = Eigen::Matrix<double, kN, 8>::Zero();
+                    // block(a, 2 l + d): ∫ N_a φ_l n_d over the piece, φ_l the cell's bilinears,
+                    // (n_0, n_1) = (cos θ, sin θ); block(a, 8 + l): ∫ N_a φ_l (for τ_z).
+                    Eigen::Matrix<double, kN, 12> block = Eigen::Matrix<double, kN, 12>::Zero();
                     for (std::size_t f = 1; f + 1 < piece.size(); ++f) {
                         const Point& A = piece[0];
                         const Point e1 = piece[f] - A, e2 = piece[f + 1] - A;
@@ -247,6 +250,7 @@ void Setup::run() {
                             for (int l = 0; l < 4; ++l) {
                                 block.col(2 * l) += (phi[l] * cs) * N;
                                 block.col(2 * l + 1) += (phi[l] * sn) * N;
+                                if (axialShear) block.col(8 + l) += (phi[l] * w) * N;
                             }
                         }
                     }
@@ -260,6 +264,15 @@ void Setup::run() {
                             for (int d = 0; d < 2; ++d)
                                 triplets.emplace_back(3 * node[static_cast<std::size_t>(a)] + d, cols[l],
                                                       -sigma * block(a, 2 * l + d));
+                    // Shear: F = ∫ τ_z N e_z dA and F = ∫ τ_θ N (−sin θ, cos θ, 0) dA.
+                    if (axialShear)
+                        for (int a = 0; a < kN; ++a)
+                            for (int l = 0; l < 4; ++l) {
+                                const int n3 = 3 * node[static_cast<std::size_t>(a)];
+                                axialShear->emplace_back(n3 + 2, cols[l], block(a, 8 + l));
+                                circShear->emplace_back(n3, cols[l], -block(a, 2 * l + 1));
+                                circShear->emplace_back(n3 + 1, cols[l], block(a, 2 * l));
+                            }
                 }
             }
         }
@@ -322,7 +335,12 @@ LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
     stats_.gridArea = grid.radius() * grid.length() * grid.angularExtent();
     stats_.quadratureOrder = ruleOrder(grid.dTheta());
     std::vector<Eigen::Triplet<double>> triplets;
+    std::vector<Eigen::Triplet<double>> tz, tt;
     Setup s{mesh, surf, grid, options, stats_, triplets, collapsedRule(stats_.quadratureOrder)};
+    if (options.shear) {
+        s.axialShear = &tz;
+        s.circShear = &tt;
+    }
     if (mesh.surface.type == fem::ElementType::Tri3)
         s.run<fem::ElementType::Tri3>();
     else
@@ -341,6 +359,14 @@ LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
     A_.resize(3 * mesh.numNodes(), grid.size());
     A_.setFromTriplets(triplets.begin(), triplets.end());
     A_.makeCompressed();
+    if (options.shear) {
+        Sz_.resize(A_.rows(), A_.cols());
+        Sz_.setFromTriplets(tz.begin(), tz.end());
+        Sz_.makeCompressed();
+        St_.resize(A_.rows(), A_.cols());
+        St_.setFromTriplets(tt.begin(), tt.end());
+        St_.makeCompressed();
+    }
 }
 
 Eigen::VectorXd LoadMapping::apply(const Eigen::VectorXd& p) const {
@@ -354,6 +380,19 @@ void LoadMapping::apply(const Eigen::VectorXd& p, Eigen::VectorXd& forces) const
         throw std::invalid_argument("LoadMapping::apply: " + std::to_string(p.size()) +
                                     " pressures for a grid of " + std::to_string(A_.cols()) + " nodes");
     forces.noalias() = A_ * p;
+}
+
+Eigen::VectorXd LoadMapping::applyShear(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta) const {
+    if (Sz_.size() == 0)
+        throw std::logic_error("LoadMapping::applyShear: built without the shear operators (options.shear)");
+    for (const Eigen::VectorXd* t : {&tauZ, &tauTheta})
+        if (t->size() != 0 && t->size() != A_.cols())
+            throw std::invalid_argument("LoadMapping::applyShear: " + std::to_string(t->size()) +
+                                        " tractions for a grid of " + std::to_string(A_.cols()) + " nodes");
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(A_.rows());
+    if (tauZ.size() != 0) f.noalias() += Sz_ * tauZ;
+    if (tauTheta.size() != 0) f.noalias() += St_ * tauTheta;
+    return f;
 }
 
 }  // namespace flexehd::cosim

@@ -16,6 +16,7 @@
 // of cos θ / sin θ is below 1e-17: the polynomial part (bilinear × quadratic = degree 4) is
 // exact and the force and the moment about any point on the axis equal those of the bilinear
 // source field on the ideal cylinder to round-off. Built once; applying is one sparse product.
+// Optionally the same for the tangential (shear) tractions along e_z and e_θ.
 #include <string>
 
 #include <Eigen/Core>
@@ -32,6 +33,8 @@ struct LoadMappingOptions {
     double axialOffset = 0.0;
     /// Largest accepted relative spread (max − min) / mean of the surface-node radii.
     double radiusTolerance = 1e-3;
+    /// Also build the shear-traction operators (axialShear(), circumferentialShear()).
+    bool shear = false;
 };
 
 /// What the setup found; the geometric (faceting) error is reported, not corrected.
@@ -66,12 +69,22 @@ public:
     Eigen::VectorXd apply(const Eigen::VectorXd& p) const;
     void apply(const Eigen::VectorXd& p, Eigen::VectorXd& forces) const;
 
+    /// Shear tractions (options.shear): τ_z along e_z and τ_θ along e_θ = (−sin θ, cos θ, 0),
+    /// Pa, the traction the film exerts on the body, bilinear on the grid cells like p:
+    ///     F_j = ∫ N_j τ_z e_z dA,   F_j = ∫ N_j τ_θ e_θ dA,
+    /// on the same common refinement and rule (exact force; same shapes as matrix()).
+    /// Empty (0 × 0) unless options.shear.
+    const Eigen::SparseMatrix<double>& axialShear() const { return Sz_; }
+    const Eigen::SparseMatrix<double>& circumferentialShear() const { return St_; }
+    /// Nodal forces of both shear fields: Sz τ_z + Sθ τ_θ (either may be empty: skipped).
+    Eigen::VectorXd applyShear(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta) const;
+
     const LoadMappingStats& stats() const { return stats_; }
     const std::string& surface() const { return surface_; }
 
 private:
     std::string surface_;
-    Eigen::SparseMatrix<double> A_;
+    Eigen::SparseMatrix<double> A_, Sz_, St_;
     LoadMappingStats stats_;
 };
 

@@ -1,0 +1,239 @@
+#include "cosim/MovingGridMapping.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+namespace flexehd::cosim {
+namespace {
+
+constexpr int kWindowPad = 30;  // rows beyond the overlap: M⁻¹ decays as (2 − √3)^30 ≈ 7e-18
+
+lube::FilmGrid fixedGridFor(const lube::FilmGrid& g, double zMin, double zMax, int rows) {
+    if (rows < 3 || !(zMax > zMin))
+        throw std::invalid_argument("MovingGridMapping: the fixed grid needs zMax > zMin and at least 3 rows");
+    const auto z = lube::FilmGrid::uniform(zMin, zMax, rows);
+    return g.periodic() ? lube::FilmGrid::fullCircumference(g.radius(), z, g.nTheta(), g.theta(0))
+                        : lube::FilmGrid::arc(g.radius(), z, g.theta(0), g.theta(g.nTheta() - 1), g.nTheta());
+}
+
+}  // namespace
+
+MovingGridMapping::MovingGridMapping(const fem::Mesh& mesh, const std::string& surface,
+                                     const lube::FilmGrid& grid, double zMin, double zMax, int fixedRows,
+                                     double radiusTolerance)
+    : z_(grid.axial()),
+      nTheta_(grid.nTheta()),
+      h_((zMax - zMin) / (fixedRows - 1)),
+      fixed_(fixedGridFor(grid, zMin, zMax, fixedRows)),
+      load_(mesh, surface, fixed_, {0.0, radiusTolerance}),
+      def_(mesh, surface, fixed_, 0.0, radiusTolerance) {}
+
+void MovingGridMapping::checkOffset(double offset) const {
+    const double lo = z_.front() + offset, hi = z_.back() + offset;
+    const double zMin = fixed_.axial().front(), zMax = fixed_.axial().back(), tol = 1e-12 * (zMax - zMin);
+    if (lo < zMin - tol || hi > zMax + tol) {
+        std::ostringstream m;
+        m.precision(5);
+        m << "MovingGridMapping: the grid at offset " << offset * 1e3 << " mm spans z = " << lo * 1e3 << " to "
+          << hi * 1e3 << " mm, outside the fixed grid (" << zMin * 1e3 << " to " << zMax * 1e3 << " mm)";
+        throw std::out_of_range(m.str());
+    }
+}
+
+MovingGridMapping::Window MovingGridMapping::project(const Eigen::VectorXd& p, double offset,
+                                                     Eigen::VectorXd& c) const {
+    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nZ = fixed_.nAxial();
+    if (p.size() != static_cast<Eigen::Index>(nz) * nt)
+        throw std::invalid_argument("MovingGridMapping: " + std::to_string(p.size()) + " pressures for a grid of " +
+                                    std::to_string(nz * nt) + " nodes");
+    checkOffset(offset);
+    const double Z0 = fixed_.axial().front(), h = h_;
+    auto cellOf = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - Z0) / h)), 0, nZ - 2); };
+    const double a0 = z_.front() + offset, a1 = z_.back() + offset;
+    Window w;
+    w.k0 = std::max(0, cellOf(a0) - kWindowPad);
+    const int k1 = std::min(nZ - 1, cellOf(a1) + 1 + kWindowPad);
+    w.rows = k1 - w.k0 + 1;
+
+    // b = T P: T(k, i) = ∫ ψ_k φ_i dz over the merged breakpoints (both linear: Simpson exact).
+    std::vector<Eigen::Triplet<double>> trip;
+    trip.reserve(static_cast<std::size_t>(8 * (nz + w.rows)));
+    for (int i = 0; i + 1 < nz; ++i) {
+        const double x0 = z_[static_cast<std::size_t>(i)] + offset, x1 = z_[static_cast<std::size_t>(i + 1)] + offset;
+        for (int k = cellOf(x0); k <= cellOf(x1); ++k) {
+            const double Zk = Z0 + k * h;
+            const double lo = std::max(x0, Zk), hi = std::min(x1, Zk + h);
+            if (!(hi > lo)) continue;
+            const std::array<double, 3> x = {lo, 0.5 * (lo + hi), hi}, wt = {1.0, 4.0, 1.0};
+            double t[2][2] = {{0.0, 0.0}, {0.0, 0.0}};  // t[a][b] = ∫ ψ_{k+a} φ_{i+b}
+            for (int q = 0; q < 3; ++q) {
+                const double phi1 = (x[q] - x0) / (x1 - x0), psi1 = (x[q] - Zk) / h;
+                const double phi[2] = {1.0 - phi1, phi1}, psi[2] = {1.0 - psi1, psi1};
+                for (int a = 0; a < 2; ++a)
+                    for (int b = 0; b < 2; ++b) t[a][b] += wt[q] * (hi - lo) / 6.0 * psi[a] * phi[b];
+            }
+            for (int a = 0; a < 2; ++a)
+                for (int b = 0; b < 2; ++b) trip.emplace_back(k + a - w.k0, i + b, t[a][b]);
+        }
+    }
+    Eigen::SparseMatrix<double, Eigen::RowMajor> T(w.rows, nz);
+    T.setFromTriplets(trip.begin(), trip.end());
+    using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    c.resize(static_cast<Eigen::Index>(w.rows) * nt);
+    Eigen::Map<RowMat> B(c.data(), w.rows, nt);
+    B.noalias() = T * Eigen::Map<const RowMat>(p.data(), nz, nt);
+
+    // Thomas algorithm on the hats' Gram matrix: off-diagonal h/6, diagonal 2h/3 (h/3 at the
+    // ends of G; a window end inside G keeps 2h/3: projection onto the window's hats).
+    const double off = h / 6.0;
+    std::vector<double> diag(static_cast<std::size_t>(w.rows));
+    for (int r = 0; r < w.rows; ++r) {
+        const int k = w.k0 + r;
+        diag[static_cast<std::size_t>(r)] = (k == 0 || k == nZ - 1) ? h / 3.0 : 2.0 * h / 3.0;
+    }
+    for (int r = 1; r < w.rows; ++r) {
+        const double m = off / diag[static_cast<std::size_t>(r - 1)];
+        diag[static_cast<std::size_t>(r)] -= m * off;
+        B.row(r) -= m * B.row(r - 1);
+    }
+    B.row(w.rows - 1) /= diag[static_cast<std::size_t>(w.rows - 1)];
+    for (int r = w.rows - 2; r >= 0; --r)
+        B.row(r) = (B.row(r) - off * B.row(r + 1)) / diag[static_cast<std::size_t>(r)];
+    return w;
+}
+
+Eigen::VectorXd MovingGridMapping::fixedPressure(const Eigen::VectorXd& p, double offset) const {
+    Eigen::VectorXd c;
+    const Window w = project(p, offset, c);
+    Eigen::VectorXd all = Eigen::VectorXd::Zero(fixed_.size());
+    all.segment(static_cast<Eigen::Index>(w.k0) * nTheta_, c.size()) = c;
+    return all;
+}
+
+Eigen::VectorXd MovingGridMapping::loads(const Eigen::VectorXd& p, double offset) const {
+    Eigen::VectorXd f;
+    loads(p, offset, f);
+    return f;
+}
+
+void MovingGridMapping::loads(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& forces) const {
+    Eigen::VectorXd c;
+    const Window w = project(p, offset, c);
+    forces.noalias() = load_.matrix().middleCols(static_cast<Eigen::Index>(w.k0) * nTheta_, c.size()) * c;
+}
+
+Eigen::VectorXd MovingGridMapping::radialDisplacement(const Eigen::VectorXd& u, double offset) const {
+    Eigen::VectorXd ur;
+    radialDisplacement(u, offset, ur);
+    return ur;
+}
+
+void MovingGridMapping::interpolation(double offset, std::vector<std::array<double, 4>>& weights,
+                                      std::vector<int>& base, int& r0, int& r1) const {
+    checkOffset(offset);
+    const int nz = static_cast<int>(z_.size()), nZ = fixed_.nAxial();
+    const double Z0 = fixed_.axial().front(), h = h_;
+    // Cubic Hermite in z on G for the point at t ∈ [0, 1] of cell k: weights of rows k−1 .. k+2
+    // (those outside G stay zero); slopes m_k = (f_{k+1} − f_{k−1})/2h, one-sided
+    // ∓(3f_k − 4f_{k±1} + f_{k±2})/2h at G's ends (all exact for quadratics).
+    auto slope = [&](int k, std::array<double, 4>& wgt, int first, double coef) {  // adds coef · h m_k
+        auto add = [&](int r, double v) {  // r − first ∈ [0, 3] always; the check keeps -Warray-bounds quiet
+            const int j = r - first;
+            if (j >= 0 && j < 4) wgt[static_cast<std::size_t>(j)] += v * coef;
+        };
+        if (k == 0) {
+            add(0, -1.5), add(1, 2.0), add(2, -0.5);
+        } else if (k == nZ - 1) {
+            add(k, 1.5), add(k - 1, -2.0), add(k - 2, 0.5);
+        } else {
+            add(k + 1, 0.5), add(k - 1, -0.5);
+        }
+    };
+    weights.assign(static_cast<std::size_t>(nz), {});
+    base.assign(static_cast<std::size_t>(nz), 0);
+    r0 = nZ;
+    r1 = 0;
+    for (int i = 0; i < nz; ++i) {
+        const double x = z_[static_cast<std::size_t>(i)] + offset;
+        const int k = std::clamp(static_cast<int>(std::floor((x - Z0) / h)), 0, nZ - 2);
+        const double t = std::clamp((x - (Z0 + k * h)) / h, 0.0, 1.0);
+        auto& wgt = weights[static_cast<std::size_t>(i)];
+        wgt.fill(0.0);
+        const int b = k - 1;
+        base[static_cast<std::size_t>(i)] = b;
+        const double t2 = t * t, t3 = t2 * t;
+        wgt[1] += 2 * t3 - 3 * t2 + 1;             // h00 (row k)
+        wgt[2] += -2 * t3 + 3 * t2;                // h01 (row k + 1)
+        slope(k, wgt, b, t3 - 2 * t2 + t);         // h10
+        slope(k + 1, wgt, b, t3 - t2);             // h11
+        r0 = std::min(r0, std::max(0, b));
+        r1 = std::max(r1, std::min(nZ - 1, b + 3));
+    }
+}
+
+void MovingGridMapping::interpolate(const std::vector<std::array<double, 4>>& weights, const std::vector<int>& base,
+                                    int r0, const Eigen::VectorXd& uG, Eigen::VectorXd& ur) const {
+    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nZ = fixed_.nAxial();
+    ur.resize(static_cast<Eigen::Index>(nz) * nt);
+    for (int i = 0; i < nz; ++i) {
+        auto out = ur.segment(static_cast<Eigen::Index>(i) * nt, nt);
+        out.setZero();
+        const auto& wgt = weights[static_cast<std::size_t>(i)];
+        for (int a = 0; a < 4; ++a) {
+            const int r = base[static_cast<std::size_t>(i)] + a;
+            if (r >= 0 && r < nZ && wgt[static_cast<std::size_t>(a)] != 0.0)
+                out += wgt[static_cast<std::size_t>(a)] * uG.segment(static_cast<Eigen::Index>(r - r0) * nt, nt);
+        }
+    }
+}
+
+void MovingGridMapping::radialDisplacement(const Eigen::VectorXd& u, double offset, Eigen::VectorXd& ur) const {
+    std::vector<std::array<double, 4>> weights;
+    std::vector<int> base;
+    int r0 = 0, r1 = 0;
+    interpolation(offset, weights, base, r0, r1);
+    const Eigen::Index nt = nTheta_;
+    const Eigen::VectorXd uG = def_.radial().middleRows(r0 * nt, (r1 - r0 + 1) * nt) * u;
+    interpolate(weights, base, r0, uG, ur);
+}
+
+void MovingGridMapping::setModes(const Eigen::MatrixXd& shapes) {
+    if (shapes.rows() != load_.matrix().rows())
+        throw std::invalid_argument("MovingGridMapping::setModes: " + std::to_string(shapes.rows()) +
+                                    " dofs in the mode shapes, " + std::to_string(load_.matrix().rows()) +
+                                    " in the mesh");
+    modalLoad_ = (load_.matrix().transpose() * shapes).transpose();
+    modalShapes_ = def_.radial() * shapes;
+}
+
+Eigen::VectorXd MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset) const {
+    if (modalLoad_.size() == 0) throw std::logic_error("MovingGridMapping::modalForce: setModes first");
+    Eigen::VectorXd c;
+    const Window w = project(p, offset, c);
+    return modalLoad_.middleCols(static_cast<Eigen::Index>(w.k0) * nTheta_, c.size()) * c;
+}
+
+Eigen::VectorXd MovingGridMapping::modalRadialDisplacement(const Eigen::VectorXd& q, double offset) const {
+    if (modalShapes_.size() == 0)
+        throw std::logic_error("MovingGridMapping::modalRadialDisplacement: setModes first");
+    if (q.size() != modalShapes_.cols())
+        throw std::invalid_argument("MovingGridMapping::modalRadialDisplacement: " + std::to_string(q.size()) +
+                                    " modal coordinates for " + std::to_string(modalShapes_.cols()) + " modes");
+    std::vector<std::array<double, 4>> weights;
+    std::vector<int> base;
+    int r0 = 0, r1 = 0;
+    interpolation(offset, weights, base, r0, r1);
+    const Eigen::Index nt = nTheta_;
+    const Eigen::VectorXd uG = modalShapes_.middleRows(r0 * nt, (r1 - r0 + 1) * nt) * q;
+    Eigen::VectorXd ur;
+    interpolate(weights, base, r0, uG, ur);
+    return ur;
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,95 @@
+#pragma once
+// MovingGridMapping: load and deformation mapping between a film grid that slides axially
+// along a structure (the piston grid along the liner bore) and that structure, without
+// rebuilding the operators for every position (issue 5; GUIDE "Mapping"; docs/mapping.md).
+//
+// Setup, once: a structure-fixed grid G with the moving grid's θ nodes and uniform axial
+// spacing h over [zMin, zMax] (body frame), its LoadMapping A_G and DeformationMapping D_G.
+// Per call, for the axial offset s (body z = grid z + s):
+//  * loads: each θ column of the grid pressure (piecewise linear in z on the shifted grid
+//    nodes, zero outside) is replaced by its L2 projection onto the hats ψ_k of G:
+//    M c = b, b_k = ∫ ψ_k p dz (exact: Simpson on the merged breakpoints, where both factors
+//    are linear), M the hats' Gram matrix (tridiagonal, Thomas algorithm). 1 and z lie in
+//    span{ψ_k}, so ∫ c·{1, z} dz = ∫ p·{1, z} dz per column: with the θ layout unchanged and
+//    A_G exact for bilinear fields, the total force and the moment about any point on the
+//    axis (x, y components) equal those of the moving grid's bilinear source to round-off.
+//    M⁻¹ is dense but decays by 2 − √3 ≈ 0.27 per row: the solve is restricted to the rows the
+//    grid overlaps plus 30 on each side (truncation 0.27³⁰ ≈ 1e-17), so a call costs
+//    O(grid + window · nθ) plus the window's columns of A_G.
+//  * deformation: u_r on G (the window's rows of D_G.radial()) is interpolated to the shifted
+//    grid rows by cubic Hermite in z with central-difference slopes (one-sided 3-point at the
+//    ends of G): C¹ in z, exact for quadratics, so quadratics in (z, s) are reproduced like
+//    by the Clough–Tocher operator itself.
+//  * modal (setModes): Φᵀ A_G and D_G Φ pre-multiplied once, the same per-call steps.
+// What is not conserved: the distribution of the load over nodes differs from the direct
+// LoadMapping at offset s (the projection smooths the field at scale h); virtual work is exact
+// only for displacements linear in z on each θ column.
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cosim/DeformationMapping.hpp"
+#include "cosim/LoadMapping.hpp"
+#include "fem/Mesh.hpp"
+#include "lube/FilmGrid.hpp"
+
+namespace flexehd::cosim {
+
+class MovingGridMapping {
+public:
+    /// `grid`: the moving grid (its z nodes relative to the offset, its θ layout). G spans
+    /// [zMin, zMax] in the body frame with fixedRows ≥ 3 uniform rows. Throws like LoadMapping
+    /// and DeformationMapping for G.
+    MovingGridMapping(const fem::Mesh& mesh, const std::string& surface, const lube::FilmGrid& grid,
+                      double zMin, double zMax, int fixedRows, double radiusTolerance = 1e-3);
+
+    /// Nodal forces on the body (3 · mesh nodes, N) of grid pressures p (Pa, gauge) with the
+    /// grid at axial offset s. Throws std::out_of_range if the shifted grid leaves [zMin, zMax].
+    Eigen::VectorXd loads(const Eigen::VectorXd& p, double offset) const;
+    void loads(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& forces) const;
+    /// Radial displacement (m, positive away from the axis) at the moving grid's nodes of the
+    /// body displacement u (3 · mesh nodes) with the grid at axial offset s.
+    Eigen::VectorXd radialDisplacement(const Eigen::VectorXd& u, double offset) const;
+    void radialDisplacement(const Eigen::VectorXd& u, double offset, Eigen::VectorXd& ur) const;
+    /// Modal variant: pre-multiplies the body's mode shapes Φ (3 · mesh nodes × modes) into the
+    /// fixed operators once, Φᵀ A_G (modes × G nodes) and D_G Φ (G nodes × modes); a call then
+    /// costs O(window × modes) beyond the same projection / interpolation.
+    void setModes(const Eigen::MatrixXd& shapes);
+    /// Modal forces Φᵀ f of grid pressures p at offset s (requires setModes).
+    Eigen::VectorXd modalForce(const Eigen::VectorXd& p, double offset) const;
+    /// Radial displacement at the moving grid's nodes of modal coordinates q (requires setModes).
+    Eigen::VectorXd modalRadialDisplacement(const Eigen::VectorXd& q, double offset) const;
+    /// The projected pressure on G (for inspection and tests): G nodes, zero off the window.
+    Eigen::VectorXd fixedPressure(const Eigen::VectorXd& p, double offset) const;
+
+    const lube::FilmGrid& fixedGrid() const { return fixed_; }
+    const LoadMapping& fixedLoad() const { return load_; }
+    const DeformationMapping& fixedDeformation() const { return def_; }
+
+private:
+    struct Window {
+        int k0 = 0, rows = 0;
+    };
+    // c (rows × nθ, row-major, G rows k0..k0+rows−1) = M⁻¹ b for the grid at offset s.
+    Window project(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& c) const;
+    void checkOffset(double offset) const;
+    // Hermite weights of G's rows base[i] .. base[i] + 3 for each moving row; rows r0 .. r1 used.
+    void interpolation(double offset, std::vector<std::array<double, 4>>& weights, std::vector<int>& base,
+                       int& r0, int& r1) const;
+    // ur (moving grid) from uG, the radial displacement on G's rows r0 .. (row-major, nθ wide).
+    void interpolate(const std::vector<std::array<double, 4>>& weights, const std::vector<int>& base, int r0,
+                     const Eigen::VectorXd& uG, Eigen::VectorXd& ur) const;
+
+    std::vector<double> z_;  // moving grid rows
+    int nTheta_;
+    double h_;
+    lube::FilmGrid fixed_;
+    LoadMapping load_;
+    DeformationMapping def_;
+    Eigen::MatrixXd modalLoad_;    // Φᵀ A_G
+    Eigen::MatrixXd modalShapes_;  // D_G Φ
+};
+
+}  // namespace flexehd::cosim
