@@ -3,7 +3,8 @@
 // rows, once); setup and one application (per coupling call) timed separately, as coupling
 // libraries do; the modal pre-multiplied operators (cosim/ModalMapping: modes × grid,
 // grid × modes) with real Craig–Bampton shapes; and the liner with the moving grid
-// (cosim/MovingGridMapping) against rebuilding both operators at each piston position.
+// (cosim/MovingGridMapping) against rebuilding both operators at each piston position, with
+// the shear tractions (friction on the liner) through the same projection.
 //   bench_mapping [MESH_SIZE_M] [N_AXIAL] [N_THETA] [MODES] [LINER_SIZE_M] [FIXED_ROWS]
 // Defaults: piston.geo at 0.004 m, a 100 × 200 = 20 000-node full-circumference skirt grid,
 // 30 fixed-interface modes (pin bore RBE2, no static correction); liner.geo at 0.005 m with a
@@ -150,6 +151,22 @@ int main(int argc, char** argv) {
     const double linerModalDef = median(301, [&] { urm = moving.modalRadialDisplacement(q, offset()); });
     std::printf("per position, modal: forces %.1f us, radial displacement %.1f us\n", linerModalLoad * 1e6,
                 linerModalDef * 1e6);
+    // Liner friction: the same moving grid with G's shear operators (τ_z, τ_θ).
+    t0 = Clock::now();
+    cosim::MovingGridMapping movingShear(liner, "bore", grid, -0.16, 0.0, fixedRows, cosim::MovingGridOptions{1e-3, true});
+    std::printf("moving-grid setup with the shear operators: %.3f s\n", seconds(t0));
+    Eigen::VectorXd fsl;
+    const double linerShear = median(301, [&] { movingShear.shearLoads(p, p, offset(), fsl); });
+    t0 = Clock::now();
+    movingShear.setModes(Eigen::MatrixXd::Random(3 * liner.numNodes(), body.numModes()));
+    std::printf("per position: shear loads (tau_z and tau_theta) %.1f us; modal pre-multiplication with shear %.3f s\n",
+                linerShear * 1e6, seconds(t0));
+    Eigen::VectorXd gsl;
+    const double linerModalShear = median(301, [&] { gsl = movingShear.modalShearForce(p, p, offset()); });
+    std::printf("per position, modal shear forces (tau_z and tau_theta): %.1f us\n", linerModalShear * 1e6);
     delete keep;
-    return f.sum() + g.sum() + ur.sum() + fs.sum() + fl.sum() + url.sum() + gl.sum() + urm.sum() > 1e300 ? 1 : 0;  // keep the results alive
+    return f.sum() + g.sum() + ur.sum() + fs.sum() + fl.sum() + url.sum() + gl.sum() + urm.sum() + fsl.sum() +
+                       gsl.sum() > 1e300
+               ? 1
+               : 0;  // keep the results alive
 }

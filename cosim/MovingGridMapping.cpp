@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -27,12 +28,17 @@ lube::FilmGrid fixedGridFor(const lube::FilmGrid& g, double zMin, double zMax, i
 MovingGridMapping::MovingGridMapping(const fem::Mesh& mesh, const std::string& surface,
                                      const lube::FilmGrid& grid, double zMin, double zMax, int fixedRows,
                                      double radiusTolerance)
+    : MovingGridMapping(mesh, surface, grid, zMin, zMax, fixedRows, MovingGridOptions{radiusTolerance, false}) {}
+
+MovingGridMapping::MovingGridMapping(const fem::Mesh& mesh, const std::string& surface,
+                                     const lube::FilmGrid& grid, double zMin, double zMax, int fixedRows,
+                                     const MovingGridOptions& options)
     : z_(grid.axial()),
       nTheta_(grid.nTheta()),
       h_((zMax - zMin) / (fixedRows - 1)),
       fixed_(fixedGridFor(grid, zMin, zMax, fixedRows)),
-      load_(mesh, surface, fixed_, {0.0, radiusTolerance}),
-      def_(mesh, surface, fixed_, 0.0, radiusTolerance) {}
+      load_(mesh, surface, fixed_, {0.0, options.radiusTolerance, options.shear}),
+      def_(mesh, surface, fixed_, 0.0, options.radiusTolerance) {}
 
 void MovingGridMapping::checkOffset(double offset) const {
     const double lo = z_.front() + offset, hi = z_.back() + offset;
@@ -46,12 +52,8 @@ void MovingGridMapping::checkOffset(double offset) const {
     }
 }
 
-MovingGridMapping::Window MovingGridMapping::project(const Eigen::VectorXd& p, double offset,
-                                                     Eigen::VectorXd& c) const {
-    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nZ = fixed_.nAxial();
-    if (p.size() != static_cast<Eigen::Index>(nz) * nt)
-        throw std::invalid_argument("MovingGridMapping: " + std::to_string(p.size()) + " pressures for a grid of " +
-                                    std::to_string(nz * nt) + " nodes");
+MovingGridMapping::Window MovingGridMapping::transfer(double offset, Transfer& T) const {
+    const int nz = static_cast<int>(z_.size()), nZ = fixed_.nAxial();
     checkOffset(offset);
     const double Z0 = fixed_.axial().front(), h = h_;
     auto cellOf = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - Z0) / h)), 0, nZ - 2); };
@@ -61,7 +63,7 @@ MovingGridMapping::Window MovingGridMapping::project(const Eigen::VectorXd& p, d
     const int k1 = std::min(nZ - 1, cellOf(a1) + 1 + kWindowPad);
     w.rows = k1 - w.k0 + 1;
 
-    // b = T P: T(k, i) = ∫ ψ_k φ_i dz over the merged breakpoints (both linear: Simpson exact).
+    // T(k, i) = ∫ ψ_k φ_i dz over the merged breakpoints (both linear: Simpson exact).
     std::vector<Eigen::Triplet<double>> trip;
     trip.reserve(static_cast<std::size_t>(8 * (nz + w.rows)));
     for (int i = 0; i + 1 < nz; ++i) {
@@ -82,16 +84,25 @@ MovingGridMapping::Window MovingGridMapping::project(const Eigen::VectorXd& p, d
                 for (int b = 0; b < 2; ++b) trip.emplace_back(k + a - w.k0, i + b, t[a][b]);
         }
     }
-    Eigen::SparseMatrix<double, Eigen::RowMajor> T(w.rows, nz);
+    T.resize(w.rows, nz);
     T.setFromTriplets(trip.begin(), trip.end());
+    return w;
+}
+
+void MovingGridMapping::solve(const Window& w, const Transfer& T, const Eigen::VectorXd& f, const char* what,
+                              Eigen::VectorXd& c) const {
+    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nZ = fixed_.nAxial();
+    if (f.size() != static_cast<Eigen::Index>(nz) * nt)
+        throw std::invalid_argument("MovingGridMapping: " + std::to_string(f.size()) + " " + what +
+                                    " for a grid of " + std::to_string(nz * nt) + " nodes");
     using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     c.resize(static_cast<Eigen::Index>(w.rows) * nt);
     Eigen::Map<RowMat> B(c.data(), w.rows, nt);
-    B.noalias() = T * Eigen::Map<const RowMat>(p.data(), nz, nt);
+    B.noalias() = T * Eigen::Map<const RowMat>(f.data(), nz, nt);
 
     // Thomas algorithm on the hats' Gram matrix: off-diagonal h/6, diagonal 2h/3 (h/3 at the
     // ends of G; a window end inside G keeps 2h/3: projection onto the window's hats).
-    const double off = h / 6.0;
+    const double h = h_, off = h / 6.0;
     std::vector<double> diag(static_cast<std::size_t>(w.rows));
     for (int r = 0; r < w.rows; ++r) {
         const int k = w.k0 + r;
@@ -105,7 +116,66 @@ MovingGridMapping::Window MovingGridMapping::project(const Eigen::VectorXd& p, d
     B.row(w.rows - 1) /= diag[static_cast<std::size_t>(w.rows - 1)];
     for (int r = w.rows - 2; r >= 0; --r)
         B.row(r) = (B.row(r) - off * B.row(r + 1)) / diag[static_cast<std::size_t>(r)];
+}
+
+MovingGridMapping::Window MovingGridMapping::project(const Eigen::VectorXd& p, double offset,
+                                                     Eigen::VectorXd& c) const {
+    const Eigen::Index n = static_cast<Eigen::Index>(z_.size()) * nTheta_;
+    if (p.size() != n)  // before the offset check, as before
+        throw std::invalid_argument("MovingGridMapping: " + std::to_string(p.size()) + " pressures for a grid of " +
+                                    std::to_string(n) + " nodes");
+    Transfer T;
+    const Window w = transfer(offset, T);
+    solve(w, T, p, "pressures", c);
     return w;
+}
+
+template <typename Op>
+void MovingGridMapping::applyShear(const Op& opZ, const Op& opTheta, const Eigen::VectorXd& tauZ,
+                                   const Eigen::VectorXd& tauTheta, double offset, Eigen::VectorXd& out) const {
+    const Eigen::Index n = static_cast<Eigen::Index>(z_.size()) * nTheta_;
+    for (const Eigen::VectorXd* t : {&tauZ, &tauTheta})
+        if (t->size() != 0 && t->size() != n)
+            throw std::invalid_argument("MovingGridMapping: " + std::to_string(t->size()) +
+                                        " tractions for a grid of " + std::to_string(n) + " nodes");
+    Transfer T;
+    const Window w = transfer(offset, T);
+    out.setZero(opZ.rows());
+    Eigen::VectorXd c;
+    const Eigen::Index first = static_cast<Eigen::Index>(w.k0) * nTheta_;
+    if (tauZ.size() != 0) {
+        solve(w, T, tauZ, "tractions", c);
+        out.noalias() += opZ.middleCols(first, c.size()) * c;
+    }
+    if (tauTheta.size() != 0) {
+        solve(w, T, tauTheta, "tractions", c);
+        out.noalias() += opTheta.middleCols(first, c.size()) * c;
+    }
+}
+
+Eigen::VectorXd MovingGridMapping::shearLoads(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta,
+                                              double offset) const {
+    Eigen::VectorXd f;
+    shearLoads(tauZ, tauTheta, offset, f);
+    return f;
+}
+
+void MovingGridMapping::shearLoads(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta, double offset,
+                                   Eigen::VectorXd& forces) const {
+    if (!hasShear())
+        throw std::logic_error("MovingGridMapping::shearLoads: built without the shear operators (options.shear)");
+    applyShear(load_.axialShear(), load_.circumferentialShear(), tauZ, tauTheta, offset, forces);
+}
+
+Eigen::VectorXd MovingGridMapping::modalShearForce(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta,
+                                                   double offset) const {
+    if (!hasShear())
+        throw std::logic_error(
+            "MovingGridMapping::modalShearForce: built without the shear operators (options.shear)");
+    if (modalShearZ_.size() == 0) throw std::logic_error("MovingGridMapping::modalShearForce: setModes first");
+    Eigen::VectorXd g;
+    applyShear(modalShearZ_, modalShearTheta_, tauZ, tauTheta, offset, g);
+    return g;
 }
 
 Eigen::VectorXd MovingGridMapping::fixedPressure(const Eigen::VectorXd& p, double offset) const {
@@ -210,6 +280,10 @@ void MovingGridMapping::setModes(const Eigen::MatrixXd& shapes) {
                                     " in the mesh");
     modalLoad_ = (load_.matrix().transpose() * shapes).transpose();
     modalShapes_ = def_.radial() * shapes;
+    if (hasShear()) {
+        modalShearZ_ = (load_.axialShear().transpose() * shapes).transpose();
+        modalShearTheta_ = (load_.circumferentialShear().transpose() * shapes).transpose();
+    }
 }
 
 Eigen::VectorXd MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset) const {

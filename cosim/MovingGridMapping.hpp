@@ -21,6 +21,11 @@
 //    ends of G): C¹ in z, exact for quadratics, so quadratics in (z, s) are reproduced like
 //    by the Clough–Tocher operator itself.
 //  * modal (setModes): Φᵀ A_G and D_G Φ pre-multiplied once, the same per-call steps.
+//  * shear (MovingGridOptions::shear): the axial and circumferential tractions τ_z, τ_θ
+//    (bilinear on the moving grid like p) take the same projection, then G's shear operators
+//    (LoadMapping::axialShear(), circumferentialShear()); the total friction force (axial and
+//    circumferential) and the moment of τ_θ about any point on the axis (x, y) are conserved
+//    like the pressure's. Modal: Φᵀ S_G pre-multiplied by setModes.
 // What is not conserved: the distribution of the load over nodes differs from the direct
 // LoadMapping at offset s (the projection smooths the field at scale h); virtual work is exact
 // only for displacements linear in z on each θ column.
@@ -37,6 +42,13 @@
 
 namespace flexehd::cosim {
 
+struct MovingGridOptions {
+    /// Largest accepted relative spread of the surface-node radii (as LoadMappingOptions).
+    double radiusTolerance = 1e-3;
+    /// Also build the shear-traction operators on G (shearLoads(), modalShearForce()).
+    bool shear = false;
+};
+
 class MovingGridMapping {
 public:
     /// `grid`: the moving grid (its z nodes relative to the offset, its θ layout). G spans
@@ -44,11 +56,23 @@ public:
     /// and DeformationMapping for G.
     MovingGridMapping(const fem::Mesh& mesh, const std::string& surface, const lube::FilmGrid& grid,
                       double zMin, double zMax, int fixedRows, double radiusTolerance = 1e-3);
+    /// The same, with options (shear operators).
+    MovingGridMapping(const fem::Mesh& mesh, const std::string& surface, const lube::FilmGrid& grid,
+                      double zMin, double zMax, int fixedRows, const MovingGridOptions& options);
 
     /// Nodal forces on the body (3 · mesh nodes, N) of grid pressures p (Pa, gauge) with the
     /// grid at axial offset s. Throws std::out_of_range if the shifted grid leaves [zMin, zMax].
     Eigen::VectorXd loads(const Eigen::VectorXd& p, double offset) const;
     void loads(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& forces) const;
+    /// Nodal forces on the body (3 · mesh nodes, N) of the shear tractions at the moving grid's
+    /// nodes, τ_z along e_z and τ_θ along e_θ = (−sin θ, cos θ, 0) (Pa, the traction the film
+    /// exerts on this body: on the liner, opposite to the piston's), with the grid at offset s.
+    /// Either may be empty (skipped). Throws std::logic_error unless built with options.shear,
+    /// std::invalid_argument for a wrong size, std::out_of_range like loads().
+    Eigen::VectorXd shearLoads(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta, double offset) const;
+    void shearLoads(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta, double offset,
+                    Eigen::VectorXd& forces) const;
+    bool hasShear() const { return load_.axialShear().size() != 0; }
     /// Radial displacement (m, positive away from the axis) at the moving grid's nodes of the
     /// body displacement u (3 · mesh nodes) with the grid at axial offset s.
     Eigen::VectorXd radialDisplacement(const Eigen::VectorXd& u, double offset) const;
@@ -59,6 +83,9 @@ public:
     void setModes(const Eigen::MatrixXd& shapes);
     /// Modal forces Φᵀ f of grid pressures p at offset s (requires setModes).
     Eigen::VectorXd modalForce(const Eigen::VectorXd& p, double offset) const;
+    /// Modal forces Φᵀ f of the shear tractions at offset s (requires setModes and options.shear).
+    Eigen::VectorXd modalShearForce(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta,
+                                    double offset) const;
     /// Radial displacement at the moving grid's nodes of modal coordinates q (requires setModes).
     Eigen::VectorXd modalRadialDisplacement(const Eigen::VectorXd& q, double offset) const;
     /// The projected pressure on G (for inspection and tests): G nodes, zero off the window.
@@ -72,8 +99,18 @@ private:
     struct Window {
         int k0 = 0, rows = 0;
     };
+    using Transfer = Eigen::SparseMatrix<double, Eigen::RowMajor>;
     // c (rows × nθ, row-major, G rows k0..k0+rows−1) = M⁻¹ b for the grid at offset s.
     Window project(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& c) const;
+    // The window and T(k, i) = ∫ ψ_k φ_i dz (window rows × moving rows) at offset s.
+    Window transfer(double offset, Transfer& T) const;
+    // c = M⁻¹ T f for one nodal field f of the moving grid (`what` names it in errors).
+    void solve(const Window& w, const Transfer& T, const Eigen::VectorXd& f, const char* what,
+               Eigen::VectorXd& c) const;
+    // Σ over the non-empty fields of op.middleCols(window) · c (op: A_G-like, columns = G nodes).
+    template <typename Op>
+    void applyShear(const Op& opZ, const Op& opTheta, const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta,
+                    double offset, Eigen::VectorXd& out) const;
     void checkOffset(double offset) const;
     // Hermite weights of G's rows base[i] .. base[i] + 3 for each moving row; rows r0 .. r1 used.
     void interpolation(double offset, std::vector<std::array<double, 4>>& weights, std::vector<int>& base,
@@ -90,6 +127,7 @@ private:
     DeformationMapping def_;
     Eigen::MatrixXd modalLoad_;    // Φᵀ A_G
     Eigen::MatrixXd modalShapes_;  // D_G Φ
+    Eigen::MatrixXd modalShearZ_, modalShearTheta_;  // Φᵀ S_z,G and Φᵀ S_θ,G (with shear)
 };
 
 }  // namespace flexehd::cosim

@@ -11,5 +11,6 @@ void addReduceCommand(CLI::App& app);
 void addInspectCommand(CLI::App& app);
 void addExportModesCommand(CLI::App& app);
 void addBearingCommand(CLI::App& app);
+void addRunCommand(CLI::App& app);
 
 }  // namespace flexehd::cli

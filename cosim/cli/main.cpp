@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
     flexehd::cli::addInspectCommand(app);
     flexehd::cli::addExportModesCommand(app);
     flexehd::cli::addBearingCommand(app);
+    flexehd::cli::addRunCommand(app);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,132 @@
+#pragma once
+// EngineCase: everything a co-simulation run needs, as read from a case file (YAML, SI units;
+// key-by-key reference in docs/case-file.md, reader in CaseFile.hpp). Plain data: the reader
+// validates ranges and files, the simulation only uses it.
+//
+// Frames (docs/dynamics.md): cylinder frame with z along the cylinder axis towards the head,
+// +x the major thrust side, y the pin axis. Piston frame: origin on the piston axis at the height
+// of the pin axis, same orientation; the pin axis passes through (pinOffset, ·, 0).
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace flexehd::cosim {
+
+struct EngineSpec {
+    double bore = 0.086;               ///< m
+    double stroke = 0.086;             ///< m (crank radius = stroke / 2)
+    double rodLength = 0.1435;         ///< m, centre to centre
+    /// m, pin axis offset from the piston axis, positive towards the major thrust side (+x).
+    double pinOffset = 0.0;
+    double speedRpm = 1000.0;          ///< crankshaft speed, rev/min (case key `speed_rpm`)
+    double crankcasePressure = 1.0e5;  ///< Pa, absolute: the film's ambient pressure
+    /// m, depth of the pin axis below the liner frame's origin (deck) at TDC (> 0): places the
+    /// piston on the liner mesh (liner frame z of the pin = −pinTdcDepth − (s_TDC − s)).
+    double pinTdcDepth = 0.0335;
+};
+
+struct ProfilePoint {
+    double z = 0.0;     ///< m, piston frame (axial position on the skirt)
+    double drop = 0.0;  ///< m, radial reduction of the skirt radius from bore/2 − clearance
+};
+
+struct PistonSpec {
+    double mass = 0.0;           ///< kg, piston without pin
+    double pinMass = 0.0;        ///< kg, pin (and the small-end share of the rod, if lumped)
+    double inertia = 0.0;        ///< kg·m², piston about the pin-parallel axis through its CG
+    double cgX = 0.0;            ///< m, CG lateral position relative to the pin axis (+x)
+    double cgZ = 0.0;            ///< m, CG axial position relative to the pin axis (+z up)
+    double skirtTop = 0.0;       ///< m, piston frame z of the skirt's upper edge
+    double skirtBottom = 0.0;    ///< m, piston frame z of the skirt's lower edge (< skirtTop)
+    double clearance = 50e-6;    ///< m, nominal radial clearance (bore/2 − skirt radius)
+    /// Half-width of each skirt panel (thrust around θ = 0, anti-thrust around θ = 180°), rad;
+    /// π/2 (or more) = a full-circumference skirt. Case key `skirt_half_angle_deg` (degrees).
+    double skirtHalfAngle = 3.14159265358979323846 / 2;
+    std::vector<ProfilePoint> profile;  ///< barrel profile, z ascending (empty = cylindrical)
+    /// m, radial reduction at the pin sides (θ = ±90°): δ(θ) = ovality (1 − cos 2θ) / 2.
+    double ovality = 0.0;
+};
+
+struct LubricantSpec {
+    double viscosity = 0.01;          ///< Pa·s, at the film temperature
+    double density = 850.0;           ///< kg/m³
+    double barusAlpha = 0.0;          ///< 1/Pa, 0 = constant viscosity
+    double cavitationPressure = 0.0;  ///< Pa, gauge (relative to the crankcase pressure)
+};
+
+struct ContactSpec {
+    double sigma = 0.8e-6;            ///< m, composite rms roughness
+    double beta = 2e-6;               ///< m, asperity tip radius
+    double asperityDensity = 1e10;    ///< 1/m², η_s (η_s β σ dimensionless, typically 0.03–0.05)
+    double compositeModulus = 0.0;    ///< Pa, E* (Hertz: 1/E* = Σ (1−ν²)/E); 0 = contact off
+    double boundaryFriction = 0.1;    ///< μ_b, friction coefficient of asperity contact
+};
+
+struct PressureSample {
+    double crankDeg = 0.0;  ///< °, 0–720, 0 = gas-exchange TDC, 360 = firing TDC
+    double pressure = 0.0;  ///< Pa, absolute cylinder pressure
+};
+
+enum class BodyModel { Rigid, Flexible };
+enum class ElasticResponse { QuasiStatic, Dynamic };
+
+struct BodySpec {
+    BodyModel model = BodyModel::Rigid;
+    std::string file;         ///< reduced-body HDF5 file (Flexible), resolved to an absolute path
+    std::string surface;      ///< physical surface facing the film: `skirt` / `bore`
+    std::string interface;    ///< interface held in the quasi-static response: `pin_bore` / seats
+    /// Every interface held in the quasi-static response (case key `interface`: one name or a
+    /// list, e.g. the liner's `[top_seat, bottom_seat]`); interface == interfaces.front().
+    std::vector<std::string> interfaces;
+};
+
+struct GridSpec {
+    int axialNodes = 48;           ///< nodes along the skirt
+    int circumferentialNodes = 144;  ///< nodes around the full circumference (periodic)
+};
+
+struct TimeSpec {
+    double startDeg = 0.0;         ///< °, crank angle where the first cycle starts
+    double maxStepDeg = 0.5;       ///< °, largest crank-angle step
+    double minStepDeg = 1e-3;      ///< °, step control gives up (diagnosis) below this
+    double lateralTolerance = 0.2e-6;  ///< m, local error tolerance on the lateral shift
+    double tiltTolerance = 5e-6;       ///< rad, local error tolerance on the tilt
+    int maxCycles = 5;             ///< cycles simulated at most
+    double periodicityTolerance = 1e-6;  ///< m, max |e(φ) − e(φ − 720°)| to call it periodic
+};
+
+enum class CouplingAcceleration { IqnIls, Aitken };
+
+struct CouplingSpec {
+    double tolerance = 1e-3;   ///< relative change of the modal coordinates (and film forces)
+    int maxIterations = 30;
+    CouplingAcceleration acceleration = CouplingAcceleration::IqnIls;
+    ElasticResponse response = ElasticResponse::QuasiStatic;
+};
+
+struct OutputSpec {
+    std::string directory;     ///< results directory (created), resolved to an absolute path
+    double vtkEveryDeg = 10.0; ///< °, spacing of the VTK snapshots in the last cycle; 0 = none
+    bool modeShapes = true;    ///< also export the bodies' mode shapes for ParaView
+};
+
+struct EngineCase {
+    std::string path;          ///< the case file (absolute), for messages and provenance
+    std::string name;          ///< free text (case key `name`)
+    EngineSpec engine;
+    PistonSpec piston;
+    LubricantSpec lubricant;
+    ContactSpec contact;
+    std::vector<PressureSample> cylinderPressure;  ///< from the CSV named by the case, sorted
+    std::string cylinderPressureFile;              ///< absolute path of that CSV
+    BodySpec pistonBody;
+    BodySpec linerBody;
+    GridSpec grid;
+    TimeSpec time;
+    CouplingSpec coupling;
+    OutputSpec output;
+};
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,210 @@
+#include "cosim/FieldSeriesWriter.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkStructuredGrid.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkXMLStructuredGridWriter.h>
+
+#include "cosim/VtuWriter.hpp"
+#include "fem/AtomicFile.hpp"
+
+namespace flexehd::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A film field and its name in the .vts (unit suffix as in history.csv).
+struct NamedFilmField {
+    const char* what;  // in messages: the FilmField member
+    const char* name;  // in the file
+    const Eigen::VectorXd* values;
+    bool required;
+};
+
+std::vector<NamedFilmField> filmFields(const FilmField& f) {
+    return {{"pressure", "pressure_pa", &f.pressure, true},
+            {"filmThickness", "film_thickness_m", &f.filmThickness, true},
+            {"contactPressure", "contact_pressure_pa", &f.contactPressure, false},
+            {"shearStress", "shear_stress_pa", &f.shearStress, false},
+            {"cavitation", "cavitation_fraction", &f.cavitation, false}};
+}
+
+std::string filmNode(const lube::FilmGrid& g, Eigen::Index k) {
+    return fmt::format("node {} (axial row {}, θ column {})", k, g.axialIndex(int(k)), g.thetaIndex(int(k)));
+}
+
+void checkFilm(const FilmField& film, double time) {
+    if (!film.grid) throw std::runtime_error(fmt::format("film snapshot at time {}: no film grid given", time));
+    const lube::FilmGrid& g = *film.grid;
+    if (!film.origin.allFinite())
+        throw std::runtime_error(fmt::format("film snapshot at time {}: origin is not finite", time));
+    for (const auto& f : filmFields(film)) {
+        const Eigen::VectorXd& v = *f.values;
+        if (v.size() == 0 && !f.required) continue;
+        if (v.size() != g.size())
+            throw std::runtime_error(fmt::format("film snapshot at time {}: field '{}' has {} values, the grid has {} nodes",
+                                                 time, f.what, v.size(), g.size()));
+        for (Eigen::Index k = 0; k < v.size(); ++k)
+            if (!std::isfinite(v(k)))
+                throw std::runtime_error(fmt::format("film snapshot at time {}: field '{}' is {} at {}", time, f.what,
+                                                     v(k), filmNode(g, k)));
+    }
+}
+
+void checkBody(const char* body, const BodyField& b, double time) {
+    if (!b.mesh) throw std::runtime_error(fmt::format("{} snapshot at time {}: no mesh given", body, time));
+    const fem::Mesh& mesh = *b.mesh;
+    if (!b.origin.allFinite())
+        throw std::runtime_error(fmt::format("{} snapshot at time {}: origin is not finite", body, time));
+    const std::pair<const char*, const Eigen::VectorXd*> fields[] = {{"displacement", &b.displacement},
+                                                                     {"elastic", &b.elastic}};
+    for (const auto& [what, v] : fields) {
+        if (v->size() == 0 && v == &b.elastic) continue;
+        if (v->size() != 3 * Eigen::Index(mesh.numNodes()))
+            throw std::runtime_error(fmt::format("{} snapshot at time {}: field '{}' has {} values, expected 3 × {} nodes",
+                                                 body, time, what, v->size(), mesh.numNodes()));
+        for (Eigen::Index k = 0; k < v->size(); ++k)
+            if (!std::isfinite((*v)(k))) {
+                const Eigen::Index node = k / 3;
+                const std::size_t tag = std::size_t(node) < mesh.nodeTags.size() ? mesh.nodeTags[std::size_t(node)] : 0;
+                throw std::runtime_error(fmt::format("{} snapshot at time {}: field '{}' is {} at node {} (Gmsh tag {}), "
+                                                     "component {}",
+                                                     body, time, what, (*v)(k), node, tag, "xyz"[k % 3]));
+            }
+    }
+}
+
+vtkNew<vtkDoubleArray> scalarArray(const char* name, vtkIdType count) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(1);
+    a->SetNumberOfTuples(count);
+    return a;
+}
+
+// The film grid as a structured grid nx × nAxial × 1, x = θ (fastest), y = axial. On a periodic
+// grid the first θ column is repeated as column nθ so that ParaView draws a closed cylinder.
+void writeFilm(const std::string& path, const FilmField& film, double time) {
+    const lube::FilmGrid& g = *film.grid;
+    const int nTheta = g.nTheta(), nAxial = g.nAxial();
+    const int nx = nTheta + (g.periodic() ? 1 : 0);
+    const vtkIdType count = vtkIdType(nx) * nAxial;
+
+    vtkNew<vtkStructuredGrid> grid;
+    grid->SetDimensions(nx, nAxial, 1);
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(count);
+    std::vector<double> cosT(static_cast<std::size_t>(nTheta)), sinT(static_cast<std::size_t>(nTheta));
+    for (int j = 0; j < nTheta; ++j) {
+        cosT[std::size_t(j)] = std::cos(g.theta(j));
+        sinT[std::size_t(j)] = std::sin(g.theta(j));
+    }
+    const double R = g.radius();
+    for (int i = 0; i < nAxial; ++i)
+        for (int jj = 0; jj < nx; ++jj) {
+            const std::size_t j = std::size_t(jj % nTheta);
+            points->SetPoint(vtkIdType(i) * nx + jj, film.origin.x() + R * cosT[j], film.origin.y() + R * sinT[j],
+                             film.origin.z() + g.z(i));
+        }
+    grid->SetPoints(points);
+
+    for (const auto& f : filmFields(film)) {
+        if (f.values->size() == 0) continue;
+        auto a = scalarArray(f.name, count);
+        for (int i = 0; i < nAxial; ++i)
+            for (int jj = 0; jj < nx; ++jj) a->SetValue(vtkIdType(i) * nx + jj, (*f.values)(g.index(i, jj % nTheta)));
+        grid->GetPointData()->AddArray(a);
+    }
+    vtkNew<vtkUnsignedCharArray> kind;  // 0 Film, 1 Fixed, 2 Void: Threshold away the masks
+    kind->SetName("node_kind");
+    kind->SetNumberOfTuples(count);
+    for (int i = 0; i < nAxial; ++i)
+        for (int jj = 0; jj < nx; ++jj)
+            kind->SetValue(vtkIdType(i) * nx + jj, static_cast<unsigned char>(g.kind(g.index(i, jj % nTheta))));
+    grid->GetPointData()->AddArray(kind);
+    grid->GetPointData()->SetActiveScalars("pressure_pa");
+
+    auto timeValue = scalarArray("TimeValue", 1);  // ParaView shows it when the file is opened alone
+    timeValue->SetValue(0, time);
+    grid->GetFieldData()->AddArray(timeValue);
+
+    fem::writeAtomically(path, [&](const std::string& tmp) {
+        vtkNew<vtkXMLStructuredGridWriter> writer;
+        writer->SetFileName(tmp.c_str());
+        writer->SetInputData(grid);
+        writer->SetDataModeToAppended();
+        writer->EncodeAppendedDataOff();  // raw binary
+        writer->SetHeaderTypeToUInt64();
+        if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + path + "'");
+    });
+}
+
+void writeBody(const std::string& path, const BodyField& b, double time) {
+    const fem::Mesh& mesh = *b.mesh;
+    fem::Mesh placed;  // the elements of the body, nodes moved into the cylinder frame
+    placed.nodes = mesh.nodes.colwise() + b.origin;
+    placed.volume = mesh.volume;
+    std::vector<PointField> fields{
+        {"displacement", Eigen::Map<const Eigen::MatrixXd>(b.displacement.data(), 3, mesh.numNodes())}};
+    if (b.elastic.size() != 0)
+        fields.push_back({"elastic_displacement", Eigen::Map<const Eigen::MatrixXd>(b.elastic.data(), 3, mesh.numNodes())});
+    writeVtu(path, placed, fields, {{"TimeValue", time}});
+}
+
+}  // namespace
+
+FieldSeriesWriter::FieldSeriesWriter(std::string directory) : directory_(std::move(directory)) {
+    std::error_code ec;
+    fs::create_directories(fs::path(directory_) / "vtk", ec);
+    if (ec)
+        throw std::runtime_error("cannot create '" + (fs::path(directory_) / "vtk").string() + "': " + ec.message());
+}
+
+void FieldSeriesWriter::write(double time, const FilmField& film, const BodyField* piston, const BodyField* liner) {
+    if (!std::isfinite(time)) throw std::runtime_error(fmt::format("snapshot time {} is not finite", time));
+    if (count_ > 0 && !(time > lastTime_))
+        throw std::runtime_error(fmt::format("snapshot time {} does not follow the previous snapshot's {}: "
+                                             "the series must be strictly increasing",
+                                             time, lastTime_));
+    checkFilm(film, time);
+    if (piston) checkBody("piston", *piston, time);
+    if (liner) checkBody("liner", *liner, time);
+
+    const fs::path dir(directory_);
+    const std::string index = fmt::format("{:06d}", count_);
+    // Snapshots first, collections last: a collection only ever lists complete files.
+    const std::string filmFile = "vtk/film_" + index + ".vts";
+    writeFilm((dir / filmFile).string(), film, time);
+    const std::string pistonFile = "vtk/piston_" + index + ".vtu", linerFile = "vtk/liner_" + index + ".vtu";
+    if (piston) writeBody((dir / pistonFile).string(), *piston, time);
+    if (liner) writeBody((dir / linerFile).string(), *liner, time);
+
+    filmPvd_.add(time, filmFile);
+    filmPvd_.write((dir / "film.pvd").string());
+    if (piston) {
+        pistonPvd_.add(time, pistonFile);
+        pistonPvd_.write((dir / "piston.pvd").string());
+    }
+    if (liner) {
+        linerPvd_.add(time, linerFile);
+        linerPvd_.write((dir / "liner.pvd").string());
+    }
+    lastTime_ = time;
+    ++count_;
+}
+
+}  // namespace flexehd::cosim

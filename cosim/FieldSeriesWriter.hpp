@@ -1,0 +1,61 @@
+#pragma once
+// FieldSeriesWriter: the VTK time series of a run for ParaView (docs/results-format.md).
+//
+// Each write() adds one snapshot: DIR/vtk/film_NNNNNN.vts (the film grid as a structured grid,
+// closed at the periodic seam) and, when given, DIR/vtk/piston_NNNNNN.vtu and
+// DIR/vtk/liner_NNNNNN.vtu (the body meshes with displacement vectors for Warp By Vector), then
+// rewrites DIR/film.pvd, DIR/piston.pvd and DIR/liner.pvd. Every file is written atomically
+// (NAME.tmp, then renamed), snapshots first and collections last, so a run killed at any moment
+// leaves collections that list only complete snapshots. Only the collections' entry lists stay
+// in memory.
+#include <string>
+
+#include <Eigen/Core>
+
+#include "cosim/PvdWriter.hpp"
+#include "fem/Mesh.hpp"
+#include "lube/FilmGrid.hpp"
+
+namespace flexehd::cosim {
+
+/// One snapshot of the film on its grid. Node values in grid order (θ fastest).
+struct FilmField {
+    const lube::FilmGrid* grid = nullptr;  ///< film frame: node (R cos θ, R sin θ, z)
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< cylinder-frame position of the film frame's origin (m)
+    Eigen::VectorXd pressure;         ///< Pa (required)
+    Eigen::VectorXd filmThickness;    ///< m (required)
+    Eigen::VectorXd contactPressure;  ///< Pa, asperity contact (empty: not written)
+    Eigen::VectorXd shearStress;      ///< Pa, axial wall shear on the piston (empty: not written)
+    Eigen::VectorXd cavitation;       ///< cavitated fraction 1 − φ, 0 = full film (empty: not written)
+};
+
+/// One snapshot of a body mesh.
+struct BodyField {
+    const fem::Mesh* mesh = nullptr;
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< cylinder-frame position of the mesh frame's origin (m)
+    Eigen::VectorXd displacement;  ///< 3·nodes, m: rigid secondary motion + elastic (for Warp By Vector)
+    Eigen::VectorXd elastic;       ///< 3·nodes, m: elastic part only (empty: not written)
+};
+
+class FieldSeriesWriter {
+public:
+    /// Creates `directory`/vtk. Snapshot files are numbered from 000000.
+    explicit FieldSeriesWriter(std::string directory);
+
+    /// Writes one snapshot at `time` (the caller's time axis: the continuous crank angle in
+    /// degrees for flexehd run), which must be finite and larger than the previous one.
+    /// Throws std::runtime_error naming the field (and the node) on a size mismatch or a NaN/Inf
+    /// value, before any file is written; or naming the file on an I/O error.
+    void write(double time, const FilmField& film, const BodyField* piston, const BodyField* liner);
+
+    /// Number of snapshots written so far.
+    int count() const { return count_; }
+
+private:
+    std::string directory_;
+    int count_ = 0;
+    double lastTime_ = 0.0;
+    PvdCollection filmPvd_, pistonPvd_, linerPvd_;
+};
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,62 @@
+#pragma once
+// FlexibleSurface: a reduced elastic body seen from the film (docs/coupling.md): the quasi-static
+// modal response to the film pressure and the resulting change of film thickness on the grid.
+//
+//   q = C Φᵀ A p,   Δh = σ D_r Φ q
+// with A the conservative load mapping, D_r the radial deformation mapping (ModalMapping for the
+// piston, whose grid is fixed to it; MovingGridMapping for the liner, along which the grid slides),
+// C = N (Nᵀ K_r N)⁻¹ Nᵀ the compliance with the held interfaces' reference nodes fixed
+// (ModalSuperposition::quasiStatic, precomputed column by column once), and σ = −1 for the piston
+// (outward skirt displacement closes the gap), +1 for the liner (outward bore displacement opens it).
+// Every call costs O(grid × modes).
+
+#include "cosim/ModalMapping.hpp"
+#include "cosim/MovingGridMapping.hpp"
+#include "modal/ReducedBody.hpp"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace flexehd::cosim {
+
+class FlexibleSurface {
+public:
+    enum class Side { Piston, Liner };
+
+    /// surface: physical surface facing the film; held: interface groups held in the quasi-static
+    /// response (empty = all interfaces of the body). Liner: the grid slides over liner-frame z in
+    /// [zMin, zMax] (the grid's own z plus the offset). Throws naming the file, surface or group.
+    FlexibleSurface(modal::ReducedBody body, Side side, const std::string& surface, const std::vector<std::string>& held,
+                    const lube::FilmGrid& grid, double zMin = 0.0, double zMax = 0.0);
+
+    int modes() const { return int(compliance_.rows()); }
+    /// Quasi-static modal coordinates for the grid pressure p (Pa, gauge) at the axial offset.
+    void respond(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& q) const;
+    /// Film-thickness change (m) on the grid for the modal coordinates q at the axial offset.
+    void filmChange(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& dh) const;
+    /// Nodal displacement of the whole mesh (3 · nodes, m) for q.
+    Eigen::VectorXd displacement(const Eigen::VectorXd& q) const { return body_.shapes * q; }
+
+    const modal::ReducedBody& body() const { return body_; }
+    const std::string& surface() const { return surface_; }
+    /// Grid nodes (of a piston grid) that lie outside the surface's image: no elastic motion there.
+    const std::vector<int>& outsideNodes() const { return outside_; }
+    /// Resultant (force, moment about `point`; N, N·m) of the nodal forces the body receives
+    /// for the grid pressure p at the offset, in the body frame.
+    Eigen::Matrix<double, 6, 1> resultant(const Eigen::VectorXd& p, double offset, const Eigen::Vector3d& point) const;
+
+private:
+    modal::ReducedBody body_;
+    Side side_;
+    std::string surface_;
+    Eigen::MatrixXd compliance_;
+    std::unique_ptr<ModalMapping> fixed_;
+    std::unique_ptr<MovingGridMapping> moving_;
+    std::vector<int> outside_;
+    Eigen::MatrixXd resultantRows_;  // piston: 6 × grid, Σ of the mapped nodal forces and moments about 0
+};
+
+}  // namespace flexehd::cosim

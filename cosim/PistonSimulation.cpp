@@ -1,0 +1,495 @@
+#include "cosim/PistonSimulation.hpp"
+
+#include "lube/FilmIntegrals.hpp"
+#include "modal/ReducedBodyFile.hpp"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <stdexcept>
+
+namespace flexehd::cosim {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
+
+lube::Lubricant makeLubricant(const LubricantSpec& l) {
+    lube::Lubricant lub(l.viscosity, l.density);
+    if (l.barusAlpha > 0.0) lub.withBarus(l.barusAlpha);
+    return lub;
+}
+
+lube::ReynoldsOptions makeOptions(const LubricantSpec& l, lube::SolverKind kind) {
+    lube::ReynoldsOptions o;
+    o.cavitation = lube::Cavitation::Reynolds;
+    o.solver = kind;
+    o.cavitationPressure = l.cavitationPressure;
+    o.control.tolerance = 1e-8;
+    return o;
+}
+
+double wrap720(double deg) {
+    double w = std::fmod(deg, 720.0);
+    return w < 0.0 ? w + 720.0 : w;
+}
+}  // namespace
+
+struct PistonSimulation::State {
+    double crankDeg = 0.0;  // continuous
+    double time = 0.0;
+    double dt = 0.0;        // s, the step that reached this state (0: initial)
+    Eigen::Vector2d x = Eigen::Vector2d::Zero(), v = Eigen::Vector2d::Zero(), a = Eigen::Vector2d::Zero();
+    Eigen::VectorXd h, hRigid, p, y;
+};
+
+struct PistonSimulation::Context {
+    double crankDeg = 0.0, dt = 0.0, a0 = 1.0, a1 = -1.0, a2 = 0.0;
+    CrankState crank;
+    double gas = 0.0, offset = 0.0;
+    const State* now = nullptr;
+    const State* before = nullptr;
+};
+
+struct PistonSimulation::Evaluation {
+    Eigen::VectorXd h, hRigid, dhdt, p, pc, Hy;
+    lube::FilmLoads loads;
+    FilmAction action;
+    Eigen::Vector2d vel, acc, residual;
+    Eigen::Vector2d scale;  // magnitude of the largest terms of each equation (N, N·m)
+    int floored = 0;
+};
+
+PistonSimulation::PistonSimulation(const EngineCase& c)
+    : case_(c),
+      kin_(c.engine.stroke, c.engine.rodLength, c.engine.pinOffset, c.engine.speedRpm),
+      dyn_(c.piston, c.engine),
+      pressure_(c.cylinderPressure),
+      film_(c.engine, c.piston, c.grid),
+      solver_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::Multigrid)),
+      fallback_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::ActiveSet)) {
+    const auto t0 = Clock::now();
+    if (c.contact.compositeModulus > 0.0)
+        contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
+    if (c.pistonBody.model == BodyModel::Flexible) {
+        piston_ = std::make_unique<FlexibleSurface>(modal::readReducedBody(c.pistonBody.file),
+                                                    FlexibleSurface::Side::Piston, c.pistonBody.surface,
+                                                    c.pistonBody.interfaces, film_.grid());
+        mp_ = piston_->modes();
+    }
+    if (c.linerBody.model == BodyModel::Flexible) {
+        // The grid slides over the liner between BDC and TDC (plus a margin of two grid rows).
+        const double lo = std::min(linerOffset(180.0), linerOffset(0.0));
+        const double hi = std::max(linerOffset(180.0), linerOffset(0.0));
+        const double margin = 2.0 * film_.grid().length() / (film_.grid().nAxial() - 1);
+        liner_ = std::make_unique<FlexibleSurface>(modal::readReducedBody(c.linerBody.file),
+                                                   FlexibleSurface::Side::Liner, c.linerBody.surface,
+                                                   c.linerBody.interfaces, film_.grid(),
+                                                   lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
+        ml_ = liner_->modes();
+    }
+    stats_.timings.setup = seconds(t0);
+}
+
+PistonSimulation::~PistonSimulation() = default;
+
+double PistonSimulation::linerOffset(double crankDeg) const {
+    return -case_.engine.pinTdcDepth - (kin_.tdcPosition() - kin_.at(crankDeg).position);
+}
+
+PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, const Eigen::Vector2d& x,
+                                                        const Eigen::VectorXd& y, bool structure) {
+    Evaluation ev;
+    auto t0 = Clock::now();
+    film_.rigidThickness(x[0], x[1], ev.hRigid);
+    ev.h = ev.hRigid;
+    Eigen::VectorXd dh;
+    if (piston_) {
+        piston_->filmChange(y.head(mp_), 0.0, dh);
+        ev.h += dh;
+    }
+    if (liner_) {
+        liner_->filmChange(y.tail(ml_), ctx.offset, dh);
+        ev.h += dh;
+    }
+    stats_.timings.structure += seconds(t0);
+    t0 = Clock::now();
+    const lube::FilmGrid& g = film_.grid();
+    // A Newton iterate may push the skirt into the liner: floor h (the asperity pressure, from the
+    // unfloored value clamped at λ = −2, pushes it back). Counted in `floored`.
+    const double floor = contact_ ? 0.05 * case_.contact.sigma : 0.01 * case_.piston.clearance;
+    ev.pc = Eigen::VectorXd::Zero(g.size());
+    for (int k = 0; k < g.size(); ++k) {
+        if (g.kind(k) == lube::NodeKind::Void) continue;
+        if (contact_) ev.pc[k] = contact_->pressure(std::max(ev.h[k], -2.0 * case_.contact.sigma));
+        if (ev.h[k] < floor) {
+            ev.h[k] = floor;
+            ++ev.floored;
+        }
+    }
+    const State& n = *ctx.now;
+    const State& b = *ctx.before;
+    // Squeeze term from the rigid film thickness only: the elastic deformation is quasi-static
+    // and its rate is left out of ∂h/∂t (docs/coupling.md §3: with it, the partitioned coupling
+    // has a gain ∝ 1/Δt and does not converge).
+    ev.dhdt = (ctx.a0 * ev.hRigid + ctx.a1 * n.hRigid + ctx.a2 * b.hRigid) / ctx.dt;
+    lube::FilmState fs;
+    fs.h = ev.h;
+    fs.dhdt = ev.dhdt;
+    fs.outer.axial = -ctx.crank.velocity;  // the liner slides past the piston-fixed grid
+    const Eigen::VectorXd* warm = n.p.size() == g.size() ? &n.p : nullptr;
+    try {
+        ev.p = solver_.solve(fs, warm).pressure;
+    } catch (const std::runtime_error&) {
+        // Multigrid stalled (seen near the dead centres, pure squeeze): the exact active-set
+        // solver on a sparse factorization gives the same complementarity solution.
+        ev.p = fallback_.solve(fs, warm).pressure;
+        ++stats_.fallbackSolves;
+    }
+    ++stats_.filmSolves;
+    lube::FilmIntegralOptions io;
+    io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
+    io.cavitationPressure = case_.lubricant.cavitationPressure;
+    io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
+    io.contactPressure = contact_ ? &ev.pc : nullptr;
+    ev.loads = lube::integrateFilm(g, fs, solver_.lubricant(), ev.p, io);
+    const Eigen::Vector3d F = ev.loads.totalForce();
+    ev.action = {F.x(), F.z(), ev.loads.moment.y()};
+    stats_.timings.film += seconds(t0);
+
+    ev.vel = (ctx.a0 * x + ctx.a1 * n.x + ctx.a2 * b.x) / ctx.dt;
+    ev.acc = (ctx.a0 * ev.vel + ctx.a1 * n.v + ctx.a2 * b.v) / ctx.dt;
+    const Eigen::Vector2d Ma = dyn_.mass(ctx.crank) * ev.acc;
+    ev.residual = Ma - dyn_.force(ctx.crank, ctx.gas, ev.action);
+    // Scale of each equation: the sum of its terms' magnitudes (rod, film, gas, inertia).
+    const double A = std::abs(ctx.crank.acceleration) + 9.81;
+    const double mTot = case_.piston.mass + case_.piston.pinMass;
+    ev.scale[0] = std::abs(Ma[0]) + std::abs(ev.action.fx) +
+                  std::abs(ctx.crank.tanRod) * (mTot * A + std::abs(ctx.gas) + std::abs(ev.action.fz));
+    ev.scale[1] = std::abs(Ma[1]) + std::abs(ev.action.my) + std::abs(case_.engine.pinOffset * ctx.gas) +
+                  case_.piston.mass * std::abs(case_.piston.cgX) * A;
+    if (structure && (piston_ || liner_)) {
+        t0 = Clock::now();
+        const Eigen::VectorXd ptot = ev.p + ev.pc;
+        ev.Hy.resize(mp_ + ml_);
+        Eigen::VectorXd q;
+        if (piston_) {
+            piston_->respond(ptot, 0.0, q);
+            ev.Hy.head(mp_) = q;
+        }
+        if (liner_) {
+            liner_->respond(ptot, ctx.offset, q);
+            ev.Hy.tail(ml_) = q;
+        }
+        stats_.timings.structure += seconds(t0);
+    }
+    return ev;
+}
+
+bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations) {
+    Context ctx;
+    ctx.crankDeg = s.crankDeg + dtDeg;
+    ctx.dt = dtDeg * kin_.secondsPerDegree();
+    if (s.dt > 0.0) {  // BDF2 with variable step ratio ω
+        const double w = ctx.dt / s.dt;
+        ctx.a0 = (1.0 + 2.0 * w) / (1.0 + w);
+        ctx.a1 = -(1.0 + w);
+        ctx.a2 = w * w / (1.0 + w);
+    }
+    ctx.crank = kin_.at(ctx.crankDeg);
+    ctx.gas = dyn_.gasForce(pressure_(wrap720(ctx.crankDeg)));
+    ctx.offset = liner_ ? linerOffset(ctx.crankDeg) : 0.0;
+    ctx.now = &s;
+    ctx.before = &prev;
+    const double dt = ctx.dt;
+    Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
+    Eigen::VectorXd y = s.y;
+    const bool flexible = piston_ || liner_;
+    CouplingAccelerator acc(case_.coupling.acceleration);
+    // Newton tolerances and finite-difference steps from the clearance c: 1e-5 c on the
+    // lateral shift and on the tilt times the skirt reach (not from the local error tolerances,
+    // which may be loose when the step size is fixed by time.max_step_deg).
+    const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+    const Eigen::Vector2d tol(case_.piston.clearance, case_.piston.clearance / reach);
+    // Force floor of the residual test: the reciprocating inertia force m r ω² of the engine.
+    const double forceFloor = (case_.piston.mass + case_.piston.pinMass) * kin_.crankRadius() * kin_.omega() * kin_.omega();
+    const double couplingTol = case_.coupling.tolerance * case_.piston.clearance;
+    const int maxIt = case_.coupling.maxIterations;
+    Eigen::Vector2d lastX = x, lastR = Eigen::Vector2d::Zero();
+    Eigen::VectorXd dh, dh2;
+    iterations = 0;
+    for (int it = 0; it < maxIt; ++it) {
+        try {
+            ev = evaluate(ctx, x, y, true);
+        } catch (const std::runtime_error&) {
+            return false;  // film solve failed: the caller shortens the step
+        }
+        ++iterations;
+        double couplingRes = 0.0;
+        if (flexible) {
+            const Eigen::VectorXd d = ev.Hy - y;
+            const auto t0 = Clock::now();
+            if (piston_) {
+                piston_->filmChange(d.head(mp_), 0.0, dh);
+                couplingRes = dh.cwiseAbs().maxCoeff();
+            }
+            if (liner_) {
+                liner_->filmChange(d.tail(ml_), ctx.offset, dh2);
+                couplingRes = std::max(couplingRes, dh2.cwiseAbs().maxCoeff());
+            }
+            stats_.timings.structure += seconds(t0);
+        }
+        if (it == 0) {
+            // Finite-difference Jacobian of the motion residual (modal coordinates frozen).
+            const Eigen::Vector2d delta = 1e-5 * tol;
+            for (int i = 0; i < 2; ++i) {
+                Eigen::Vector2d xp = x;
+                xp[i] += delta[i];
+                Evaluation e2;
+                try {
+                    e2 = evaluate(ctx, xp, y, false);
+                } catch (const std::runtime_error&) {
+                    return false;
+                }
+                ++iterations;
+                jacobian_.col(i) = (e2.residual - ev.residual) / delta[i];
+            }
+            ++stats_.jacobians;
+        } else {
+            const Eigen::Vector2d dx = x - lastX, dr = ev.residual - lastR;
+            const double d2 = dx.cwiseQuotient(tol).squaredNorm();
+            if (d2 > 0.0) {
+                const Eigen::Vector2d w = dx.cwiseQuotient(tol).cwiseQuotient(tol);
+                jacobian_ += (dr - jacobian_ * dx) * w.transpose() / d2;  // Broyden, scaled
+            }
+        }
+        const Eigen::Vector2d dx = -jacobian_.partialPivLu().solve(ev.residual);
+        if (!dx.allFinite()) return false;
+        const bool motionDone = std::abs(dx[0]) <= 1e-5 * tol[0] && std::abs(dx[1]) <= 1e-5 * tol[1] &&
+                                std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + forceFloor) &&
+                                std::abs(ev.residual[1]) <= 1e-4 * (ev.scale[1] + forceFloor * reach);
+        if (motionDone && couplingRes <= couplingTol) {
+            out.crankDeg = ctx.crankDeg;
+            out.time = s.time + dt;
+            out.dt = dt;
+            out.x = x;
+            out.v = ev.vel;
+            out.a = ev.acc;
+            out.h = ev.h;
+            out.hRigid = ev.hRigid;
+            out.p = ev.p;
+            out.y = y;
+            return true;
+        }
+        lastX = x;
+        lastR = ev.residual;
+        x += dx;
+        if (flexible) y = acc.next(y, ev.Hy);
+    }
+    return false;
+}
+
+StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cycle, double cycleStart,
+                                    double stepDeg, int iterations) const {
+    StepRecord r;
+    const CrankState k = kin_.at(s.crankDeg);
+    const double gas = dyn_.gasForce(pressure_(wrap720(s.crankDeg)));
+    r.cycle = cycle;
+    r.crankDeg = s.crankDeg - cycleStart;
+    r.time = s.time;
+    r.lateral = s.x[0];
+    r.tilt = s.x[1];
+    r.lateralVelocity = s.v[0];
+    r.tiltRate = s.v[1];
+    r.sideForce = dyn_.sideForce(k, gas, ev.action, s.a[1]);
+    r.filmForce = ev.loads.pressureForce.x() + ev.loads.shearForce.x() + ev.loads.boundaryFrictionForce.x();
+    r.filmMoment = ev.loads.moment.y();
+    r.contactForce = ev.loads.contactForce.x();
+    r.frictionForce = ev.loads.frictionForce().z();
+    r.frictionPower = -r.frictionForce * k.velocity;
+    r.minFilm = ev.loads.minFilm;
+    r.maxPressure = ev.p.size() ? ev.p.maxCoeff() : 0.0;
+    r.couplingIterations = iterations;
+    r.stepDeg = stepDeg;
+    return r;
+}
+
+Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cycle, double cycleStart) const {
+    Snapshot sn;
+    const lube::FilmGrid& g = film_.grid();
+    const CrankState k = kin_.at(s.crankDeg);
+    sn.cycle = cycle;
+    sn.crankDeg = s.crankDeg - cycleStart;
+    sn.pinHeight = k.position;
+    sn.linerOffset = linerOffset(s.crankDeg);
+    sn.lateral = s.x[0];
+    sn.tilt = s.x[1];
+    sn.pressure = ev.p;
+    sn.filmThickness = ev.h;
+    sn.contactPressure = ev.pc;
+    sn.cavitation = Eigen::VectorXd::Zero(g.size());
+    sn.shearStress = Eigen::VectorXd::Zero(g.size());
+    const double eta = solver_.lubricant().referenceViscosity();
+    for (int k2 = 0; k2 < g.size(); ++k2) {
+        if (g.kind(k2) == lube::NodeKind::Void) continue;
+        if (g.kind(k2) == lube::NodeKind::Film && ev.p[k2] <= case_.lubricant.cavitationPressure) sn.cavitation[k2] = 1.0;
+        // τ_z on the piston = η (V_liner − V_piston)/h − (h/2) ∂p/∂z (central differences).
+        const int i = g.axialIndex(k2), j = g.thetaIndex(k2);
+        const int i0 = std::max(0, i - 1), i1 = std::min(g.nAxial() - 1, i + 1);
+        const double dpdz = (ev.p[g.index(i1, j)] - ev.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
+        const double phi = sn.cavitation[k2] > 0.0 ? 0.0 : 1.0;  // no Couette shear where cavitated
+        sn.shearStress[k2] = phi * eta * (-k.velocity) / ev.h[k2] - 0.5 * ev.h[k2] * dpdz;
+    }
+    if (piston_) sn.pistonModal = s.y.head(mp_);
+    if (liner_) sn.linerModal = s.y.tail(ml_);
+    return sn;
+}
+
+std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
+    const auto tRun = Clock::now();
+    const double setupFilm = stats_.timings.film, setupStructure = stats_.timings.structure;
+    (void)setupFilm;
+    (void)setupStructure;
+    const TimeSpec& T = case_.time;
+    State s;
+    s.crankDeg = T.startDeg;
+    film_.rigidThickness(0.0, 0.0, s.h);
+    s.hRigid = s.h;
+    s.y = Eigen::VectorXd::Zero(mp_ + ml_);
+    State prev = s;
+    double dtDeg = std::min(T.maxStepDeg, 0.1);
+    const double every = case_.output.vtkEveryDeg;
+    const double skirtLength = case_.piston.skirtTop - case_.piston.skirtBottom;
+    std::vector<StepRecord> previousCycle, cycleRecords;
+    Evaluation ev, lastEv;
+    bool haveLast = false;
+    stats_ = RunStatistics{.timings = stats_.timings};
+    stats_.minStepDeg = T.maxStepDeg;
+    double filmT0 = stats_.timings.film, structT0 = stats_.timings.structure;
+    (void)filmT0;
+    (void)structT0;
+    for (int cycle = 1; cycle <= T.maxCycles; ++cycle) {
+        const double cycleStart = T.startDeg + 720.0 * (cycle - 1);
+        const double cycleEnd = spanDeg > 0.0 ? std::min(cycleStart + 720.0, T.startDeg + spanDeg) : cycleStart + 720.0;
+        cycleRecords.clear();
+        std::vector<Snapshot> snaps;
+        if (haveLast) {  // the boundary point opens the new cycle too
+            StepRecord r = record(s, lastEv, cycle, cycleStart, 0.0, 0);
+            cycleRecords.push_back(r);
+            if (cb.onStep) cb.onStep(r);
+            if (every > 0.0) snaps.push_back(snapshot(s, lastEv, cycle, cycleStart));
+        }
+        double nextProgress = cycleStart;
+        while (s.crankDeg < cycleEnd - 1e-9) {
+            double step = std::min(dtDeg, cycleEnd - s.crankDeg);
+            bool atSnapshot = false;
+            if (every > 0.0) {
+                const double next = cycleStart + every * (std::floor((s.crankDeg - cycleStart) / every + 1e-9) + 1.0);
+                if (next - s.crankDeg <= step + 1e-12) {
+                    step = next - s.crankDeg;
+                    atSnapshot = true;
+                }
+            }
+            if (std::abs(s.crankDeg + step - cycleEnd) < 1e-9) atSnapshot = every > 0.0;
+            State n;
+            int iterations = 0;
+            const bool ok = advance(s, prev, step, n, ev, iterations);
+            double ratio = 0.0;
+            if (ok) {
+                const double dt = step * kin_.secondsPerDegree();
+                const Eigen::Vector2d pred = s.x + dt * s.v + 0.5 * dt * dt * s.a;
+                const Eigen::Vector2d err = 0.5 * (n.x - pred).cwiseAbs();
+                ratio = std::max(err[0] / T.lateralTolerance, err[1] / T.tiltTolerance);
+            }
+            if (!ok || ratio > 1.0) {
+                ++stats_.rejectedSteps;
+                dtDeg = ok ? step * std::max(0.2, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 0.25 * step;
+                if (dtDeg < T.minStepDeg) {
+                    throw std::runtime_error(fmt::format(
+                        "the time step fell below time.min_step_deg = {:g} deg at crank angle {:.4f} deg of cycle {}: {}. "
+                        "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. Try a smaller "
+                        "time.max_step_deg, a finer film grid, more coupling.max_iterations, or check the loads and "
+                        "clearances of the case.",
+                        T.minStepDeg, wrap720(s.crankDeg), cycle,
+                        ok ? fmt::format("local error {:.3g} x the tolerance", ratio)
+                           : fmt::format("Newton/coupling iterations did not converge in {} film solves "
+                                         "(or a film solve failed)", case_.coupling.maxIterations),
+                        s.x[0] * 1e6, s.x[1] * 1e3, s.h.minCoeff() * 1e6));
+                }
+                continue;
+            }
+            if (!n.x.allFinite() || std::abs(n.x[0]) > 20.0 * case_.piston.clearance ||
+                std::abs(n.x[1]) * skirtLength > 40.0 * case_.piston.clearance)
+                throw std::runtime_error(fmt::format(
+                    "the secondary motion diverged at crank angle {:.3f} deg of cycle {}: lateral shift {:.3g} m, "
+                    "tilt {:.3g} rad (clearance {:.3g} m). Is asperity contact (contact.composite_modulus) on?",
+                    wrap720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance));
+            ++stats_.steps;
+            stats_.maxIterations = std::max(stats_.maxIterations, iterations);
+            stats_.minStepDeg = std::min(stats_.minStepDeg, step);
+            if (piston_) {
+                const Eigen::Matrix<double, 6, 1> r =
+                    piston_->resultant(ev.p + ev.pc, 0.0, Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0));
+                const Eigen::Vector3d film = ev.loads.pressureForce + ev.loads.contactForce;
+                const double scale = std::max(film.norm(), 1e-9);
+                stats_.worstMappingError = std::max(stats_.worstMappingError, (r.head<3>() - film).norm() / scale);
+            }
+            prev = std::move(s);
+            s = std::move(n);
+            lastEv = ev;
+            haveLast = true;
+            StepRecord rec = record(s, ev, cycle, cycleStart, step, iterations);
+            cycleRecords.push_back(rec);
+            if (cb.onStep) cb.onStep(rec);
+            if (atSnapshot) snaps.push_back(snapshot(s, ev, cycle, cycleStart));
+            // Next step: grow with the error ratio, from the unclipped step size.
+            const double grow = ratio > 0.0 ? std::min(2.0, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 2.0;
+            dtDeg = std::min(T.maxStepDeg, std::max(step, std::min(dtDeg, T.maxStepDeg)) * grow);
+            if (cb.progress && s.crankDeg >= nextProgress) {
+                nextProgress += 30.0;
+                const double done = (s.crankDeg - T.startDeg) / 720.0;
+                const double elapsed = seconds(tRun);
+                cb.progress(fmt::format("cycle {}/{}  crank {:6.1f} deg  e {:+7.2f} um  tilt {:+6.3f} mrad  "
+                                        "iterations {:2d}  step {:.3f} deg  {:.1f} s (≤ {:.0f} s per cycle)",
+                                        cycle, T.maxCycles, wrap720(s.crankDeg), s.x[0] * 1e6, s.x[1] * 1e3,
+                                        iterations, step, elapsed, done > 0 ? elapsed / done : 0.0));
+            }
+        }
+        stats_.cycles = cycle;
+        // Periodicity: eccentricities at the skirt ends, this cycle vs the previous one.
+        if (!previousCycle.empty()) {
+            double err = 0.0;
+            std::size_t j = 0;
+            for (const StepRecord& r : cycleRecords) {
+                while (j + 1 < previousCycle.size() && previousCycle[j + 1].crankDeg < r.crankDeg) ++j;
+                const StepRecord& a = previousCycle[j];
+                const StepRecord& b = previousCycle[std::min(j + 1, previousCycle.size() - 1)];
+                const double w = b.crankDeg > a.crankDeg ? std::clamp((r.crankDeg - a.crankDeg) / (b.crankDeg - a.crankDeg), 0.0, 1.0) : 0.0;
+                const double e0 = a.lateral + w * (b.lateral - a.lateral);
+                const double t0 = a.tilt + w * (b.tilt - a.tilt);
+                err = std::max({err, std::abs(r.lateral - e0) + std::abs(r.tilt - t0) * std::max(case_.piston.skirtTop, -case_.piston.skirtBottom)});
+            }
+            stats_.periodicityError = err;
+            stats_.periodic = err <= T.periodicityTolerance;
+        }
+        if (cb.progress)
+            cb.progress(previousCycle.empty()
+                            ? fmt::format("cycle {} done: {} steps so far, {:.1f} s", cycle, stats_.steps, seconds(tRun))
+                            : fmt::format("cycle {} done: periodicity error {:.3g} m (tolerance {:.3g} m), {:.1f} s", cycle,
+                                          stats_.periodicityError, T.periodicityTolerance, seconds(tRun)));
+        const bool last = stats_.periodic || cycle == T.maxCycles || (spanDeg > 0.0 && cycleEnd >= T.startDeg + spanDeg - 1e-9);
+        if (last) {
+            if (cb.onSnapshot)
+                for (const Snapshot& sn : snaps) cb.onSnapshot(sn);
+            break;
+        }
+        previousCycle = cycleRecords;
+    }
+    stats_.timings.dynamics = seconds(tRun) - (stats_.timings.film - filmT0) - (stats_.timings.structure - structT0);
+    return cycleRecords;
+}
+
+}  // namespace flexehd::cosim

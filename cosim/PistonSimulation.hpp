@@ -1,0 +1,117 @@
+#pragma once
+// PistonSimulation: the co-simulation master (docs/coupling.md, docs/dynamics.md). Each time
+// step solves, at the new crank angle, the piston's secondary motion (PistonDynamics, BDF2 in
+// time) together with the film (lube::ReynoldsSolver with asperity contact) and the elastic
+// response of the flexible bodies (FlexibleSurface), until
+//   * the Newton update of (e, β) is below 1e-5 of the clearance (the tilt times the skirt's
+//     reach from the pin), and the residual of each equation of motion below 1e-4 of the sum
+//     of its terms' magnitudes plus the reciprocating inertia force m r ω² (times the reach
+//     for the moment), and
+//   * the coupling residual, the film-thickness change max|Δh(H(y)) − Δh(y)| of the modal
+//     coordinates y, is below coupling.tolerance × clearance,
+// with one film solve per iteration: Newton (finite-difference Jacobian, Broyden updates) on the
+// motion and IQN-ILS or Aitken on y in the same loop. The step size is controlled by the local
+// error estimate of the predictor–corrector pair; cycles repeat until periodic.
+
+#include "cosim/CouplingAccelerator.hpp"
+#include "cosim/CrankKinematics.hpp"
+#include "cosim/CylinderPressure.hpp"
+#include "cosim/EngineCase.hpp"
+#include "cosim/FlexibleSurface.hpp"
+#include "cosim/PistonDynamics.hpp"
+#include "cosim/SkirtFilm.hpp"
+#include "cosim/StepRecord.hpp"
+#include "lube/GreenwoodTripp.hpp"
+#include "lube/ReynoldsSolver.hpp"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flexehd::cosim {
+
+/// Film and body state at one written crank angle (the VTK snapshots).
+struct Snapshot {
+    int cycle = 0;
+    double crankDeg = 0.0;       ///< ° within the cycle
+    double pinHeight = 0.0;      ///< m, cylinder-frame z of the pin axis (crank axis at 0)
+    double linerOffset = 0.0;    ///< m, liner-frame z of the piston frame's origin
+    double lateral = 0.0, tilt = 0.0;
+    Eigen::VectorXd pressure, filmThickness, contactPressure, shearStress, cavitation;
+    Eigen::VectorXd pistonModal, linerModal;  ///< modal coordinates (empty for rigid bodies)
+};
+
+struct Timings {
+    double setup = 0.0;      ///< s: bodies, mappings, compliance
+    double film = 0.0;       ///< s: Reynolds solves, contact, film integrals
+    double structure = 0.0;  ///< s: modal response and deformation mapping
+    double dynamics = 0.0;   ///< s: everything else in the step loop
+};
+
+struct RunStatistics {
+    int cycles = 0;
+    bool periodic = false;
+    double periodicityError = 0.0;  ///< m, last cycle vs the one before (see docs/coupling.md)
+    long steps = 0, rejectedSteps = 0, filmSolves = 0, jacobians = 0;
+    long fallbackSolves = 0;        ///< film solves redone by the active-set solver (multigrid failed)
+    int maxIterations = 0;          ///< most film solves in one accepted step
+    double worstMappingError = 0.0; ///< max relative |mapped resultant − film force| (flexible piston)
+    double minStepDeg = 0.0;        ///< smallest accepted step
+    Timings timings;
+};
+
+struct SimulationCallbacks {
+    std::function<void(const StepRecord&)> onStep;      ///< every accepted step
+    std::function<void(const Snapshot&)> onSnapshot;    ///< final cycle, every output.vtkEveryDeg
+    std::function<void(const std::string&)> progress;   ///< human-readable progress lines
+};
+
+class PistonSimulation {
+public:
+    /// Builds the grid, solver and the flexible bodies named by the case (reads their files).
+    explicit PistonSimulation(const EngineCase& c);
+    ~PistonSimulation();
+
+    /// Runs the cycles; records of the final cycle are returned. Throws std::runtime_error with a
+    /// diagnosis when the step size falls below time.min_step_deg.
+    /// spanDeg > 0 stops after that many crank degrees (tests, studies of one event).
+    std::vector<StepRecord> run(const SimulationCallbacks& callbacks = {}, double spanDeg = 0.0);
+
+    const RunStatistics& statistics() const { return stats_; }
+    const SkirtFilm& film() const { return film_; }
+    const CrankKinematics& kinematics() const { return kin_; }
+    const PistonDynamics& dynamics() const { return dyn_; }
+    const FlexibleSurface* piston() const { return piston_.get(); }
+    const FlexibleSurface* liner() const { return liner_.get(); }
+    /// Liner-frame z of the piston frame's origin at the crank angle.
+    double linerOffset(double crankDeg) const;
+
+private:
+    struct State;
+    struct Context;
+    struct Evaluation;
+    Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
+    bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations);
+    StepRecord record(const State& s, const Evaluation& ev, int cycle, double cycleStart, double stepDeg, int iterations) const;
+    Snapshot snapshot(const State& s, const Evaluation& ev, int cycle, double cycleStart) const;
+
+    EngineCase case_;
+    CrankKinematics kin_;
+    PistonDynamics dyn_;
+    CylinderPressure pressure_;
+    SkirtFilm film_;
+    lube::ReynoldsSolver solver_;
+    lube::ReynoldsSolver fallback_;  // active set on a sparse factorization, if multigrid fails
+    std::optional<lube::GreenwoodTripp> contact_;
+    std::unique_ptr<FlexibleSurface> piston_, liner_;
+    int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
+    Eigen::Matrix2d jacobian_;
+    bool haveJacobian_ = false;
+    RunStatistics stats_;
+};
+
+}  // namespace flexehd::cosim

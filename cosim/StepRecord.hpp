@@ -1,0 +1,28 @@
+#pragma once
+// StepRecord: the per-step results of a co-simulation run, one row of history.csv
+// (docs/results-format.md). Signs follow docs/dynamics.md: forces act ON THE PISTON, in the
+// cylinder frame (x major thrust side, z towards the head); moments about the pin axis, +y.
+
+namespace flexehd::cosim {
+
+struct StepRecord {
+    int cycle = 0;                  ///< 1-based cycle number
+    double crankDeg = 0.0;          ///< °, 0–720 within the cycle
+    double time = 0.0;              ///< s since the start of the run
+    double lateral = 0.0;           ///< m, lateral shift e of the pin axis (+x thrust)
+    double tilt = 0.0;              ///< rad, tilt β about +y (top of the piston towards +x > 0)
+    double lateralVelocity = 0.0;   ///< m/s
+    double tiltRate = 0.0;          ///< rad/s
+    double sideForce = 0.0;         ///< N, lateral force of the connecting rod on the pin
+    double filmForce = 0.0;         ///< N, lateral force of the film without asperity contact (pressure + friction)
+    double filmMoment = 0.0;        ///< N·m, moment of film pressure, contact and friction about the pin
+    double contactForce = 0.0;      ///< N, lateral asperity-contact force
+    double frictionForce = 0.0;     ///< N, axial friction force (hydrodynamic shear + boundary)
+    double frictionPower = 0.0;     ///< W, −F_friction,z · ż (power lost, ≥ 0 on average)
+    double minFilm = 0.0;           ///< m
+    double maxPressure = 0.0;       ///< Pa, gauge
+    int couplingIterations = 0;     ///< film solves in this step (coupling + Newton)
+    double stepDeg = 0.0;           ///< °, crank-angle step that reached this point
+};
+
+}  // namespace flexehd::cosim
