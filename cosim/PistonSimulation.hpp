@@ -59,7 +59,9 @@ struct RunStatistics {
     long steps = 0, rejectedSteps = 0, filmSolves = 0, jacobians = 0;
     long fallbackSolves = 0;        ///< film solves redone by the active-set solver (multigrid failed)
     int maxIterations = 0;          ///< most film solves in one accepted step
-    double worstMappingError = 0.0; ///< max relative |mapped resultant − film force| (flexible piston)
+    /// max over the steps of |mapped resultant − film normal force| on the flexible piston,
+    /// relative to the largest film normal force of the run
+    double worstMappingError = 0.0;
     double minStepDeg = 0.0;        ///< smallest accepted step
     Timings timings;
 };
