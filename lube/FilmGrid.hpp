@@ -77,6 +77,9 @@ public:
     void voidNode(int k);
 
     NodeKind kind(int k) const { return kind_[static_cast<std::size_t>(k)]; }
+    /// All node kinds and prescribed pressures, indexed by node (for assembly loops).
+    const NodeKind* kinds() const { return kind_.data(); }
+    const double* prescribedPressures() const { return fixedPressure_.data(); }
     /// Prescribed pressure of a Fixed node, ambient for Void, unused for Film.
     double prescribedPressure(int k) const;
     int filmNodeCount() const;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace flexehd::lube {
 
@@ -15,7 +16,10 @@ namespace {
 // (i+di, j+dj) (θ wrapped when periodic). The fine level has only the 5-point entries.
 constexpr int kDiag = 4;
 constexpr int sidx(int di, int dj) { return (di + 1) * 3 + (dj + 1); }
-constexpr std::size_t kDirectMax = 400;  // coarsest level solved by dense LDLT up to this size
+// Coarsening stops at this many nodes; the coarsest level is solved by dense LDLT (also a level
+// that cannot coarsen further, up to kDirectLimit nodes; beyond that it is smoothed).
+constexpr std::size_t kDirectMax = 64;
+constexpr std::size_t kDirectLimit = 400;
 constexpr std::size_t sj(int j) { return static_cast<std::size_t>(j); }
 
 enum class Lines { Z, Theta, Both };
@@ -36,9 +40,12 @@ struct Level {
     int nz = 0, nt = 0;
     bool periodic = false;
     std::vector<double> z;     // axial coordinates (prolongation weights)
-    std::vector<double> a;     // stencil entries per node: 9, or 5 on the fine level (Stencil)
+    // Stencil entries per node: 9 (coarse levels, stored in `own`), or 5 on the fine level
+    // (Stencil), which is ReynoldsSystem::stencil() itself (same layout, not copied).
+    const double* a = nullptr;
+    std::vector<double> own;
     std::vector<char> free;    // unknown of the correction problem (else e = 0)
-    Eigen::VectorXd x, f, r;   // correction, right-hand side, residual
+    Eigen::VectorXd x, f, r;   // correction, right-hand side, residual (r: unfused levels only)
     Eigen::VectorXd q;         // zebra line-solve work array
     // Line factorizations, kept while the stencil and truncation of the line are unchanged:
     // z-lines (per node: Thomas multipliers zm = 1/pivot, zw = upper·zm; valid per column),
@@ -47,6 +54,10 @@ struct Level {
     std::vector<double> zm, zw, tm, tw, tl, tu;
     std::vector<double> tAlpha, tGamma, tDen;
     std::vector<char> colOk, rowOk;
+    // Fused z-line levels: columns with at least one free node (the others are skipped by the
+    // line sweeps; their x is kept at 0), by parity; neighbour columns (wrapped or clamped).
+    std::vector<char> colLive;
+    std::vector<int> evenCols, oddCols, jmv, jpv;
     // Prolongation from the next coarser level: parents of each row / column of this level.
     std::vector<int> pz0, pz1, pt0, pt1;
     std::vector<double> wz0, wz1, wt0, wt1;
@@ -64,16 +75,26 @@ struct Level {
 
     bool five = false;         // 5-point stencil layout (the fine level), see Stencil
     Lines lines = Lines::Both; // smoother direction(s), from the stencil (chooseLines)
+    bool fusedZ = false;       // z-lines on a level with a coarser one: fused cycle (vcycleZT)
+    bool thetaHalved = false;  // the next coarser level has every other θ column (galerkinHalvedT)
     int size() const { return nz * nt; }
     /// Entry s (9-point numbering sidx) of node k's stencil, whatever the layout.
     double coef(std::size_t k, int s) const;
+    // Stale line factorizations. A z-line changed in rows colFrom … colTo only: its top-down
+    // factors change from colFrom down, its bottom-up factors from colTo up.
+    std::vector<int> colFrom, colTo;
     void invalidateLines() {
         std::fill(colOk.begin(), colOk.end(), 0);
         std::fill(rowOk.begin(), rowOk.end(), 0);
+        std::fill(colFrom.begin(), colFrom.end(), 0);
+        std::fill(colTo.begin(), colTo.end(), nz - 1);
     }
     void invalidateLines(int k) {
-        rowOk[static_cast<std::size_t>(k / nt)] = 0;
-        colOk[static_cast<std::size_t>(k % nt)] = 0;
+        const auto i = static_cast<std::size_t>(k / nt), j = static_cast<std::size_t>(k % nt);
+        rowOk[i] = 0;
+        colOk[j] = 0;
+        colFrom[j] = std::min(colFrom[j], k / nt);
+        colTo[j] = std::max(colTo[j], k / nt);
     }
     // Clamped neighbour indices: an invalid neighbour maps onto a valid node whose stencil
     // coefficient is zero, so the hot loops need no branches.
@@ -113,6 +134,39 @@ inline double offDiagonalSum(const Level& L, const double* x, int i, int j) {
            c[6] * xp[jm] + c[7] * xp[j] + c[8] * xp[jp];
 }
 
+// 1/pivot for a line factorization, or 0 (the node is left out of the line solve) when the pivot
+// is not clearly positive: a heavily truncated Galerkin basis can make a coarse operator
+// (nearly) semidefinite, and rounding then leaves pivots of either sign near 0 whose inverse
+// would flood the correction with inf/NaN. diag is the node's diagonal entry (the scale).
+inline double safeInverse(double pivot, double diag) {
+    return pivot > 1e-12 * std::abs(diag) ? 1.0 / pivot : 0.0;
+}
+
+// Off-diagonal part of row k's stencil c applied to x, with the rows i − 1, i, i + 1 of x at
+// xm, x0, xp and the neighbouring columns jm, jp (clamped onto a zero coefficient at open edges).
+template <bool Five>
+inline double offDiag(const double* c, const double* xm, const double* x0, const double* xp, int j,
+                      int jm, int jp) {
+    using St = Stencil<Five>;
+    double s = c[St::S] * xm[j] + c[St::W] * x0[jm] + c[St::E] * x0[jp] + c[St::N] * xp[j];
+    if constexpr (!Five) s += c[0] * xm[jm] + c[2] * xm[jp] + c[6] * xp[jm] + c[8] * xp[jp];
+    return s;
+}
+
+// fn(j, jm, jp) for the columns j0, j0 + step, … of a level, with the neighbouring columns: the
+// end columns (wrap or clamp) peeled off so that the loop over the interior has no branches.
+template <class Fn>
+inline void forColumns(const Level& L, int j0, int step, Fn&& fn) {
+    const int nt = L.nt;
+    int j = j0;
+    if (j == 0) {
+        fn(0, L.jm(0), L.jp(0));
+        j += step;
+    }
+    for (; j < nt - 1; j += step) fn(j, j - 1, j + 1);
+    if (j == nt - 1) fn(j, L.jm(j), L.jp(j));
+}
+
 // Smoother direction of a level from its couplings summed over the free nodes: line relaxation
 // along z alone when the axial couplings are at least twice the circumferential ones (skirts,
 // Δz < RΔθ), along θ alone in the opposite case (long bearings, few axial nodes), alternating
@@ -139,9 +193,13 @@ struct MultigridSolver::Hierarchy {
     std::vector<char> cachedFree;  // truncation the Galerkin operators were built for
     bool galerkinValid = false;
     std::vector<double> lo, d, up, rhs;  // line-solve work arrays
+    std::vector<int> staleDown, staleUp;  // factorZT work lists
     Eigen::LDLT<Eigen::MatrixXd> ldlt;  // coarsest level
     Eigen::VectorXd dir;                // line-search direction
     Eigen::VectorXd invDiag;            // 1/A_kk on the fine Film nodes (0 elsewhere)
+    std::vector<char> near;             // fine Film nodes next to a frozen or non-Film node
+    std::vector<char> colFree;          // markNear work array (one fine row)
+    void markNear(int i);
 
     void buildGeometry(const FilmGrid& g);
     void extractFine(const ReynoldsSystem& sys);
@@ -151,6 +209,10 @@ struct MultigridSolver::Hierarchy {
         std::vector<int> list;
     };
     void galerkin(std::size_t l, const Dirty* dirty);  // levels[l+1] from levels[l]
+    template <bool Five, bool Partial>
+    static void galerkinT(const Level& F, Level& C, const Dirty* dirty);
+    template <bool Five, bool Partial>
+    static void galerkinHalvedT(const Level& F, Level& C, const Dirty* dirty);
     void dirtyParents(std::size_t l, const std::vector<int>& changed, Dirty& dirty) const;
     void updateCoarse();
     void factorCoarsest();
@@ -166,6 +228,18 @@ struct MultigridSolver::Hierarchy {
     void residual(Level& L);
     template <bool Five> void residualT(Level& L);
     void vcycle(std::size_t l);
+    // Line search of the outer iteration, accumulated row by row (LineSearch::direction, then
+    // curvature one row behind).
+    struct LineSearch {
+        const double* p;
+        double pLower;
+        bool bounded;
+        double* dir;
+        double alphaMax = std::numeric_limits<double>::infinity(), num = 0.0, den = 0.0;
+        void direction(const Level& F, int i);
+        void curvature(const Level& F, int i);
+    };
+    template <bool Five> void vcycleZT(std::size_t l, LineSearch* ls);
 };
 
 void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
@@ -211,6 +285,7 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
         if (C.nz == 1) { F.pz0[0] = F.pz1[0] = 0; }
         for (int j = 0; j < F.nt; ++j) {
             const auto sj = static_cast<std::size_t>(j);
+            F.thetaHalved = ct;
             if (!ct) { F.pt0[sj] = F.pt1[sj] = j; continue; }
             if (j % 2 == 0) { F.pt0[sj] = F.pt1[sj] = j / 2; continue; }
             F.pt0[sj] = j / 2;
@@ -254,15 +329,27 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
     std::size_t maxLine = 0;
     for (Level& L : levels) {
         const auto n = static_cast<std::size_t>(L.size());
-        L.a.assign((L.five ? 5 : 9) * n, 0.0);
+        if (!L.five) {
+            L.own.assign(9 * n, 0.0);
+            L.a = L.own.data();
+        }
         L.free.assign(n, 0);
         L.x = Eigen::VectorXd::Zero(L.size());
         L.f = Eigen::VectorXd::Zero(L.size());
-        L.r = Eigen::VectorXd::Zero(L.size());
+        L.r.resize(0);  // allocated by residualT (levels not smoothed by the fused z-line cycle)
         L.q = Eigen::VectorXd::Zero(L.size());
         for (auto* v : {&L.zm, &L.zw, &L.tm, &L.tw, &L.tl, &L.tu}) v->clear();  // on first use
         for (auto* v : {&L.tAlpha, &L.tGamma, &L.tDen}) v->assign(static_cast<std::size_t>(L.nz), 0.0);
         L.colOk.assign(static_cast<std::size_t>(L.nt), 0);
+        L.colFrom.assign(static_cast<std::size_t>(L.nt), 0);
+        L.colTo.assign(static_cast<std::size_t>(L.nt), L.nz - 1);
+        L.colLive.assign(static_cast<std::size_t>(L.nt), 0);
+        L.jmv.resize(static_cast<std::size_t>(L.nt));
+        L.jpv.resize(static_cast<std::size_t>(L.nt));
+        for (int j = 0; j < L.nt; ++j) {
+            L.jmv[static_cast<std::size_t>(j)] = L.jm(j);
+            L.jpv[static_cast<std::size_t>(j)] = L.jp(j);
+        }
         L.rowOk.assign(static_cast<std::size_t>(L.nz), 0);
         maxLine = std::max({maxLine, static_cast<std::size_t>(L.nz), static_cast<std::size_t>(L.nt)});
     }
@@ -270,114 +357,62 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
     galerkinValid = false;
 }
 
+// near[k] for fine row i from the free flags of rows i − 1 … i + 1: a Film node with a frozen or
+// non-Film node among its 8 neighbours.
+void MultigridSolver::Hierarchy::markNear(int i) {
+    const Level& F = levels[0];
+    const int nt = F.nt;
+    const char* fm = &F.free[static_cast<std::size_t>(F.im(i) * nt)];
+    const char* f0 = &F.free[static_cast<std::size_t>(i * nt)];
+    const char* fp = &F.free[static_cast<std::size_t>(F.ip(i) * nt)];
+    char* out = &near[static_cast<std::size_t>(i * nt)];
+    const char* fl = &film[static_cast<std::size_t>(i * nt)];
+    // Columns whose three nodes (rows i − 1 … i + 1) are all free, then three columns at a time.
+    char* col = colFree.data();
+    for (int j = 0; j < nt; ++j) col[j] = static_cast<char>(fm[j] & f0[j] & fp[j]);
+    out[0] = static_cast<char>(fl[0] & !(col[F.jm(0)] & col[0] & col[F.jp(0)]));
+    for (int j = 1; j < nt - 1; ++j) out[j] = static_cast<char>(fl[j] & !(col[j - 1] & col[j] & col[j + 1]));
+    if (nt > 1) out[nt - 1] = static_cast<char>(fl[nt - 1] & !(col[F.jm(nt - 1)] & col[nt - 1] & col[F.jp(nt - 1)]));
+}
+
 void MultigridSolver::Hierarchy::extractFine(const ReynoldsSystem& sys) {
+    static_assert(Stencil<true>::S == ReynoldsSystem::kStencilS && Stencil<true>::W == ReynoldsSystem::kStencilW &&
+                  Stencil<true>::C == ReynoldsSystem::kStencilC && Stencil<true>::E == ReynoldsSystem::kStencilE &&
+                  Stencil<true>::N == ReynoldsSystem::kStencilN, "fine stencil layout = ReynoldsSystem's");
     Level& L = levels[0];
-    std::fill(L.a.begin(), L.a.end(), 0.0);
-    const SparseMatrix& A = sys.matrix();  // symmetric: column k is row k
-    film.assign(static_cast<std::size_t>(L.size()), 0);
-    const int nt = L.nt;
+    L.a = sys.stencil().data();  // couplings to non-Film nodes are 0 there; non-Film rows unused
+    film.resize(static_cast<std::size_t>(L.size()));
+    invDiag.resize(L.size());
     for (int k = 0; k < L.size(); ++k) {
-        if (!sys.isFilm(k)) continue;
-        film[static_cast<std::size_t>(k)] = 1;
-        double* c = &L.a[static_cast<std::size_t>(5 * k)];  // 5-point layout
-        for (SparseMatrix::InnerIterator e(A, k); e; ++e) {
-            const int r = static_cast<int>(e.row());
-            if (r != k && !sys.isFilm(r)) continue;
-            // 5-point neighbours by index difference (θ fastest; periodic wrap ±(nθ − 1)).
-            const int d = r - k;
-            using St = Stencil<true>;
-            const int s = d == 0 ? St::C : d == -nt ? St::S : d == nt ? St::N
-                        : (d == -1 || d == nt - 1) ? St::W : St::E;
-            c[s] += e.value();
-        }
+        const bool f = sys.isFilm(k);
+        film[static_cast<std::size_t>(k)] = f;
+        invDiag[k] = f ? 1.0 / L.a[static_cast<std::size_t>(5 * k + Stencil<true>::C)] : 0.0;
     }
-    invDiag = Eigen::VectorXd::Zero(L.size());
-    for (int k = 0; k < L.size(); ++k)
-        if (film[static_cast<std::size_t>(k)]) invDiag[k] = 1.0 / L.a[static_cast<std::size_t>(5 * k + Stencil<true>::C)];
     L.invalidateLines();
     galerkinValid = false;
 }
 
 // Galerkin coarse operator C = Pᵀ T A T P (T: truncation to the free nodes) of levels[l+1] from
 // levels[l], accumulated fine node by fine node. With `dirty` (one flag per coarse node), only the
-// dirty coarse rows are zeroed and re-accumulated — the same sums as a full rebuild restricted to
-// those rows, so a row with no free child gets an exact zero diagonal.
+// dirty coarse rows are zeroed and re-accumulated — the same sums in the same order as a full
+// rebuild restricted to those rows, so a row with no free child gets an exact zero diagonal.
 void MultigridSolver::Hierarchy::galerkin(std::size_t l, const Dirty* dirty) {
     const Level& F = levels[l];
     Level& C = levels[l + 1];
     if (!dirty) {
-        std::fill(C.a.begin(), C.a.end(), 0.0);
+        std::fill(C.own.begin(), C.own.end(), 0.0);
+        if (F.thetaHalved) {
+            if (F.five) galerkinHalvedT<true, false>(F, C, nullptr);
+            else galerkinHalvedT<false, false>(F, C, nullptr);
+        } else if (F.five) galerkinT<true, false>(F, C, nullptr);
+        else galerkinT<false, false>(F, C, nullptr);
     } else {
-        for (int K : dirty->list) std::fill_n(C.a.begin() + 9 * K, 9, 0.0);
-    }
-    // Per fine node k: y = row k of (T A T) P, gathered in a 3×3 buffer over the coarse nodes
-    // around k's first parent (Iref, Jref) — the 9-point structure keeps every coupling within
-    // ±1 coarse row/column — then scattered into the rows of k's parents with their weights.
-    const int ntC = C.nt;
-    auto wrap = [&](int d) {
-        if (C.periodic) {
-            if (d > 1) d -= ntC;
-            else if (d < -1) d += ntC;
-        }
-        return d;
-    };
-    for (int i = 0; i < F.nz; ++i) {
-        const auto si = static_cast<std::size_t>(i);
-        const int Iref = F.pz0[si];
-        if (dirty && !dirty->rows[static_cast<std::size_t>(F.pz0[si])] &&
-            !dirty->rows[static_cast<std::size_t>(F.pz1[si])])
-            continue;  // no parent row of this fine row is rebuilt
-        const int rows[3] = {F.im(i), i, F.ip(i)};
-        for (int j = 0; j < F.nt; ++j) {
-            const int k = i * F.nt + j;
-            if (!F.free[static_cast<std::size_t>(k)]) continue;
-            const auto sj = static_cast<std::size_t>(j);
-            int np = 0, PI[4], PJ[4];
-            double PW[4];
-            for (int a = 0; a < 2; ++a) {
-                const double wz = a ? F.wz1[si] : F.wz0[si];
-                if (wz == 0.0) continue;
-                for (int b = 0; b < 2; ++b) {
-                    const double wt = b ? F.wt1[sj] : F.wt0[sj];
-                    if (wt == 0.0) continue;
-                    const int I = a ? F.pz1[si] : F.pz0[si], J = b ? F.pt1[sj] : F.pt0[sj];
-                    if (dirty && !dirty->flag[static_cast<std::size_t>(I * ntC + J)]) continue;
-                    PI[np] = I;
-                    PJ[np] = J;
-                    PW[np++] = wz * wt;
-                }
-            }
-            if (np == 0) continue;
-            const int Jref = F.pt0[sj];
-            double Y[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-            const int cols[3] = {F.jm(j), j, F.jp(j)};
-            const Level::Rel* zr = &F.zRel[3 * si];
-            const Level::Rel* tr = &F.tRel[3 * sj];
-            // Nonzero stencil entries (sidx, value): the 5-point fine level has only 5.
-            static constexpr int kFiveSidx[5] = {1, 3, 4, 5, 7};
-            const int ns = F.five ? 5 : 9;
-            const double* ak = &F.a[static_cast<std::size_t>(ns * k)];
-            for (int e = 0; e < ns; ++e) {
-                const int s = F.five ? kFiveSidx[e] : e;
-                const int di = s / 3, dj = s % 3;
-                if (!F.free[static_cast<std::size_t>(rows[di] * F.nt + cols[dj])]) continue;
-                const double a = ak[e];
-                const Level::Rel& Z = zr[di];
-                const Level::Rel& T = tr[dj];
-                Y[Z.r[0]][T.r[0]] += Z.w[0] * T.w[0] * a;
-                Y[Z.r[0]][T.r[1]] += Z.w[0] * T.w[1] * a;
-                Y[Z.r[1]][T.r[0]] += Z.w[1] * T.w[0] * a;
-                Y[Z.r[1]][T.r[1]] += Z.w[1] * T.w[1] * a;
-            }
-            for (int p = 0; p < np; ++p) {
-                // Slot (r, c) of Y is the coarse node at offset (r − 1 + dI, c − 1 + dJ) from the
-                // parent; dI, dJ ∈ {−1, 0}, so r ≥ −dI and c ≥ −dJ keep it inside the 9 entries.
-                const int dI = Iref - PI[p], dJ = wrap(Jref - PJ[p]);
-                double* cp = &C.a[static_cast<std::size_t>(9 * (PI[p] * ntC + PJ[p]))];
-                for (int r = -dI; r < 3; ++r)
-                    for (int c = -dJ; c < 3; ++c) cp[sidx(r - 1 + dI, c - 1 + dJ)] += PW[p] * Y[r][c];
-            }
-        }
+        for (int K : dirty->list) std::fill_n(C.own.begin() + 9 * K, 9, 0.0);
+        if (F.thetaHalved) {
+            if (F.five) galerkinHalvedT<true, true>(F, C, dirty);
+            else galerkinHalvedT<false, true>(F, C, dirty);
+        } else if (F.five) galerkinT<true, true>(F, C, dirty);
+        else galerkinT<false, true>(F, C, dirty);
     }
     auto setFree = [&](int K) {
         C.free[static_cast<std::size_t>(K)] = C.a[static_cast<std::size_t>(9 * K + kDiag)] > 0.0;
@@ -390,6 +425,162 @@ void MultigridSolver::Hierarchy::galerkin(std::size_t l, const Dirty* dirty) {
     } else {
         for (int K = 0; K < C.size(); ++K) setFree(K);
         C.invalidateLines();
+    }
+}
+
+// Per fine node k: Y = row k of (T A T) P, gathered in a 4×4 buffer over the coarse nodes
+// around k's first parent (Iref, Jref) — slot (r, c) is the coarse node (Iref − 1 + r,
+// Jref − 1 + c); the 9-point structure keeps every coupling within ±1 coarse row/column, row
+// and column 3 stay zero — then scattered into the 9 entries of each parent's row with its
+// weight: a parent at (Iref + oI, Jref + oJ), oI, oJ ∈ {0, 1}, reads slots (oI + r, oJ + c).
+template <bool Five, bool Partial>
+void MultigridSolver::Hierarchy::galerkinT(const Level& F, Level& C, const Dirty* dirty) {
+    const int ntC = C.nt, nt = F.nt;
+    // Nonzero stencil entries as (row offset + 1, column offset + 1): 5 on the fine level.
+    static constexpr int kFiveDi[5] = {0, 1, 1, 1, 2}, kFiveDj[5] = {1, 0, 1, 2, 1};
+    constexpr int ns = Five ? 5 : 9;
+    double* own = C.own.data();
+    for (int i = 0; i < F.nz; ++i) {
+        const auto si = static_cast<std::size_t>(i);
+        if (Partial && !dirty->rows[static_cast<std::size_t>(F.pz0[si])] &&
+            !dirty->rows[static_cast<std::size_t>(F.pz1[si])])
+            continue;  // no parent row of this fine row is rebuilt
+        // Parent rows (1 or 2) and their offsets from Iref = pz0.
+        int nI = 0, PI[2], oI[2];
+        double WZ[2];
+        if (F.wz0[si] != 0.0) { PI[nI] = F.pz0[si]; oI[nI] = 0; WZ[nI++] = F.wz0[si]; }
+        if (F.wz1[si] != 0.0) { PI[nI] = F.pz1[si]; oI[nI] = F.pz1[si] - F.pz0[si]; WZ[nI++] = F.wz1[si]; }
+        const int rowOf[3] = {F.im(i) * nt, i * nt, F.ip(i) * nt};
+        const Level::Rel* zr = &F.zRel[3 * si];
+        for (int j = 0; j < nt; ++j) {
+            const int k = i * nt + j;
+            if (!F.free[static_cast<std::size_t>(k)]) continue;
+            const auto sj = static_cast<std::size_t>(j);
+            int nJ = 0, PJ[2], oJ[2];
+            double WT[2];
+            if (F.wt0[sj] != 0.0) { PJ[nJ] = F.pt0[sj]; oJ[nJ] = 0; WT[nJ++] = F.wt0[sj]; }
+            if (F.wt1[sj] != 0.0) { PJ[nJ] = F.pt1[sj]; oJ[nJ] = F.pt1[sj] == F.pt0[sj] ? 0 : 1; WT[nJ++] = F.wt1[sj]; }
+            if constexpr (Partial) {
+                bool any = false;
+                for (int a = 0; a < nI; ++a)
+                    for (int b = 0; b < nJ; ++b) any |= dirty->flag[static_cast<std::size_t>(PI[a] * ntC + PJ[b])] != 0;
+                if (!any) continue;
+            }
+            double Y[4][4] = {};
+            const int colOf[3] = {F.jm(j), j, F.jp(j)};
+            const Level::Rel* tr = &F.tRel[3 * sj];
+            const double* ak = &F.a[static_cast<std::size_t>(ns * k)];
+            for (int e = 0; e < ns; ++e) {
+                const int di = Five ? kFiveDi[e] : e / 3, dj = Five ? kFiveDj[e] : e % 3;
+                if (!F.free[static_cast<std::size_t>(rowOf[di] + colOf[dj])]) continue;
+                const double a = ak[e];
+                const Level::Rel& Z = zr[di];
+                const Level::Rel& T = tr[dj];
+                Y[Z.r[0]][T.r[0]] += Z.w[0] * T.w[0] * a;
+                Y[Z.r[0]][T.r[1]] += Z.w[0] * T.w[1] * a;
+                Y[Z.r[1]][T.r[0]] += Z.w[1] * T.w[0] * a;
+                Y[Z.r[1]][T.r[1]] += Z.w[1] * T.w[1] * a;
+            }
+            for (int a = 0; a < nI; ++a)
+                for (int b = 0; b < nJ; ++b) {
+                    const int K = PI[a] * ntC + PJ[b];
+                    if (Partial && !dirty->flag[static_cast<std::size_t>(K)]) continue;
+                    const double w = WZ[a] * WT[b];
+                    double* cp = own + 9 * static_cast<std::size_t>(K);
+                    const double(*Yr)[4] = &Y[oI[a]];
+                    const int c0 = oJ[b];
+                    for (int r = 0; r < 3; ++r)
+                        for (int c = 0; c < 3; ++c) cp[3 * r + c] += w * Yr[r][c0 + c];
+                }
+        }
+    }
+}
+
+// galerkinT for a level whose θ columns are halved (the usual case): even fine column j sits on
+// coarse column j/2, odd column j halfway between (j − 1)/2 and (j + 1)/2 (wrapped), so the
+// θ-part of every prolongation stencil is known at compile time, column pair by column pair. Per
+// fine node, with the z-slots of the rows i − 1, i, i + 1 as a 3×4 matrix Z (per row) and the
+// θ-vectors T of the columns j − 1, j, j + 1: v_di = Σ_dj a(di, dj) T_dj, Y = Σ_di Z_di ⊗ v_di,
+// then the same scatter as galerkinT. Same products, summed in a different order.
+template <bool Five, bool Partial>
+void MultigridSolver::Hierarchy::galerkinHalvedT(const Level& F, Level& C, const Dirty* dirty) {
+    using St = Stencil<Five>;
+    const int ntC = C.nt, nt = F.nt;
+    double* own = C.own.data();
+    const char* fr = F.free.data();
+    for (int i = 0; i < F.nz; ++i) {
+        const auto si = static_cast<std::size_t>(i);
+        if (Partial && !dirty->rows[static_cast<std::size_t>(F.pz0[si])] &&
+            !dirty->rows[static_cast<std::size_t>(F.pz1[si])])
+            continue;
+        int nI = 0, PI[2], oI[2];
+        double WZ[2];
+        if (F.wz0[si] != 0.0) { PI[nI] = F.pz0[si]; oI[nI] = 0; WZ[nI++] = F.wz0[si]; }
+        if (F.wz1[si] != 0.0) { PI[nI] = F.pz1[si]; oI[nI] = F.pz1[si] - F.pz0[si]; WZ[nI++] = F.wz1[si]; }
+        // Z[di][r]: weight of coarse row slot r (relative to pz0(i) − 1) in the prolongation of
+        // fine row i + di − 1.
+        double Z[3][4] = {};
+        for (int di = 0; di < 3; ++di) {
+            const Level::Rel& q = F.zRel[3 * si + static_cast<std::size_t>(di)];
+            Z[di][q.r[0]] += q.w[0];
+            Z[di][q.r[1]] += q.w[1];
+        }
+        const char* frow[3] = {fr + F.im(i) * nt, fr + i * nt, fr + F.ip(i) * nt};
+        auto node = [&](auto oddTag, int j, int jm, int jp) {
+            constexpr bool Odd = decltype(oddTag)::value;
+            const int k = i * nt + j;
+            if (!fr[k]) return;
+            const int J0 = j / 2;  // first parent column (Jref)
+            const int J1 = Odd ? (J0 + 1 == ntC ? 0 : J0 + 1) : J0;
+            if constexpr (Partial) {
+                bool any = false;
+                for (int a = 0; a < nI; ++a) {
+                    any |= dirty->flag[static_cast<std::size_t>(PI[a] * ntC + J0)] != 0;
+                    if (Odd) any |= dirty->flag[static_cast<std::size_t>(PI[a] * ntC + J1)] != 0;
+                }
+                if (!any) return;
+            }
+            // θ-vectors (slots 0..3 relative to J0 − 1): column j − 1, j, j + 1.
+            constexpr double Tm[4] = {Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0, 0.0};
+            constexpr double T0[4] = {0.0, Odd ? 0.5 : 1.0, Odd ? 0.5 : 0.0, 0.0};
+            constexpr double Tp[4] = {0.0, Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0};
+            const double* ak = F.a + static_cast<std::size_t>(St::n) * static_cast<std::size_t>(k);
+            const int cols[3] = {jm, j, jp};
+            double v[3][4] = {};
+            for (int di = 0; di < 3; ++di) {
+                const char* f = frow[di];
+                double am, a0, ap;  // couplings to (i + di − 1, j − 1 … j + 1), truncated
+                if constexpr (Five) {
+                    am = di == 1 && f[cols[0]] ? ak[St::W] : 0.0;
+                    ap = di == 1 && f[cols[2]] ? ak[St::E] : 0.0;
+                    a0 = f[cols[1]] ? ak[di == 0 ? St::S : di == 1 ? St::C : St::N] : 0.0;
+                } else {
+                    am = f[cols[0]] ? ak[3 * di] : 0.0;
+                    a0 = f[cols[1]] ? ak[3 * di + 1] : 0.0;
+                    ap = f[cols[2]] ? ak[3 * di + 2] : 0.0;
+                }
+                for (int c = 0; c < 4; ++c) v[di][c] = am * Tm[c] + a0 * T0[c] + ap * Tp[c];
+            }
+            double Y[4][4] = {};
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 4; ++c) Y[r][c] = Z[0][r] * v[0][c] + Z[1][r] * v[1][c] + Z[2][r] * v[2][c];
+            for (int a = 0; a < nI; ++a) {
+                const double(*Yr)[4] = &Y[oI[a]];
+                for (int b = 0; b < (Odd ? 2 : 1); ++b) {
+                    const int J = b ? J1 : J0;
+                    const int K = PI[a] * ntC + J;
+                    if (Partial && !dirty->flag[static_cast<std::size_t>(K)]) continue;
+                    const double w = WZ[a] * (Odd ? 0.5 : 1.0);
+                    double* cp = own + 9 * static_cast<std::size_t>(K);
+                    for (int r = 0; r < 3; ++r)
+                        for (int c = 0; c < 3; ++c) cp[3 * r + c] += w * Yr[r][b + c];
+                }
+            }
+        };
+        forColumns(F, 0, 1, [&](int j, int jm, int jp) {
+            if (j % 2) node(std::true_type{}, j, jm, jp);
+            else node(std::false_type{}, j, jm, jp);
+        });
     }
 }
 
@@ -451,7 +642,10 @@ void MultigridSolver::Hierarchy::updateCoarse() {
         galerkin(l, nullptr);
     }
     if (!galerkinValid)  // first truncation of this solve: smoother directions
-        for (Level& L : levels) chooseLines(L);
+        for (std::size_t l = 0; l < levels.size(); ++l) {
+            chooseLines(levels[l]);
+            levels[l].fusedZ = levels[l].lines == Lines::Z && l + 1 < levels.size();
+        }
     factorCoarsest();
     cachedFree = F.free;
     galerkinValid = true;
@@ -460,7 +654,7 @@ void MultigridSolver::Hierarchy::updateCoarse() {
 void MultigridSolver::Hierarchy::factorCoarsest() {
     Level& L = levels.back();
     L.dense.clear();
-    L.direct = static_cast<std::size_t>(L.size()) <= kDirectMax;
+    L.direct = static_cast<std::size_t>(L.size()) <= kDirectLimit;
     if (!L.direct) return;  // a grid that cannot coarsen far enough: smoothed instead
     std::vector<int> pos(static_cast<std::size_t>(L.size()), -1);
     for (int k = 0; k < L.size(); ++k)
@@ -496,30 +690,247 @@ void MultigridSolver::Hierarchy::factorZ(Level& L) {
 template <bool Five>
 void MultigridSolver::Hierarchy::factorZT(Level& L) {
     using St = Stencil<Five>;
-    const int nt = L.nt;
+    const int nt = L.nt, nz = L.nz;
     if (L.zm.empty()) {
         L.zm.assign(static_cast<std::size_t>(L.size()), 0.0);
         L.zw.assign(static_cast<std::size_t>(L.size()), 0.0);
     }
-    bool any = false;
-    for (char ok : L.colOk) any |= !ok;
-    if (!any) return;
-    // Row by row over the stale columns (contiguous memory).
-    for (int i = 0; i < L.nz; ++i)
-        for (int j = 0; j < nt; ++j) {
-            if (L.colOk[static_cast<std::size_t>(j)]) continue;
+    // Levels smoothed by the fused zebra cycle (vcycleZ, L.lines == Z) eliminate the odd columns
+    // from the bottom up (reverse Thomas: x_i = R'_i − w'_i x_{i−1}), the others top down.
+    const bool reverseOdd = L.fusedZ;
+    std::vector<int>& down = staleDown;  // stale columns factored top down / bottom up
+    std::vector<int>& up = staleUp;
+    down.clear();
+    up.clear();
+    for (int j = 0; j < nt; ++j)
+        if (!L.colOk[static_cast<std::size_t>(j)]) (reverseOdd && j % 2 == 1 ? up : down).push_back(j);
+    if (down.empty() && up.empty()) return;
+    double* zm = L.zm.data();
+    double* zw = L.zw.data();
+    const char* fr = L.free.data();
+    const int* from = L.colFrom.data();
+    const int* to = L.colTo.data();
+    // Row by row over the stale columns (contiguous memory), from the first changed row.
+    for (int i = 0; i < nz; ++i)
+        for (const int j : down) {
+            if (i < from[j]) continue;
             const auto sk = static_cast<std::size_t>(i * nt + j);
-            if (!L.free[sk]) {
-                L.zm[sk] = L.zw[sk] = 0.0;
+            if (!fr[sk]) {
+                zm[sk] = zw[sk] = 0.0;
                 continue;
             }
             const double* c = &L.a[St::n * sk];
-            const double lo = i > 0 ? c[St::S] : 0.0;
-            const double m = 1.0 / (c[St::C] - (i > 0 ? lo * L.zw[sk - static_cast<std::size_t>(nt)] : 0.0));
-            L.zm[sk] = m;
-            L.zw[sk] = c[St::N] * m;
+            const double m = safeInverse(c[St::C] - (i > 0 ? c[St::S] * zw[sk - static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
+            zm[sk] = m;
+            zw[sk] = c[St::N] * m;
         }
+    for (int i = nz - 1; i >= 0; --i)
+        for (const int j : up) {
+            if (i > to[j]) continue;
+            const auto sk = static_cast<std::size_t>(i * nt + j);
+            if (!fr[sk]) {
+                zm[sk] = zw[sk] = 0.0;
+                continue;
+            }
+            const double* c = &L.a[St::n * sk];
+            const double m = safeInverse(c[St::C] - (i + 1 < nz ? c[St::N] * zw[sk + static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
+            zm[sk] = m;
+            zw[sk] = c[St::S] * m;
+        }
+    // Live columns (a free node anywhere in the column) and their lists; a stale column without
+    // free nodes gets x = 0 (the sweeps skip it, and its neighbours read it).
+    char* live = L.colLive.data();
+    for (const int j : down) live[j] = 0;
+    for (const int j : up) live[j] = 0;
+    for (int i = 0; i < nz; ++i) {
+        const char* f = fr + i * nt;
+        for (const int j : down) live[j] |= f[j];
+        for (const int j : up) live[j] |= f[j];
+    }
+    L.evenCols.clear();
+    L.oddCols.clear();
+    for (int j = 0; j < nt; ++j) {
+        if (live[j]) (j % 2 ? L.oddCols : L.evenCols).push_back(j);
+        else if (!L.colOk[static_cast<std::size_t>(j)])
+            for (int i = 0; i < nz; ++i) L.x[i * nt + j] = 0.0;
+    }
     std::fill(L.colOk.begin(), L.colOk.end(), 1);
+    std::fill(L.colFrom.begin(), L.colFrom.end(), nz);
+    std::fill(L.colTo.begin(), L.colTo.end(), -1);
+}
+
+// One V-cycle step on a level smoothed by zebra z-lines (L.lines == Z), with the passes fused:
+// pre-smoothing + residual + restriction in three sweeps over the rows, post-smoothing +
+// prolongation in three more (plus, on the fine level, the search direction and the line-search
+// products). Even columns are eliminated top down (Thomas), odd columns bottom up (reverse
+// Thomas), so that
+//   pass A (rows ↓): forward elimination of the even lines;
+//   pass B (rows ↑): back substitution of the even lines, elimination of the odd lines one row
+//                    behind (their right-hand side needs the new even values of rows i ± 1);
+//   pass C (rows ↓): back substitution of the odd lines; one row behind, the residual of the
+//                    final values and its restriction (pre-smoothing), or the line search (fine
+//                    level, post-smoothing).
+// A line Gauss–Seidel step overwrites a whole line whatever its old values, so the correction
+// starts at zero without clearing x (the pre-smoothing's even lines see f only), and the coarse
+// correction need only be added to the odd columns before the post-smoothing (all columns when a
+// periodic level has an odd number of columns, where columns nθ − 1 and 0 are both even).
+template <bool Five>
+void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
+    using St = Stencil<Five>;
+    Level& L = levels[l];
+    Level& C = levels[l + 1];
+    factorZ(L);
+    const int nz = L.nz, nt = L.nt;
+    // No two of these overlap (restrict lets the compiler keep loaded values across stores).
+    double* __restrict x = L.x.data();
+    double* __restrict R = L.q.data();
+    const double* __restrict f = L.f.data();
+    const double* __restrict M = L.zm.data();
+    const double* __restrict W = L.zw.data();
+    const char* __restrict fr = L.free.data();
+    const double* __restrict A = L.a;
+    const bool allColumns = L.periodic && nt % 2 == 1;  // even columns need the correction too
+
+    const auto n5 = static_cast<std::size_t>(St::n);
+    // Right-hand side of line j at row i from the other-coloured columns (and corners).
+    auto lineRhs = [&](const double* c, double fk, const double* xm, const double* x0, const double* xp,
+                       int jm, int jp) {
+        double r = fk - (c[St::W] * x0[jm] + c[St::E] * x0[jp]);
+        if constexpr (!Five) r -= c[0] * xm[jm] + c[2] * xm[jp] + c[6] * xp[jm] + c[8] * xp[jp];
+        return r;
+    };
+    const int* jmv = L.jmv.data();
+    const int* jpv = L.jpv.data();
+    const std::vector<int>& evenCols = L.evenCols;
+    const std::vector<int>& oddCols = L.oddCols;
+    auto evenElim = [&](int i, bool pre) {
+        const double* xm = x + L.im(i) * nt;
+        const double* x0 = x + i * nt;
+        const double* xp = x + L.ip(i) * nt;
+        const int row = i * nt;
+        for (const int j : evenCols) {
+            const int k = row + j;
+            if (!fr[k]) {
+                R[k] = 0.0;
+                continue;
+            }
+            const double* c = A + n5 * static_cast<std::size_t>(k);
+            const double s = i > 0 ? c[St::S] * R[k - nt] : 0.0;
+            const double rhs = pre ? f[k] : lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]);
+            R[k] = (rhs - s) * M[k];
+        }
+    };
+    auto evenBack = [&](int i) {
+        const int row = i * nt;
+        if (i + 1 < nz)
+            for (const int j : evenCols) x[row + j] = R[row + j] - W[row + j] * x[row + j + nt];
+        else
+            for (const int j : evenCols) x[row + j] = R[row + j];
+    };
+    auto oddElim = [&](int i) {
+        const double* xm = x + L.im(i) * nt;
+        const double* x0 = x + i * nt;
+        const double* xp = x + L.ip(i) * nt;
+        const int row = i * nt;
+        for (const int j : oddCols) {
+            const int k = row + j;
+            if (!fr[k]) {
+                R[k] = 0.0;
+                continue;
+            }
+            const double* c = A + n5 * static_cast<std::size_t>(k);
+            const double nn = i + 1 < nz ? c[St::N] * R[k + nt] : 0.0;
+            R[k] = (lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]) - nn) * M[k];
+        }
+    };
+    auto oddBack = [&](int i) {
+        const int row = i * nt;
+        if (i > 0)
+            for (const int j : oddCols) x[row + j] = R[row + j] - W[row + j] * x[row + j - nt];
+        else
+            for (const int j : oddCols) x[row + j] = R[row + j];
+    };
+    auto passB = [&]() {
+        for (int i = nz - 1; i >= 0; --i) {
+            evenBack(i);
+            if (i + 1 < nz) oddElim(i + 1);
+        }
+        oddElim(0);
+    };
+    // Residual of row i, restricted to the coarse right-hand side.
+    double* __restrict cf = C.f.data();
+    const int ntC = C.nt;
+    auto restrictRow = [&](int i) {
+        const auto si = static_cast<std::size_t>(i);
+        double* c0 = cf + L.pz0[si] * ntC;
+        double* c1 = cf + L.pz1[si] * ntC;
+        const double w0 = L.wz0[si], w1 = L.wz1[si];
+        const double* xm = x + L.im(i) * nt;
+        const double* x0 = x + i * nt;
+        const double* xp = x + L.ip(i) * nt;
+        auto node = [&](int j) {
+            const int k = i * nt + j;
+            if (!fr[k]) return;
+            const double* c = A + n5 * static_cast<std::size_t>(k);
+            const double r = f[k] - (c[St::C] * x0[j] + offDiag<Five>(c, xm, x0, xp, j, jmv[j], jpv[j]));
+            const auto sj = static_cast<std::size_t>(j);
+            const int J0 = L.pt0[sj], J1 = L.pt1[sj];
+            const double a0 = L.wt0[sj] * r, a1 = L.wt1[sj] * r;
+            c0[J0] += w0 * a0;
+            c0[J1] += w0 * a1;
+            c1[J0] += w1 * a0;
+            c1[J1] += w1 * a1;
+        };
+        for (const int j : evenCols) node(j);
+        for (const int j : oddCols) node(j);
+    };
+    // Coarse correction of row i (the columns the post-smoothing reads).
+    const double* __restrict cx = C.x.data();
+    auto correctRow = [&](int i) {
+        const auto si = static_cast<std::size_t>(i);
+        const double* c0 = cx + L.pz0[si] * ntC;
+        const double* c1 = cx + L.pz1[si] * ntC;
+        const double w0 = L.wz0[si], w1 = L.wz1[si];
+        auto node = [&](int j) {
+            const int k = i * nt + j;
+            if (!fr[k]) return;
+            const auto sj = static_cast<std::size_t>(j);
+            const int J0 = L.pt0[sj], J1 = L.pt1[sj];
+            x[k] += w0 * (L.wt0[sj] * c0[J0] + L.wt1[sj] * c0[J1]) + w1 * (L.wt0[sj] * c1[J0] + L.wt1[sj] * c1[J1]);
+        };
+        for (const int j : oddCols) node(j);
+        if (allColumns)
+            for (const int j : evenCols) node(j);
+    };
+
+    // Pre-smoothing, residual, restriction.
+    for (int i = 0; i < nz; ++i) evenElim(i, true);
+    passB();
+    C.f.setZero();
+    for (int i = 0; i < nz; ++i) {
+        oddBack(i);
+        if (i > 0) restrictRow(i - 1);
+    }
+    restrictRow(nz - 1);
+    vcycle(l + 1);
+
+    // Prolongation, post-smoothing (and the line search on the fine level).
+    correctRow(0);
+    for (int i = 0; i < nz; ++i) {
+        if (i + 1 < nz) correctRow(i + 1);
+        evenElim(i, false);
+    }
+    passB();
+    if (!ls) {
+        for (int i = 0; i < nz; ++i) oddBack(i);
+        return;
+    }
+    for (int i = 0; i < nz; ++i) {
+        oddBack(i);
+        ls->direction(L, i);
+        if (i > 0) ls->curvature(L, i - 1);
+    }
+    ls->curvature(L, nz - 1);
 }
 
 // Zebra line Gauss–Seidel along z: the even θ columns, then the odd ones, each colour's
@@ -594,10 +1005,10 @@ void MultigridSolver::Hierarchy::factorTheta(Level& L, int i) {
     }
     double* m = &L.tm[row];
     double* w = &L.tw[row];
-    m[0] = 1.0 / d[0];
+    m[0] = safeInverse(d[0], d[0]);
     w[0] = up[0] * m[0];
     for (int j = 1; j < nt; ++j) {
-        m[j] = 1.0 / (d[sj(j)] - lo[sj(j)] * w[j - 1]);
+        m[j] = safeInverse(d[sj(j)] - lo[sj(j)] * w[j - 1], d[sj(j)]);
         w[j] = up[sj(j)] * m[j];
     }
     std::copy(lo.begin(), lo.begin() + nt, L.tl.begin() + static_cast<std::ptrdiff_t>(row));
@@ -690,6 +1101,7 @@ void MultigridSolver::Hierarchy::smooth(Level& L, bool pre) {
 
 template <bool Five>
 void MultigridSolver::Hierarchy::residualT(Level& L) {
+    if (L.r.size() != L.size()) L.r.resize(L.size());
     const double* x = L.x.data();
     for (int i = 0; i < L.nz; ++i)
         for (int j = 0; j < L.nt; ++j) {
@@ -708,12 +1120,27 @@ void MultigridSolver::Hierarchy::residual(Level& L) {
 
 void MultigridSolver::Hierarchy::vcycle(std::size_t l) {
     Level& L = levels[l];
+    if (L.fusedZ) {
+        if (L.five) vcycleZT<true>(l, nullptr);
+        else vcycleZT<false>(l, nullptr);
+        return;
+    }
     L.x.setZero();
     if (l + 1 == levels.size()) {
         if (L.direct) {
             if (L.dense.empty()) return;
             for (std::size_t q = 0; q < L.dense.size(); ++q) L.denseRhs[static_cast<Eigen::Index>(q)] = L.f[L.dense[q]];
-            const Eigen::VectorXd y = ldlt.solve(L.denseRhs);
+            // LDLT solve by hand: pivots below 1e-11 of the largest count as zero (Eigen's own
+            // solve only drops exact zeros). A heavily truncated basis can make the coarsest
+            // operator semidefinite; rounding then leaves pivots of order 1e-16 instead of 0,
+            // whose huge components would spoil the correction.
+            Eigen::VectorXd y = ldlt.transpositionsP() * L.denseRhs;
+            ldlt.matrixL().solveInPlace(y);
+            const Eigen::VectorXd& D = ldlt.vectorD();
+            const double tiny = 1e-11 * D.cwiseAbs().maxCoeff();
+            for (Eigen::Index q = 0; q < y.size(); ++q) y[q] = std::abs(D[q]) > tiny ? y[q] / D[q] : 0.0;
+            ldlt.matrixU().solveInPlace(y);
+            y = ldlt.transpositionsP().transpose() * y;
             for (std::size_t q = 0; q < L.dense.size(); ++q) L.x[L.dense[q]] = y[static_cast<Eigen::Index>(q)];
         } else {
             for (int s = 0; s < 10; ++s) smooth(L, s % 2 == 0);  // grid that cannot coarsen
@@ -757,6 +1184,45 @@ MultigridSolver& MultigridSolver::operator=(MultigridSolver&&) noexcept = defaul
 
 int MultigridSolver::levels() const { return h_ ? static_cast<int>(h_->levels.size()) : 0; }
 
+// Search direction of fine row i — the V-cycle correction on the free nodes, projected so that
+// p + d ≥ p_cav — with the largest feasible step and dᵀ(b − Ap).
+void MultigridSolver::Hierarchy::LineSearch::direction(const Level& F, int i) {
+    // Accumulated in locals: the members would be reloaded after every store through dir.
+    const double lo = pLower;
+    const bool bd = bounded;
+    double aMax = alphaMax, nm = num;
+    const double* fx = F.x.data();
+    const double* ff = F.f.data();
+    const char* fr = F.free.data();
+    double* d = dir;
+    for (int k = i * F.nt, kEnd = k + F.nt; k < kEnd; ++k) {
+        double dk = fr[k] ? fx[k] : 0.0;  // 0 on frozen and non-Film nodes
+        if (bd && dk < 0.0) {
+            if (p[k] + dk < lo) dk = lo - p[k];
+            if (dk < 0.0) aMax = std::min(aMax, (p[k] - lo) / -dk);
+        }
+        d[k] = dk;
+        nm += dk * ff[k];
+    }
+    alphaMax = aMax;
+    num = nm;
+}
+
+// dᵀAd over fine row i (the direction of rows i − 1 … i + 1 is known).
+void MultigridSolver::Hierarchy::LineSearch::curvature(const Level& F, int i) {
+    const int nt = F.nt;
+    const double* dm = dir + F.im(i) * nt;
+    const double* d0 = dir + i * nt;
+    const double* dp = dir + F.ip(i) * nt;
+    double sum = 0.0;
+    forColumns(F, 0, 1, [&](int j, int jm, int jp) {
+        if (d0[j] == 0.0) return;
+        const double* c = F.a + 5 * static_cast<std::size_t>(i * nt + j);
+        sum += d0[j] * (c[Stencil<true>::C] * d0[j] + offDiag<true>(c, dm, d0, dp, j, jm, jp));
+    });
+    den += sum;
+}
+
 SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p, double pLower,
                                    const SolverControl& control) {
     const FilmGrid& g = sys.grid();
@@ -770,56 +1236,106 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
     H.extractFine(sys);
     Level& F = H.levels[0];
     const bool bounded = std::isfinite(pLower);
-    const Eigen::VectorXd& b = sys.rhs();
+    const double* __restrict b = sys.rhs().data();
     if (p.size() != n) p = sys.initialGuess(pLower);
     for (int k = 0; k < n; ++k)
         if (!sys.isFilm(k)) p[k] = g.prescribedPressure(k);
         else if (bounded && p[k] < pLower) p[k] = pLower;
+    H.dir.resize(n);
+    // Free boundary of the starting point, for the local relaxation of the first iteration.
+    for (int k = 0; k < n; ++k) F.free[static_cast<std::size_t>(k)] = H.film[static_cast<std::size_t>(k)] && !(bounded && p[k] <= pLower);
+    H.near.resize(static_cast<std::size_t>(n));
+    H.colFree.resize(static_cast<std::size_t>(F.nt));
+    for (int i = 0; i < F.nz; ++i) H.markNear(i);
+    double* __restrict x = p.data();
+    double* __restrict dir = H.dir.data();
+    const double* __restrict invDiag = H.invDiag.data();
+    const char* __restrict film = H.film.data();
+    const int nz = F.nz, nt = F.nt;
 
     // Iteration cap: each iteration is a whole V-cycle, so PSOR's sweep budget is far too many.
     const int maxIt = std::min(control.maxIterations, 500);
     const double pAmb = g.ambientPressure();
     SolveReport rep;
     double first = -1.0;
+    double alpha = 0.0;  // step along dir still to be applied (line search of the last iteration)
     for (;;) {
-        // 1. Projected Gauss–Seidel sweep (nonlinear pre-smoother), red–black ordering: the
-        // updates of one colour are independent (5-point stencil), so they pipeline. Done as a
-        // wavefront — red nodes of row i, then black nodes of row i − 1, whose red neighbours are
-        // all updated by then — the same result as two full passes with half the memory traffic.
-        double* x = p.data();
-        const double* invDiag = H.invDiag.data();
-        auto pgsRow = [&](int i, int colour) {
-            for (int j = (i + colour) % 2; j < F.nt; j += 2) {
-                const int k = i * F.nt + j;
-                if (!H.film[static_cast<std::size_t>(k)]) continue;
-                double v = (b[k] - offDiagonalSum<true>(F, x, i, j)) * invDiag[k];
-                if (bounded && v < pLower) v = pLower;
+        // 1. The step of the previous iteration, p ← max(p_cav, p + α d); 2. one projected
+        // Gauss–Seidel sweep (the nonlinear pre-smoother) in red–black order, and a second one
+        // on the nodes next to the free boundary (near); 3. the defect b − Ap, the convergence
+        // criterion of ReynoldsSystem::residual and the truncation (nodes at the bound are
+        // frozen), and the near flags for the next iteration. Fused into one wavefront over the
+        // rows — at step t: step of row t, red nodes of row t − 1, black of t − 2, near red of
+        // t − 3, near black of t − 4, defect of t − 5, near flags of t − 6: each uses only rows
+        // that are final for it, so the result is that of separate passes, in one pass over
+        // memory. Locals, not captured references: the lambdas store through double pointers,
+        // after which referenced doubles would have to be reloaded.
+        const double lo = pLower, step = alpha;
+        auto stepRow = [&, lo, step, bounded](int i) {
+            for (int k = i * nt, kEnd = k + nt; k < kEnd; ++k) {
+                if (dir[k] == 0.0) continue;
+                double v = x[k] + step * dir[k];
+                if (bounded && v < lo) v = lo;
                 x[k] = v;
             }
         };
-        for (int i = 0; i <= F.nz; ++i) {
-            if (i < F.nz) pgsRow(i, 0);
-            if (i > 0) pgsRow(i - 1, 1);
-        }
-        // 2. Defect b − Ap and the convergence criterion of ReynoldsSystem::residual; the
-        // truncation (3.) of the same pass: nodes at the bound are frozen.
+        const double* __restrict A = F.a;
+        // Projected Gauss–Seidel update of the nodes of one colour in row i (all Film nodes, or
+        // only those flagged in `only`).
+        auto pgsRow = [&, lo, bounded](int i, int colour, const char* only) {
+            const double* xm = x + F.im(i) * nt;
+            double* x0 = x + i * nt;
+            const double* xp = x + F.ip(i) * nt;
+            const char* sel = (only ? only : film) + i * nt;
+            forColumns(F, (i + colour) % 2, 2, [&](int j, int jm, int jp) {
+                if (!sel[j]) return;
+                const int k = i * nt + j;
+                double v = (b[k] - offDiag<true>(A + 5 * static_cast<std::size_t>(k), xm, x0, xp, j, jm, jp)) * invDiag[k];
+                if (bounded && v < lo) v = lo;
+                x0[j] = v;
+            });
+        };
+        // The second red–black sweep runs on the nodes next to the free boundary only (H.near: a
+        // frozen or non-Film node among the 8 neighbours, from the last truncation) — local
+        // relaxation where the coarse-grid correction is weakest (cavitation fronts, mask edges,
+        // open ends).
+        const char* near = H.near.data();
         double rmax = 0.0, scale = 0.0;
-        for (int i = 0; i < F.nz; ++i)
-            for (int j = 0; j < F.nt; ++j) {
-                const int k = i * F.nt + j;
-                const auto sk = static_cast<std::size_t>(k);
-                scale = std::max(scale, std::abs(p[k] - pAmb));
-                if (!H.film[sk]) {
-                    F.f[k] = 0.0;
-                    F.free[sk] = 0;
-                    continue;
+        double* __restrict ff = F.f.data();
+        char* __restrict fr = F.free.data();
+        auto defectRow = [&, lo, bounded, pAmb](int i) {
+            const double* xm = x + F.im(i) * nt;
+            const double* x0 = x + i * nt;
+            const double* xp = x + F.ip(i) * nt;
+            double rm = 0.0, sc = 0.0;
+            forColumns(F, 0, 1, [&](int j, int jm, int jp) {
+                const int k = i * nt + j;
+                sc = std::max(sc, std::abs(x0[j] - pAmb));
+                if (!film[k]) {
+                    ff[k] = 0.0;
+                    fr[k] = 0;
+                    return;
                 }
-                F.f[k] = b[k] - F.a[5 * sk + Stencil<true>::C] * x[k] - offDiagonalSum<true>(F, x, i, j);
-                double rk = -F.f[k] * invDiag[k];
-                if (bounded) rk = std::min(p[k] - pLower, rk);
-                rmax = std::max(rmax, std::abs(rk));
-                F.free[sk] = !(bounded && p[k] <= pLower);
-            }
+                const double* c = A + 5 * static_cast<std::size_t>(k);
+                const double w = b[k] - c[Stencil<true>::C] * x0[j] - offDiag<true>(c, xm, x0, xp, j, jm, jp);
+                ff[k] = w;
+                double rk = -w * invDiag[k];
+                if (bounded) rk = std::min(x0[j] - lo, rk);
+                rm = std::max(rm, std::abs(rk));
+                fr[k] = !(bounded && x0[j] <= lo);
+            });
+            rmax = std::max(rmax, rm);
+            scale = std::max(scale, sc);
+        };
+        for (int t = 0; t < nz + 6; ++t) {
+            if (alpha != 0.0 && t < nz) stepRow(t);
+            if (t >= 1 && t - 1 < nz) pgsRow(t - 1, 0, nullptr);
+            if (t >= 2 && t - 2 < nz) pgsRow(t - 2, 1, nullptr);
+            if (t >= 3 && t - 3 < nz) pgsRow(t - 3, 0, near);
+            if (t >= 4 && t - 4 < nz) pgsRow(t - 4, 1, near);
+            if (t >= 5 && t - 5 < nz) defectRow(t - 5);
+            if (t >= 6) H.markNear(t - 6);
+        }
         rep.residual = rmax == 0.0 ? 0.0 : rmax / std::max(scale, std::numeric_limits<double>::min());
         if (first < 0.0) first = rep.residual;
         if (!std::isfinite(rep.residual) || rep.residual > 1e8 * std::max(first, 1.0))
@@ -828,36 +1344,20 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
                                      std::to_string(rep.residual) + ")");
         if (rep.residual <= control.tolerance) return rep;
         if (rep.iterations == maxIt) break;
-        // 3. The Galerkin operators follow the truncation.
+        // 4. The Galerkin operators follow the truncation.
         H.updateCoarse();
-        // 4. One linear V-cycle on the inactive nodes, projection, exact line search.
-        H.vcycle(0);
-        H.dir.resize(n);
-        double alphaMax = std::numeric_limits<double>::infinity();
-        for (int k = 0; k < n; ++k) {
-            double dk = F.free[static_cast<std::size_t>(k)] ? F.x[k] : 0.0;
-            if (bounded && p[k] + dk < pLower) dk = pLower - p[k];
-            H.dir[k] = dk;
-            if (bounded && dk < 0.0) alphaMax = std::min(alphaMax, (p[k] - pLower) / -dk);
+        // 5. One linear V-cycle on the inactive nodes; its correction, projected, is the search
+        // direction, with the exact line search α = dᵀ(b − Ap)/dᵀAd (fused into the V-cycle's
+        // last pass on z-line levels).
+        Hierarchy::LineSearch ls{x, pLower, bounded, dir};
+        if (F.fusedZ) {
+            H.vcycleZT<true>(0, &ls);
+        } else {
+            H.vcycle(0);
+            for (int i = 0; i < nz; ++i) ls.direction(F, i);
+            for (int i = 0; i < nz; ++i) ls.curvature(F, i);
         }
-        double num = 0.0, den = 0.0;  // dᵀ(b − Ap) and dᵀAd
-        const double* dd = H.dir.data();
-        for (int i = 0; i < F.nz; ++i)
-            for (int j = 0; j < F.nt; ++j) {
-                const int k = i * F.nt + j;
-                const auto sk = static_cast<std::size_t>(k);
-                if (!H.film[sk] || dd[k] == 0.0) continue;
-                num += dd[k] * F.f[k];
-                den += dd[k] * (F.a[5 * sk + Stencil<true>::C] * dd[k] + offDiagonalSum<true>(F, dd, i, j));
-            }
-        if (den > 0.0 && num > 0.0) {
-            const double alpha = std::min(num / den, std::max(alphaMax, 1.0));
-            for (int k = 0; k < n; ++k) {
-                double v = p[k] + alpha * dd[k];
-                if (bounded && H.film[static_cast<std::size_t>(k)] && v < pLower) v = pLower;
-                p[k] = v;
-            }
-        }
+        alpha = ls.den > 0.0 && ls.num > 0.0 ? std::min(ls.num / ls.den, std::max(ls.alphaMax, 1.0)) : 0.0;
         ++rep.iterations;
     }
     throw std::runtime_error("MultigridSolver: not converged after " + std::to_string(maxIt) +

@@ -7,7 +7,8 @@
 // The LCP  p ≥ p_cav, w = Ap − b ≥ 0, (p − p_cav)·w = 0  is the minimisation of the convex
 // energy J(p) = ½pᵀAp − bᵀp over p ≥ p_cav (A SPD on the Film nodes). One iteration:
 //  1. one projected Gauss–Seidel sweep on the fine grid (a descent step; it is what lets nodes
-//     leave or enter the cavitated set);
+//     leave or enter the cavitated set), plus a second one on the nodes next to the free
+//     boundary only (local relaxation at fronts, mask edges and open ends);
 //  2. truncation: nodes at the bound p = p_cav are frozen; on the remaining (inactive) nodes the
 //     linear defect equation A e = b − Ap is solved approximately by ONE linear multigrid
 //     V-cycle whose coarse operators are Galerkin products Pᵀ A P with the prolongation P
@@ -21,10 +22,12 @@
 // periodic wrap in θ; masks, supply nodes and open edges enter only through the truncation.
 // Smoother: line Gauss–Seidel along the strongly coupled direction of each level (zebra
 // tridiagonal solves along z for skirts, Δz ≪ RΔθ; cyclic ones along θ for long bearings;
-// alternating when neither dominates), factorizations cached per line. When the frozen set
-// changes, only the coarse Galerkin rows it reaches are rebuilt. Coarsest grid (≤ 400 nodes):
-// dense LDLT. Unbounded problems (pLower = −∞) use the same loop
-// without projection: a linear multigrid iteration with exact line search.
+// alternating when neither dominates), factorizations cached per line; on z-line levels the
+// smoothing, residual, restriction, prolongation and (fine level) line search are fused into
+// three passes per smoothing step (docs/lube.md §3). When the frozen set changes, only the
+// coarse Galerkin rows it reaches are rebuilt. Coarsest grid (≤ 64 nodes, or up to 400 when it
+// cannot coarsen): dense LDLT. Unbounded problems (pLower = −∞) use the same loop without
+// projection: a linear multigrid iteration with exact line search.
 // Convergence criterion: ReynoldsSystem::residual ≤ tolerance (docs/lube.md §3); iterations =
 // outer (V-cycle) iterations. Cost per iteration is O(N).
 #include <Eigen/Core>

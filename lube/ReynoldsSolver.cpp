@@ -91,8 +91,7 @@ Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coars
         for (int l = L; l >= 1; --l) {
             const FilmGrid& g = gridAt(l);
             const ReynoldsSystem sys(g, states[static_cast<std::size_t>(l)],
-                                     Eigen::VectorXd::Constant(g.size(), lubricant_.referenceDensity()),
-                                     Eigen::VectorXd::Constant(g.size(), lubricant_.referenceViscosity()));
+                                     lubricant_.referenceDensity(), lubricant_.referenceViscosity());
             Level& lev = coarse_[static_cast<std::size_t>(l - 1)];
             // Nested iteration: a coarse answer is only a start, accurate well below the
             // coarse discretisation error at 1e-4.
@@ -133,16 +132,15 @@ ReynoldsResult ReynoldsSolver::solve(const FilmState& film, const Eigen::VectorX
     if (res.pressure.size() != n && !coarse_.empty())
         res.pressure = sequencedStart(film, res.coarseIterations);
 
-    Eigen::VectorXd rho = Eigen::VectorXd::Constant(n, lubricant_.referenceDensity());
-    Eigen::VectorXd eta = Eigen::VectorXd::Constant(n, lubricant_.referenceViscosity());
     if (!lubricant_.pressureDependent()) {
-        ReynoldsSystem sys(grid_, film, rho, eta);
+        ReynoldsSystem sys(grid_, film, lubricant_.referenceDensity(), lubricant_.referenceViscosity());
         const SolveReport rep = solveOnce(sys, res.pressure);
         res.iterations = rep.iterations;
         res.residual = rep.residual;
         res.picardIterations = 1;
     } else {
         // Picard iteration on the pressure-dependent properties.
+        Eigen::VectorXd rho(n), eta(n);
         if (res.pressure.size() != n) res.pressure = Eigen::VectorXd::Constant(n, grid_.ambientPressure());
         double change = std::numeric_limits<double>::infinity();
         for (int it = 1; it <= options_.maxPicardIterations; ++it) {

@@ -70,11 +70,24 @@ public:
     /// Assembles A and b for the nodal density ρ and viscosity η (sizes N, positive).
     ReynoldsSystem(const FilmGrid& grid, const FilmState& film, const Eigen::VectorXd& density,
                    const Eigen::VectorXd& viscosity);
+    /// The same for a constant density and viscosity (positive): the same system as with
+    /// constant vectors, bit for bit, without them.
+    ReynoldsSystem(const FilmGrid& grid, const FilmState& film, double density, double viscosity);
 
     const FilmGrid& grid() const { return *grid_; }
-    const SparseMatrix& matrix() const { return A_; }
+    /// A in compressed columns (symmetric, so column k = row k). Built from the stencil on the
+    /// first call (the multigrid solver works on the stencil and never needs it); not safe to
+    /// call for the first time from two threads at once.
+    const SparseMatrix& matrix() const;
     const Eigen::VectorXd& rhs() const { return b_; }
-    const Eigen::VectorXd& diagonal() const { return diag_; }
+    /// Diagonal of A (built with matrix(), same caveat).
+    const Eigen::VectorXd& diagonal() const;
+    /// A as a 5-point stencil, the storage A is assembled in: 5 entries per node k = (i, j),
+    /// kStencilS … kStencilN, the couplings of row k to (i−1, j), (i, j−1), (i, j), (i, j+1),
+    /// (i+1, j) (θ wrapped on a full circumference). Entries towards non-Film nodes (eliminated
+    /// into b) and beyond open edges are 0; non-Film rows are identities (centre 1).
+    const std::vector<double>& stencil() const { return st_; }
+    static constexpr int kStencilS = 0, kStencilW = 1, kStencilC = 2, kStencilE = 3, kStencilN = 4;
     /// True for the rows subject to the cavitation bound (Film nodes).
     bool isFilm(int k) const { return grid_->kind(k) == NodeKind::Film; }
 
@@ -86,10 +99,16 @@ public:
     Eigen::VectorXd initialGuess(double pLower) const;
 
 private:
+    template <bool Constant>
+    void assemble(const FilmState& film, const double* rho, const double* eta);
+    void buildMatrix() const;
+
     const FilmGrid* grid_;
-    SparseMatrix A_;
+    std::vector<double> st_;     // 5-point stencil, 5 per node
     Eigen::VectorXd b_;
-    Eigen::VectorXd diag_;
+    mutable SparseMatrix A_;     // built on demand from st_
+    mutable Eigen::VectorXd diag_;
+    mutable bool matrixBuilt_ = false;
 };
 
 }  // namespace flexehd::lube

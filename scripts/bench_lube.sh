@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Times PSOR, the active-set and the multigrid solver on a skirt-like film and a journal bearing at grids
-# 64×128 … 512×1024 (axial × circumferential) and writes the table into docs/lube.md between
-# the markers <!-- bench:begin --> and <!-- bench:end -->.
+# Times PSOR (at its automatic ω and at the best ω of a per-problem scan), the active-set and the
+# multigrid solver on a skirt-like film and a journal bearing at grids 64×128 … 512×1024
+# (axial × circumferential) and writes the table into docs/lube.md between the markers
+# <!-- bench:begin --> and <!-- bench:end -->. Takes ~4 minutes at the default 512.
 #   scripts/bench_lube.sh [maxAxial=512] [tolerance=1e-8] [repeats=3]   (times: best of repeats)
 # Uses build/ (FLEXEHD_BUILD_DIR overrides) and builds only the bench_lube target.
 # BENCH_CPU=N pins the benchmark to core N (taskset), recommended on a shared machine.

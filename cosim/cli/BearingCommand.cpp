@@ -163,10 +163,16 @@ void runBearing(const BearingArgs& a) {
 
     spdlog::info("journal bearing R = {} m, L = {} m{}, c = {} m, eps = {}, N = {} rev/s, mu = {} Pa s",
                  R, L, a.infinitelyLong ? " (infinitely long)" : "", c, eps, N, mu);
-    spdlog::info("solving: {} cavitation, {} solver, grid {}x{} (theta x z)", name(model),
-                 model == Model::Jfo ? "jfo gauss-seidel" : name(solverKind), nTheta, nZ);
-    if (model == Model::Jfo && a.solver != "fast")
-        spdlog::warn("--solver is ignored with --cavitation jfo (projected Gauss-Seidel of Ausas et al.)");
+    // JFO: psor = the projected Gauss-Seidel sweeps of Ausas et al.; every other choice (the
+    // default fast included) = the active-set method on sparse LU (there is no JFO multigrid).
+    const bool jfoSweeps = a.solver == "psor";
+    const char* solverName = model != Model::Jfo ? name(solverKind)
+                             : jfoSweeps        ? "jfo-gauss-seidel"
+                                                : "jfo-active-set";
+    spdlog::info("solving: {} cavitation, {} solver, grid {}x{} (theta x z)", name(model), solverName,
+                 nTheta, nZ);
+    if (model == Model::Jfo && solverKind == lube::SolverKind::Multigrid && a.solver != "fast")
+        spdlog::warn("--cavitation jfo has no multigrid method: using the active-set method");
 
     Stopwatch solveTime;
     Eigen::VectorXd p, fraction;
@@ -176,11 +182,12 @@ void runBearing(const BearingArgs& a) {
         lube::JfoOptions opt;
         opt.control.tolerance = a.tolerance;
         opt.omega = a.omega;
+        opt.method = jfoSweeps ? lube::JfoMethod::GaussSeidel : lube::JfoMethod::ActiveSet;
         const lube::JfoSolver jfo(grid, oil, opt);
         lube::JfoResult r = jfo.solve(film);
         p = std::move(r.pressure);
         fraction = std::move(r.fraction);
-        iterations = r.iterations;
+        iterations = r.iterations + r.factorizations;  // sweeps, or LU factorizations
         residual = r.residual;
     } else {
         lube::ReynoldsOptions opt;
@@ -234,7 +241,7 @@ void runBearing(const BearingArgs& a) {
                         {"speed_rev_s", N},
                         {"viscosity_pa_s", mu},
                         {"cavitation", name(model)},
-                        {"solver", model == Model::Jfo ? "jfo" : name(solverKind)},
+                        {"solver", solverName},
                         {"grid", {{"circumferential", nTheta}, {"axial", nZ}}},
                         {"tolerance", a.tolerance}};
         doc["load_n"] = W;
@@ -266,8 +273,8 @@ void runBearing(const BearingArgs& a) {
     } else {
         std::printf("journal bearing: R = %g m, L = %g m (L/D = %g%s), c = %g m, eps = %g, N = %g rev/s, mu = %g Pa s\n",
                     R, L, L / D, a.infinitelyLong ? ", infinitely long" : "", c, eps, N, mu);
-        std::printf("%s cavitation, %s solver, grid %dx%d (theta x z)\n\n", name(model),
-                    model == Model::Jfo ? "jfo" : name(solverKind), nTheta, nZ);
+        std::printf("%s cavitation, %s solver, grid %dx%d (theta x z)\n\n", name(model), solverName,
+                    nTheta, nZ);
         auto row = [](const char* what, double v, const char* unit) {
             std::printf("  %-34s %14.6g  %s\n", what, v, unit);
         };
@@ -312,8 +319,8 @@ void addBearingCommand(CLI::App& app) {
                     "(mass-conserving Elrod-Adams)")
         ->capture_default_str();
     cmd->add_option("--solver", a->solver,
-                    "psor (baseline), active-set (Cholesky), multigrid or fast (= multigrid); "
-                    "ignored for jfo")
+                    "psor (baseline), active-set (Cholesky), multigrid or fast (= multigrid); with "
+                    "jfo: psor = Gauss-Seidel sweeps, otherwise the active-set method (sparse LU)")
         ->capture_default_str();
     cmd->add_option("--grid", a->grid, "Nodes NTHETAxNZ, circumferential x axial (even NTHETA for multigrid)")
         ->capture_default_str();

@@ -90,20 +90,21 @@ TEST(CliBearing, ShortBearingOcvirk) {
     EXPECT_NEAR(num(d, "attitude_deg"), std::atan(kPi * std::sqrt(1 - eps * eps) / (4 * eps)) * 180 / kPi, 0.2);
 }
 
-// Raimondi & Boyd (ASLE Trans. 1 (1958) 159), full 360° bearing, L/D = 1, ε = 0.6 (h0/c = 0.4),
-// Reynolds condition, p = 0 at the maximum film: S = 0.121, φ = 50.58°, (R/c)f = 3.22,
-// Q/(RcNL) = 4.33, Qs/Q = 0.680, P/p_max = 0.415 (table as reproduced in Shigley's Mechanical
-// Engineering Design; quoted from memory by two developers independently and not re-checked
-// against the printed table in the session that added it). Chart values have 3 digits; the side flow depends on where the leakage
-// is measured (here half a cell inside the ends), hence 3% on Qs/Q.
+// Raimondi & Boyd (ASLE Trans. 1 (1958) 159), full 360° bearing, L/D = 1, h0/c = 0.4 (ε = 0.6),
+// Reynolds condition, p = 0 at the maximum film. Verified against an independent reproduction
+// of the L/D = 1 table (MathWorks Answers 707318, "design of journal bearing": arrays
+// S_1 = [0.0188 0.0446 0.121 0.264 0.631 1.33], hoc_1 = [0.1 0.2 0.4 0.6 0.8 0.9],
+// Rfc_1 = [1.05 1.70 3.2 5.79 12.8 26.4]): S = 0.121, (R/c)f = 3.2 (given to two digits there).
+// Only these two are asserted. The rest of the row as recalled from Shigley's Mechanical
+// Engineering Design (φ = 50.58°, Q/(RcNL) = 4.33, Qs/Q = 0.680, P/p_max = 0.415) could not be
+// checked against a published source in this session and is not asserted; the command gives
+// 50.53°, 4.329, 0.668 and 0.4145 at 256×65. S and P/p_max are checked against their definitions
+// in SommerfeldNumberDefinition, friction and flow against the long-bearing closed forms in
+// LongFullSommerfeldLoadFrictionAndFlow.
 TEST(CliBearing, RaimondiBoydTableRow) {
     const auto d = bearing("--eccentricity 0.6 --length-over-diameter 1 --grid 256x65");
-    EXPECT_NEAR(num(d, "sommerfeld"), 0.121, 0.01 * 0.121);
-    EXPECT_NEAR(num(d, "attitude_deg"), 50.58, 0.5);
-    EXPECT_NEAR(num(d, "friction_variable"), 3.22, 0.01 * 3.22);
-    EXPECT_NEAR(num(d, "flow_variable"), 4.33, 0.01 * 4.33);
-    EXPECT_NEAR(num(d, "side_flow_ratio"), 0.680, 0.03 * 0.680);
-    EXPECT_NEAR(num(d, "max_pressure_ratio"), 0.415, 0.01 * 0.415);
+    EXPECT_NEAR(num(d, "sommerfeld"), 0.121, 0.01 * 0.121);  // table value to 3 digits: 1%
+    EXPECT_NEAR(num(d, "friction_variable"), 3.2, 0.05);    // 3.2 as printed: ±0.05
 }
 
 // The three complementarity solvers solve the same discrete problem; JFO (mass-conserving) agrees
@@ -119,9 +120,15 @@ TEST(CliBearing, SolversAgree) {
         EXPECT_NEAR(num(d, "friction_variable"), num(ref, "friction_variable"), 1e-7 * num(ref, "friction_variable")) << s;
         EXPECT_EQ(d.at("input").at("solver"), std::string(s) == "fast" ? "multigrid" : s);
     }
-    const auto jfo = bearing(base + " --cavitation jfo");
+    const auto jfo = bearing(base + " --cavitation jfo");  // active-set method (sparse LU)
+    EXPECT_EQ(jfo.at("input").at("solver"), "jfo-active-set");
     EXPECT_NEAR(num(jfo, "load_n"), W, 1e-5 * W);
     EXPECT_NEAR(num(jfo, "flow_variable"), num(ref, "flow_variable"), 1e-5 * num(ref, "flow_variable"));
+    const auto sweeps = bearing(base + " --cavitation jfo --solver psor");  // Gauss-Seidel sweeps
+    EXPECT_EQ(sweeps.at("input").at("solver"), "jfo-gauss-seidel");
+    EXPECT_NEAR(num(sweeps, "load_n"), num(jfo, "load_n"), 1e-7 * W);
+    EXPECT_NEAR(num(sweeps, "friction_variable"), num(jfo, "friction_variable"), 1e-7 * num(jfo, "friction_variable"));
+    EXPECT_LT(jfo.at("iterations").get<int>(), sweeps.at("iterations").get<int>());
     // Couette shear scales with the film fraction in the cavitated zone: less friction.
     EXPECT_LT(num(jfo, "friction_variable"), num(ref, "friction_variable"));
 }

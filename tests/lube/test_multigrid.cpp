@@ -89,6 +89,19 @@ TEST(Multigrid, SkirtEqualsActiveSet) {
     EXPECT_LT(maxDiff(full, fullAs), 1e-9) << "unconstrained (linear) problem";
 }
 
+// Skirt on a full circumference with an odd number of columns: θ cannot be halved (z-only
+// coarsening, the general Galerkin product), the zebra colouring has two adjacent even columns
+// across the wrap (the fused z-line cycle then corrects every column), and the coarser levels
+// turn to θ- or alternating lines as z coarsens. Same answer as the active set.
+TEST(Multigrid, SkirtOddPeriodicColumns) {
+    const Skirt s = skirt(40, 95);
+    const ReynoldsResult mg = solveWith(s.grid, s.film, SolverKind::Multigrid, 1e-11);
+    const ReynoldsResult as = solveWith(s.grid, s.film, SolverKind::ActiveSet, 1e-11);
+    EXPECT_LT(maxDiff(mg, as), 1e-9);
+    EXPECT_GT((mg.pressure.array() <= 0.0).count(), s.grid.size() / 10) << "must be cavitated";
+    EXPECT_LT(mg.iterations, 20);
+}
+
 // Open arc (no periodic wrap, odd node count), supply hole at a prescribed pressure, non-uniform
 // axial spacing; cavitation at a negative p_cav.
 TEST(Multigrid, OpenArcWithSupplyHole) {
