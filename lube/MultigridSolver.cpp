@@ -24,6 +24,13 @@ constexpr std::size_t sj(int j) { return static_cast<std::size_t>(j); }
 
 enum class Lines { Z, Theta, Both };
 
+// Per-node work vector on LargeArrayAllocator storage (huge pages for big levels), with the
+// Eigen-like members used here. resize() leaves new doubles uninitialised (assign() zeroes).
+struct Vec : LargeVector<double> {
+    int size() const { return static_cast<int>(LargeVector<double>::size()); }
+    void setZero() { std::fill(begin(), end(), 0.0); }
+};
+
 // Stencil layouts: coarse levels store 9 entries per node in sidx order; the fine level, whose
 // operator is the 5-point finite-volume one, stores only (S, W, C, E, N) = sidx entries
 // 1, 3, 4, 5, 7 — 40 instead of 72 bytes per node, which matters because the fine-level passes
@@ -43,15 +50,15 @@ struct Level {
     // Stencil entries per node: 9 (coarse levels, stored in `own`), or 5 on the fine level
     // (Stencil), which is ReynoldsSystem::stencil() itself (same layout, not copied).
     const double* a = nullptr;
-    std::vector<double> own;
+    Vec own;
     std::vector<char> free;    // unknown of the correction problem (else e = 0)
-    Eigen::VectorXd x, f, r;   // correction, right-hand side, residual (r: unfused levels only)
-    Eigen::VectorXd q;         // zebra line-solve work array
+    Vec x, f, r;               // correction, right-hand side, residual (r: unfused levels only)
+    Vec q;                     // zebra line-solve work array
     // Line factorizations, kept while the stencil and truncation of the line are unchanged:
     // z-lines (per node: Thomas multipliers zm = 1/pivot, zw = upper·zm; valid per column),
     // θ-lines (per node: tm, tw, lower coefficient tl, Sherman–Morrison vector tu; per row:
     // corner terms and denominator; valid per row).
-    std::vector<double> zm, zw, tm, tw, tl, tu;
+    Vec zm, zw, tm, tw, tl, tu;
     std::vector<double> tAlpha, tGamma, tDen;
     std::vector<char> colOk, rowOk;
     // Fused z-line levels: columns with at least one free node (the others are skipped by the
@@ -195,8 +202,8 @@ struct MultigridSolver::Hierarchy {
     std::vector<double> lo, d, up, rhs;  // line-solve work arrays
     std::vector<int> staleDown, staleUp;  // factorZT work lists
     Eigen::LDLT<Eigen::MatrixXd> ldlt;  // coarsest level
-    Eigen::VectorXd dir;                // line-search direction
-    Eigen::VectorXd invDiag;            // 1/A_kk on the fine Film nodes (0 elsewhere)
+    Vec dir;                            // line-search direction
+    Vec invDiag;                        // 1/A_kk on the fine Film nodes (0 elsewhere)
     std::vector<char> near;             // fine Film nodes next to a frozen or non-Film node
     std::vector<char> colFree;          // markNear work array (one fine row)
     void markNear(int i);
@@ -330,14 +337,14 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
     for (Level& L : levels) {
         const auto n = static_cast<std::size_t>(L.size());
         if (!L.five) {
-            L.own.assign(9 * n, 0.0);
+            L.own.resize(9 * n);  // filled by the first (full) Galerkin product
             L.a = L.own.data();
         }
         L.free.assign(n, 0);
-        L.x = Eigen::VectorXd::Zero(L.size());
-        L.f = Eigen::VectorXd::Zero(L.size());
+        L.x.assign(n, 0.0);
+        L.f.resize(n);  // zeroed before each restriction (coarse), or the defect (fine)
         L.r.resize(0);  // allocated by residualT (levels not smoothed by the fused z-line cycle)
-        L.q = Eigen::VectorXd::Zero(L.size());
+        L.q.resize(n);  // written before it is read (line eliminations)
         for (auto* v : {&L.zm, &L.zw, &L.tm, &L.tw, &L.tl, &L.tu}) v->clear();  // on first use
         for (auto* v : {&L.tAlpha, &L.tGamma, &L.tDen}) v->assign(static_cast<std::size_t>(L.nz), 0.0);
         L.colOk.assign(static_cast<std::size_t>(L.nt), 0);
@@ -692,8 +699,9 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
     using St = Stencil<Five>;
     const int nt = L.nt, nz = L.nz;
     if (L.zm.empty()) {
-        L.zm.assign(static_cast<std::size_t>(L.size()), 0.0);
-        L.zw.assign(static_cast<std::size_t>(L.size()), 0.0);
+        // Written below: on first use every column is stale from row 0 (invalidateLines).
+        L.zm.resize(static_cast<std::size_t>(L.size()));
+        L.zw.resize(static_cast<std::size_t>(L.size()));
     }
     // Levels smoothed by the fused zebra cycle (vcycleZ, L.lines == Z) eliminate the odd columns
     // from the bottom up (reverse Thomas: x_i = R'_i − w'_i x_{i−1}), the others top down.

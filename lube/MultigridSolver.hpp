@@ -30,6 +30,8 @@
 // projection: a linear multigrid iteration with exact line search.
 // Convergence criterion: ReynoldsSystem::residual ≤ tolerance (docs/lube.md §3); iterations =
 // outer (V-cycle) iterations. Cost per iteration is O(N).
+// Work vectors use LargeArrayAllocator (huge pages for large levels, no zero fill: every array
+// is written before it is read).
 #include <Eigen/Core>
 #include <memory>
 #include <vector>

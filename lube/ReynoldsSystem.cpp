@@ -2,14 +2,43 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace flexehd::lube {
 
 namespace {
 constexpr std::size_t sj(int j) { return static_cast<std::size_t>(j); }
 }  // namespace
+
+namespace detail {
+
+namespace {
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+constexpr std::size_t kLargeMin = std::size_t{1} << 20;
+}  // namespace
+
+void* allocateLarge(std::size_t bytes) {
+    if (bytes < kLargeMin) return ::operator new(bytes);
+    const std::size_t padded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+    void* p = std::aligned_alloc(kHugePage, padded);
+    if (!p) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    madvise(p, padded, MADV_HUGEPAGE);  // advice only: failure leaves ordinary pages
+#endif
+    return p;
+}
+
+void deallocateLarge(void* p, std::size_t bytes) noexcept {
+    if (bytes < kLargeMin) ::operator delete(p);
+    else std::free(p);
+}
+
+}  // namespace detail
 
 void validateFilmState(const FilmGrid& grid, const FilmState& film) {
     const int n = grid.size();
@@ -82,7 +111,7 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     const double* h = film.h.data();
     const bool squeeze = film.dhdt.size() != 0;
     const double* dhdt = squeeze ? film.dhdt.data() : nullptr;
-    st_.assign(static_cast<std::size_t>(5) * static_cast<std::size_t>(n), 0.0);
+    st_.resize(static_cast<std::size_t>(5) * static_cast<std::size_t>(n));  // every entry written below
     b_.resize(n);
     double* st = st_.data();
     double* bv = b_.data();
@@ -129,6 +158,7 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
             const int k = row + j;
             double* c = st + 5 * static_cast<std::size_t>(k);
             if (kind[k] != Film) {
+                c[kStencilS] = c[kStencilW] = c[kStencilE] = c[kStencilN] = 0.0;
                 c[kStencilC] = 1.0;
                 bv[k] = pp[k];
                 continue;
@@ -169,10 +199,10 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
             }
             if (squeeze) bk -= colL[sj(j)] * Lt * rhoAt(k) * dhdt[k];  // squeeze: ∂(ρh)/∂t V_k (area(k))
             bv[k] = bk;
-            if (upFilm) c[kStencilS] = -cu;
-            if (downFilm) c[kStencilN] = -cd;
-            if (leftFilm) c[kStencilW] = -cl;
-            if (rightFilm) c[kStencilE] = -cr;
+            c[kStencilS] = upFilm ? -cu : 0.0;
+            c[kStencilN] = downFilm ? -cd : 0.0;
+            c[kStencilW] = leftFilm ? -cl : 0.0;
+            c[kStencilE] = rightFilm ? -cr : 0.0;
             if (!(c[kStencilC] > 0.0))
                 throw std::invalid_argument("ReynoldsSystem: film node " + std::to_string(k) +
                                             " has no flow path (isolated by Void nodes?)");

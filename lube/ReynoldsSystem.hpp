@@ -18,7 +18,10 @@
 //   residual = max_k |r_k| / max_k |p_k − p_ambient|.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cstddef>
 #include <limits>
+#include <new>
+#include <utility>
 #include <vector>
 
 #include "lube/FilmGrid.hpp"
@@ -27,6 +30,41 @@
 namespace flexehd::lube {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+namespace detail {
+/// Storage of LargeArrayAllocator: blocks of at least 1 MiB are 2 MiB aligned, padded to whole
+/// 2 MiB pages and advised for transparent huge pages (Linux madvise(MADV_HUGEPAGE); a no-op
+/// where THP is off or unsupported); smaller blocks come from operator new.
+void* allocateLarge(std::size_t bytes);
+void deallocateLarge(void* p, std::size_t bytes) noexcept;
+}  // namespace detail
+
+/// Allocator for the per-node arrays of the solvers (stencils, multigrid work vectors). A cold
+/// solve touches ~100 bytes of fresh memory per node; with 4 KiB pages every page costs a page
+/// fault, which on a virtual machine can cost as much as the arithmetic of the whole solve
+/// (docs/lube.md §7), with 2 MiB pages 512× fewer. Elements are default-initialised: resize()
+/// does not zero doubles (assign() does) — fill them before use.
+template <class T>
+struct LargeArrayAllocator {
+    using value_type = T;
+    LargeArrayAllocator() = default;
+    template <class U>
+    LargeArrayAllocator(const LargeArrayAllocator<U>&) noexcept {}
+    T* allocate(std::size_t n) { return static_cast<T*>(detail::allocateLarge(n * sizeof(T))); }
+    void deallocate(T* p, std::size_t n) noexcept { detail::deallocateLarge(p, n * sizeof(T)); }
+    template <class U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;  // default-initialisation: no zero fill
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+    template <class U>
+    bool operator==(const LargeArrayAllocator<U>&) const noexcept { return true; }
+};
+template <class T>
+using LargeVector = std::vector<T, LargeArrayAllocator<T>>;
 
 /// Visits every face of the node-centred control volumes once: visit(a, b, axial, L, d) with b
 /// the neighbour of a in +z (axial == true) or +θ, L the face length (m), d the distance (m).
@@ -86,7 +124,7 @@ public:
     /// kStencilS … kStencilN, the couplings of row k to (i−1, j), (i, j−1), (i, j), (i, j+1),
     /// (i+1, j) (θ wrapped on a full circumference). Entries towards non-Film nodes (eliminated
     /// into b) and beyond open edges are 0; non-Film rows are identities (centre 1).
-    const std::vector<double>& stencil() const { return st_; }
+    const LargeVector<double>& stencil() const { return st_; }
     static constexpr int kStencilS = 0, kStencilW = 1, kStencilC = 2, kStencilE = 3, kStencilN = 4;
     /// True for the rows subject to the cavitation bound (Film nodes).
     bool isFilm(int k) const { return grid_->kind(k) == NodeKind::Film; }
@@ -104,7 +142,7 @@ private:
     void buildMatrix() const;
 
     const FilmGrid* grid_;
-    std::vector<double> st_;     // 5-point stencil, 5 per node
+    LargeVector<double> st_;     // 5-point stencil, 5 per node
     Eigen::VectorXd b_;
     mutable SparseMatrix A_;     // built on demand from st_
     mutable Eigen::VectorXd diag_;

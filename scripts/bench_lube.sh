@@ -26,6 +26,8 @@ trap 'rm -f "$table"' EXIT
        "$where, load average $(cut -d' ' -f1 /proc/loadavg) at start: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')."
   echo
   "${pin[@]}" "$build/tests/lube/bench_lube" "${1:-512}" "${2:-1e-8}" "${3:-3}"
+  echo
+  echo "Load average at the end: $(cut -d' ' -f1-3 /proc/loadavg | sed 's/ /, /g') (1, 5, 15 min)."
 } > "$table"
 doc="$root/docs/lube.md"
 python3 - "$doc" "$table" <<'PY'

@@ -3,7 +3,8 @@
 // Not a test: prints a Markdown table (scripts/bench_lube.sh writes it into docs/).
 //   bench_lube [maxAxial=512] [tolerance=1e-8] [repeats=1] [multigrid|omega]
 // Each time is the best of `repeats` cold solves (a fresh ReynoldsSolver each), which filters
-// out the noise of a shared machine. PSOR runs at its automatic ω and at the best ω of a scan
+// out the noise of a shared machine; the full table also gives the best thread CPU times (not
+// inflated while other processes hold the core) and their ratio. PSOR runs at its automatic ω and at the best ω of a scan
 // (see the full table below). With a fourth argument `multigrid` only the multigrid solver is
 // timed (short table, with CPU time and a solver reused across cold solves), for profiling and
 // before/after comparisons; `omega` scans PSOR's ω at the grid maxAxial × 2·maxAxial.
@@ -156,12 +157,14 @@ int main(int argc, char** argv) {
     std::printf("| problem | grid (axial×circ.) | nodes | PSOR ω auto → tuned | PSOR sweeps auto / tuned | "
                 "PSOR s auto / tuned | active-set it. (coarse) | active-set s | multigrid it. (coarse) | "
                 "multigrid s | multigrid µs/node | speed-up vs tuned PSOR (vs auto) | "
+                "CPU s tuned PSOR / multigrid, speed-up | "
                 "max |Δp|/p_max PSOR | max |Δp|/p_max multigrid |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::string name : {"skirt", "journal"}) {
         for (int nz = 64; nz <= maxAxial; nz *= 2) {
             const int nt = 2 * nz;
-            // One timed cold solve (a fresh ReynoldsSolver).
+            // One timed cold solve (a fresh ReynoldsSolver); its thread CPU time goes to lastCpu.
+            double lastCpu = 0.0;
             auto run = [&](SolverKind kind, double omega, ReynoldsResult& out) {
                 Problem pb = name == "skirt" ? skirt(nz, nt) : journal(nz, nt);
                 ReynoldsOptions opt;
@@ -170,19 +173,26 @@ int main(int argc, char** argv) {
                 opt.control.tolerance = tol;
                 opt.control.maxIterations = 1000000;
                 ReynoldsSolver rs(pb.grid, Lubricant(0.01), opt);
+                const double c0 = cpuSeconds();
                 const auto t0 = std::chrono::steady_clock::now();
                 out = rs.solve(pb.film);
-                return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                lastCpu = cpuSeconds() - c0;
+                return t;
             };
-            auto best = [&](SolverKind kind, double omega, ReynoldsResult& out, double first) {
+            // Best wall time of `repeats` solves (the first may be given); best CPU time in cpu.
+            auto best = [&](SolverKind kind, double omega, ReynoldsResult& out, double first, double& cpu) {
                 double t = first;
-                for (int rep = first < 1e300 ? 1 : 0; rep < repeats; ++rep) t = std::min(t, run(kind, omega, out));
+                for (int rep = first < 1e300 ? 1 : 0; rep < repeats; ++rep) {
+                    t = std::min(t, run(kind, omega, out));
+                    cpu = std::min(cpu, lastCpu);
+                }
                 return t;
             };
             // PSOR: ω scan (one solve each), then best of `repeats` at the automatic and best ω.
             const Problem pb0 = name == "skirt" ? skirt(nz, nt) : journal(nz, nt);
             const double wAuto = PsorSolver::automaticOmega(pb0.grid), s0 = (2.0 - wAuto) / wAuto;
-            double wBest = wAuto, tAuto = 1e300, tBest = 1e300;
+            double wBest = wAuto, tAuto = 1e300, tBest = 1e300, cAuto = 1e300, cBest = 1e300;
             int sweepsAuto = 0, sweepsBest = 1 << 30;
             ReynoldsResult psor, psorAuto;
             for (double f : {0.85, 1.0, 1.25, 1.5, 1.8, 2.2}) {
@@ -192,28 +202,36 @@ int main(int argc, char** argv) {
                 if (f == 1.0) {
                     sweepsAuto = r.iterations;
                     tAuto = t;
+                    cAuto = lastCpu;
                     psorAuto = r;
                 }
                 if (r.iterations < sweepsBest) {
                     sweepsBest = r.iterations;
                     wBest = w;
                     tBest = t;
+                    cBest = lastCpu;
                     psor = r;
                 }
             }
-            tAuto = best(SolverKind::Psor, wAuto, psorAuto, tAuto);
-            tBest = wBest == wAuto ? tAuto : best(SolverKind::Psor, wBest, psor, tBest);
+            tAuto = best(SolverKind::Psor, wAuto, psorAuto, tAuto, cAuto);
+            if (wBest == wAuto) {
+                tBest = tAuto;
+                cBest = cAuto;
+            } else {
+                tBest = best(SolverKind::Psor, wBest, psor, tBest, cBest);
+            }
             ReynoldsResult as, mg;
-            const double tAs = best(SolverKind::ActiveSet, 0.0, as, 1e300);
-            const double tMg = best(SolverKind::Multigrid, 0.0, mg, 1e300);
+            double cAs = 1e300, cMg = 1e300;
+            const double tAs = best(SolverKind::ActiveSet, 0.0, as, 1e300, cAs);
+            const double tMg = best(SolverKind::Multigrid, 0.0, mg, 1e300, cMg);
             // Errors against the active-set answer (exact to round-off).
             const double pmax = as.pressure.maxCoeff();
             auto err = [&](const ReynoldsResult& r) { return (r.pressure - as.pressure).cwiseAbs().maxCoeff() / pmax; };
             std::printf("| %s | %d×%d | %d | %.4f → %.4f | %d / %d | %.3f / %.3f | %d (%d) | %.3f | %d (%d) | "
-                        "%.4f | %.2f | %.0f (%.0f) | %.1e | %.1e |\n",
+                        "%.4f | %.2f | %.0f (%.0f) | %.3f / %.4f, %.0f | %.1e | %.1e |\n",
                         name.c_str(), nz, nt, nz * nt, wAuto, wBest, sweepsAuto, sweepsBest, tAuto, tBest,
                         as.iterations, as.coarseIterations, tAs, mg.iterations, mg.coarseIterations, tMg,
-                        1e6 * tMg / (nz * nt), tBest / tMg, tAuto / tMg, err(psor), err(mg));
+                        1e6 * tMg / (nz * nt), tBest / tMg, tAuto / tMg, cBest, cMg, cBest / cMg, err(psor), err(mg));
             std::fflush(stdout);
         }
     }

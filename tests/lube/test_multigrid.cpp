@@ -173,3 +173,39 @@ TEST(Multigrid, NotConvergedThrows) {
             << e.what();
     }
 }
+
+// The ReynoldsSystem stencil lives in LargeArrayAllocator storage, which does not zero new
+// memory, so assembly must write every entry: on a masked skirt grid large enough for the
+// huge-page path (5 doubles × 128×256 nodes ≥ 1 MiB), built right after a block of the same
+// size was filled with garbage and freed (the allocator may hand it out again), every stencil
+// entry must equal the compressed-column matrix (couplings to non-Film nodes 0, non-Film rows
+// identities) and be finite.
+TEST(Multigrid, StencilFullyWrittenWithoutZeroFill) {
+    const Skirt s = skirt(128, 256);
+    const int n = s.grid.size(), nt = s.grid.nTheta();
+    {
+        LargeVector<double> junk(5 * static_cast<std::size_t>(n));
+        for (double& v : junk) v = std::nan("");
+    }
+    const ReynoldsSystem sys(s.grid, s.film, 850.0, 0.01);
+    const auto& st = sys.stencil();
+    ASSERT_EQ(st.size(), 5 * static_cast<std::size_t>(n));
+    const SparseMatrix& A = sys.matrix();
+    int voidRows = 0;
+    for (int k = 0; k < n; ++k) {
+        const int i = k / nt, j = k % nt;
+        const int nb[5] = {i > 0 ? k - nt : -1, i * nt + (j + nt - 1) % nt, k, i * nt + (j + 1) % nt,
+                           i + 1 < s.grid.nAxial() ? k + nt : -1};
+        for (int e = 0; e < 5; ++e) {
+            const double v = st[5 * static_cast<std::size_t>(k) + static_cast<std::size_t>(e)];
+            ASSERT_TRUE(std::isfinite(v)) << "node " << k << " entry " << e;
+            const double ref = nb[e] < 0 ? 0.0 : A.coeff(k, nb[e]);
+            ASSERT_EQ(v, ref) << "node " << k << " entry " << e;
+        }
+        if (!sys.isFilm(k)) {
+            ++voidRows;
+            EXPECT_EQ(st[5 * static_cast<std::size_t>(k) + ReynoldsSystem::kStencilC], 1.0);
+        }
+    }
+    EXPECT_GT(voidRows, n / 4);  // the pin-boss masks are in the test
+}
