@@ -14,11 +14,13 @@ struct CycleMetrics {
     double frictionEnergy = 0.0;      ///< J, ∫ friction power dt (trapezoidal over the steps)
     double frictionPowerMean = 0.0;   ///< W, frictionEnergy / duration
     double fmep = 0.0;                ///< Pa, frictionEnergy / displaced volume (skirt's FMEP share)
-    double slapEnergyMax = 0.0;       ///< J, peak kinetic energy of the secondary motion
-    double slapEnergyDeg = 0.0;       ///< °, where it peaks
+    /// J, peak kinetic energy of the secondary motion, PistonDynamics::kineticEnergy:
+    /// ½ (m_p + m_pin) ė² + m_p z_g ė β̇ + ½ [I_g + m_p (x_g² + z_g²)] β̇² (docs/dynamics.md §2)
+    double slapEnergyMax = 0.0;
+    double slapEnergyDeg = 0.0;       ///< °, crank angle (StepRecord::crankDeg, 0–720) where it peaks
     double lateralMin = 0.0, lateralMax = 0.0;  ///< m
     double tiltMin = 0.0, tiltMax = 0.0;        ///< rad
-    double minFilm = 0.0, minFilmDeg = 0.0;     ///< m, °
+    double minFilm = 0.0, minFilmDeg = 0.0;     ///< m; ° (crank angle 0–720)
     double maxPressure = 0.0;         ///< Pa, gauge
     double contactForceMax = 0.0;     ///< N, largest |lateral asperity force|
     double sideForceMax = 0.0;        ///< N, largest |rod side force|

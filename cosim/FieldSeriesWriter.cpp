@@ -149,6 +149,7 @@ void writeFilm(const std::string& path, const FilmField& film, double time) {
         writer->SetDataModeToAppended();
         writer->EncodeAppendedDataOff();  // raw binary
         writer->SetHeaderTypeToUInt64();
+        writer->SetCompressorTypeToLZ4();  // ≈ 10× faster than the default zlib
         if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + path + "'");
     });
 }
@@ -162,7 +163,7 @@ void writeBody(const std::string& path, const BodyField& b, double time) {
         {"displacement", Eigen::Map<const Eigen::MatrixXd>(b.displacement.data(), 3, mesh.numNodes())}};
     if (b.elastic.size() != 0)
         fields.push_back({"elastic_displacement", Eigen::Map<const Eigen::MatrixXd>(b.elastic.data(), 3, mesh.numNodes())});
-    writeVtu(path, placed, fields, {{"TimeValue", time}});
+    writeVtu(path, placed, fields, {{"TimeValue", time}}, VtuCompression::LZ4);
 }
 
 }  // namespace

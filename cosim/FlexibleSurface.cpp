@@ -52,7 +52,10 @@ FlexibleSurface::FlexibleSurface(modal::ReducedBody body, Side side, const std::
     if (side_ == Side::Piston) {
         LoadMapping load(body_.mesh, surface, grid);
         DeformationMapping def(body_.mesh, surface, grid);
-        fixed_ = std::make_unique<ModalMapping>(body_, load, def);
+        std::vector<int> film;  // the nodes that carry film: the modal products skip the Void ones
+        for (int k = 0; k < grid.size(); ++k)
+            if (grid.kind(k) != lube::NodeKind::Void) film.push_back(k);
+        fixed_ = std::make_unique<ModalMapping>(body_, load, def, std::move(film));
         // Rows summing the mapped nodal forces and their moments about the origin: 6 × grid.
         const Eigen::SparseMatrix<double>& A = load.matrix();  // 3·nodes × grid, column-major
         resultantRows_ = Eigen::MatrixXd::Zero(6, grid.size());
@@ -72,18 +75,31 @@ FlexibleSurface::FlexibleSurface(modal::ReducedBody body, Side side, const std::
         const double h = grid.length() / std::max(1, grid.nAxial() - 1);
         const int rows = std::max(3, int(std::ceil((zMax - zMin) / h)) + 1);
         moving_ = std::make_unique<MovingGridMapping>(body_.mesh, surface, grid, zMin, zMax, rows);
-        moving_->setModes(body_.shapes);
+        std::vector<int> columns;  // θ columns holding a node that carries film
+        for (int j = 0; j < grid.nTheta(); ++j)
+            for (int i = 0; i < grid.nAxial(); ++i)
+                if (grid.kind(grid.index(i, j)) != lube::NodeKind::Void) {
+                    columns.push_back(j);
+                    break;
+                }
+        moving_->setModes(body_.shapes, columns);
+        for (int j : columns)
+            for (int i = 0; i < grid.nAxial(); ++i)
+                if (grid.kind(grid.index(i, j)) == lube::NodeKind::Void) voids_.push_back(grid.index(i, j));
     }
 }
 
-void FlexibleSurface::respond(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& q) const {
-    if (fixed_) {
-        Eigen::VectorXd f;
+void FlexibleSurface::modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& f) const {
+    if (fixed_)
         fixed_->modalForce(p, f);
-        q.noalias() = compliance_ * f;
-    } else {
-        q.noalias() = compliance_ * moving_->modalForce(p, offset);
-    }
+    else
+        moving_->modalForce(p, offset, f);
+}
+
+void FlexibleSurface::respond(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& q) const {
+    Eigen::VectorXd f;
+    modalForce(p, offset, f);
+    quasiStatic(f, q);
 }
 
 Eigen::Matrix<double, 6, 1> FlexibleSurface::resultant(const Eigen::VectorXd& p, double offset,
@@ -111,7 +127,8 @@ void FlexibleSurface::filmChange(const Eigen::VectorXd& q, double offset, Eigen:
         fixed_->radialDisplacement(q, dh);
         dh = -dh;  // outward skirt displacement closes the gap
     } else {
-        dh = moving_->modalRadialDisplacement(q, offset);  // outward bore displacement opens it
+        moving_->modalRadialDisplacement(q, offset, dh);  // outward bore displacement opens it
+        for (int k : voids_) dh[k] = 0.0;  // Void nodes of a film column: no film, no elastic Δh
     }
 }
 

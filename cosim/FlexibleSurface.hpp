@@ -8,7 +8,9 @@
 // C = N (Nᵀ K_r N)⁻¹ Nᵀ the compliance with the held interfaces' reference nodes fixed
 // (ModalSuperposition::quasiStatic, precomputed column by column once), and σ = −1 for the piston
 // (outward skirt displacement closes the gap), +1 for the liner (outward bore displacement opens it).
-// Every call costs O(grid × modes).
+// The products run over the grid nodes that carry film only (the non-Void nodes; for the liner the
+// θ columns holding one): Void nodes get no load (ambient gauge pressure) and no elastic Δh.
+// Every call costs O(film nodes × modes).
 
 #include "cosim/ModalMapping.hpp"
 #include "cosim/MovingGridMapping.hpp"
@@ -33,9 +35,15 @@ public:
                     const lube::FilmGrid& grid, double zMin = 0.0, double zMax = 0.0);
 
     int modes() const { return int(compliance_.rows()); }
-    /// Quasi-static modal coordinates for the grid pressure p (Pa, gauge) at the axial offset.
+    /// Quasi-static modal coordinates for the grid pressure p (Pa, gauge) at the axial offset:
+    /// quasiStatic(modalForce(p)).
     void respond(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& q) const;
-    /// Film-thickness change (m) on the grid for the modal coordinates q at the axial offset.
+    /// Modal forces Φᵀ A p (N per unit modal coordinate) of the grid pressure at the offset.
+    void modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& f) const;
+    /// Quasi-static modal coordinates q = C f for modal forces f (held interfaces fixed).
+    void quasiStatic(const Eigen::VectorXd& f, Eigen::VectorXd& q) const { q.noalias() = compliance_ * f; }
+    /// Film-thickness change (m) on the grid for the modal coordinates q at the axial offset
+    /// (0 on Void nodes).
     void filmChange(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& dh) const;
     /// Nodal displacement of the whole mesh (3 · nodes, m) for q.
     Eigen::VectorXd displacement(const Eigen::VectorXd& q) const { return body_.shapes * q; }
@@ -56,6 +64,7 @@ private:
     std::unique_ptr<ModalMapping> fixed_;
     std::unique_ptr<MovingGridMapping> moving_;
     std::vector<int> outside_;
+    std::vector<int> voids_;  // liner: Void nodes in the columns that carry film (their Δh is set to 0)
     Eigen::MatrixXd resultantRows_;  // piston: 6 × grid, Σ of the mapped nodal forces and moments about 0
 };
 

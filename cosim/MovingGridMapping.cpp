@@ -273,13 +273,52 @@ void MovingGridMapping::radialDisplacement(const Eigen::VectorXd& u, double offs
     interpolate(weights, base, r0, uG, ur);
 }
 
-void MovingGridMapping::setModes(const Eigen::MatrixXd& shapes) {
+void MovingGridMapping::setModes(const Eigen::MatrixXd& shapes, std::vector<int> columns) {
     if (shapes.rows() != load_.matrix().rows())
         throw std::invalid_argument("MovingGridMapping::setModes: " + std::to_string(shapes.rows()) +
                                     " dofs in the mode shapes, " + std::to_string(load_.matrix().rows()) +
                                     " in the mesh");
-    modalLoad_ = (load_.matrix().transpose() * shapes).transpose();
-    modalShapes_ = def_.radial() * shapes;
+    const int nt = nTheta_, nZ = fixed_.nAxial();
+    if (columns.empty()) {
+        columns.resize(static_cast<std::size_t>(nt));
+        for (int j = 0; j < nt; ++j) columns[static_cast<std::size_t>(j)] = j;
+    }
+    for (std::size_t c = 0; c < columns.size(); ++c)
+        if (columns[c] < 0 || columns[c] >= nt || (c > 0 && columns[c] <= columns[c - 1]))
+            throw std::invalid_argument("MovingGridMapping::setModes: θ column " + std::to_string(columns[c]) +
+                                        " is out of range (0.." + std::to_string(nt - 1) + ") or not ascending");
+    const int nc = static_cast<int>(columns.size());
+    const Eigen::Index m = shapes.cols();
+
+    // L = Φᵀ A_G (modes × G nodes), then L M_G⁻¹ (M_G symmetric): the Thomas algorithm of solve()
+    // along G's rows for every (mode, θ) pair, on blocks of nθ columns, with the Gram matrix of
+    // all of G's hats (the window's truncation in solve() differs from it by ≈ 0.27³⁰).
+    Eigen::MatrixXd L = (load_.matrix().transpose() * shapes).transpose();
+    {
+        const double h = h_, off = h / 6.0;
+        std::vector<double> diag(static_cast<std::size_t>(nZ));
+        for (int k = 0; k < nZ; ++k) diag[static_cast<std::size_t>(k)] = (k == 0 || k == nZ - 1) ? h / 3.0 : 2.0 * h / 3.0;
+        auto block = [&](int k) { return L.middleCols(static_cast<Eigen::Index>(k) * nt, nt); };
+        for (int k = 1; k < nZ; ++k) {
+            const double f = off / diag[static_cast<std::size_t>(k - 1)];
+            diag[static_cast<std::size_t>(k)] -= f * off;
+            block(k) -= f * block(k - 1);
+        }
+        block(nZ - 1) /= diag[static_cast<std::size_t>(nZ - 1)];
+        for (int k = nZ - 2; k >= 0; --k)
+            block(k) = (block(k) - off * block(k + 1)) / diag[static_cast<std::size_t>(k)];
+    }
+    const Eigen::MatrixXd S = def_.radial() * shapes;  // G nodes × modes
+    modalLoad_.resize(m, static_cast<Eigen::Index>(nZ) * nc);
+    modalShapes_.resize(static_cast<Eigen::Index>(nZ) * nc, m);
+    for (int k = 0; k < nZ; ++k)
+        for (int c = 0; c < nc; ++c) {
+            const Eigen::Index to = static_cast<Eigen::Index>(k) * nc + c;
+            const Eigen::Index from = static_cast<Eigen::Index>(k) * nt + columns[static_cast<std::size_t>(c)];
+            modalLoad_.col(to) = L.col(from);
+            modalShapes_.row(to) = S.row(from);
+        }
+    columns_ = std::move(columns);
     if (hasShear()) {
         modalShearZ_ = (load_.axialShear().transpose() * shapes).transpose();
         modalShearTheta_ = (load_.circumferentialShear().transpose() * shapes).transpose();
@@ -287,13 +326,47 @@ void MovingGridMapping::setModes(const Eigen::MatrixXd& shapes) {
 }
 
 Eigen::VectorXd MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset) const {
+    Eigen::VectorXd out;
+    modalForce(p, offset, out);
+    return out;
+}
+
+void MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& out) const {
     if (modalLoad_.size() == 0) throw std::logic_error("MovingGridMapping::modalForce: setModes first");
-    Eigen::VectorXd c;
-    const Window w = project(p, offset, c);
-    return modalLoad_.middleCols(static_cast<Eigen::Index>(w.k0) * nTheta_, c.size()) * c;
+    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nc = static_cast<int>(columns_.size());
+    if (p.size() != static_cast<Eigen::Index>(nz) * nt)
+        throw std::invalid_argument("MovingGridMapping: " + std::to_string(p.size()) + " pressures for a grid of " +
+                                    std::to_string(nz * nt) + " nodes");
+    Transfer T;
+    const Window w = transfer(offset, T);
+    // b = T p on the active columns; Φᵀ A_G M_G⁻¹ b needs only the rows of G the grid overlaps.
+    int first = w.rows, last = -1;
+    for (int r = 0; r < w.rows; ++r)
+        if (T.outerIndexPtr()[r + 1] > T.outerIndexPtr()[r]) {
+            first = std::min(first, r);
+            last = r;
+        }
+    out.setZero(modalLoad_.rows());
+    if (last < first) return;
+    using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    RowMat P(nz, nc);
+    for (int i = 0; i < nz; ++i)
+        for (int c = 0; c < nc; ++c)
+            P(i, c) = p[static_cast<Eigen::Index>(i) * nt + columns_[static_cast<std::size_t>(c)]];
+    const int rows = last - first + 1;
+    RowMat B(rows, nc);
+    B.noalias() = T.middleRows(first, rows) * P;
+    out.noalias() = modalLoad_.middleCols(static_cast<Eigen::Index>(w.k0 + first) * nc, B.size()) *
+                    Eigen::Map<const Eigen::VectorXd>(B.data(), B.size());
 }
 
 Eigen::VectorXd MovingGridMapping::modalRadialDisplacement(const Eigen::VectorXd& q, double offset) const {
+    Eigen::VectorXd ur;
+    modalRadialDisplacement(q, offset, ur);
+    return ur;
+}
+
+void MovingGridMapping::modalRadialDisplacement(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& ur) const {
     if (modalShapes_.size() == 0)
         throw std::logic_error("MovingGridMapping::modalRadialDisplacement: setModes first");
     if (q.size() != modalShapes_.cols())
@@ -303,11 +376,21 @@ Eigen::VectorXd MovingGridMapping::modalRadialDisplacement(const Eigen::VectorXd
     std::vector<int> base;
     int r0 = 0, r1 = 0;
     interpolation(offset, weights, base, r0, r1);
-    const Eigen::Index nt = nTheta_;
-    const Eigen::VectorXd uG = modalShapes_.middleRows(r0 * nt, (r1 - r0 + 1) * nt) * q;
-    Eigen::VectorXd ur;
-    interpolate(weights, base, r0, uG, ur);
-    return ur;
+    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nZ = fixed_.nAxial(), nc = static_cast<int>(columns_.size());
+    const Eigen::VectorXd uG = modalShapes_.middleRows(static_cast<Eigen::Index>(r0) * nc,
+                                                       static_cast<Eigen::Index>(r1 - r0 + 1) * nc) * q;
+    ur.setZero(static_cast<Eigen::Index>(nz) * nt);
+    for (int i = 0; i < nz; ++i) {
+        double* out = ur.data() + static_cast<Eigen::Index>(i) * nt;
+        const auto& wgt = weights[static_cast<std::size_t>(i)];
+        for (int a = 0; a < 4; ++a) {
+            const int r = base[static_cast<std::size_t>(i)] + a;
+            const double wa = wgt[static_cast<std::size_t>(a)];
+            if (r < 0 || r >= nZ || wa == 0.0) continue;
+            const double* in = uG.data() + static_cast<Eigen::Index>(r - r0) * nc;
+            for (int c = 0; c < nc; ++c) out[columns_[static_cast<std::size_t>(c)]] += wa * in[c];
+        }
+    }
 }
 
 }  // namespace flexehd::cosim

@@ -20,7 +20,10 @@
 //    grid rows by cubic Hermite in z with central-difference slopes (one-sided 3-point at the
 //    ends of G): C¹ in z, exact for quadratics, so quadratics in (z, s) are reproduced like
 //    by the Clough–Tocher operator itself.
-//  * modal (setModes): Φᵀ A_G and D_G Φ pre-multiplied once, the same per-call steps.
+//  * modal (setModes): Φᵀ A_G M_G⁻¹ and D_G Φ pre-multiplied once (M_G the Gram matrix of all
+//    of G's hats: the modal force needs only the rows the shifted grid overlaps, no window
+//    padding), optionally restricted to the θ columns that carry film (the panels of a masked
+//    skirt grid): per call O(overlap rows × active columns × modes).
 //  * shear (MovingGridOptions::shear): the axial and circumferential tractions τ_z, τ_θ
 //    (bilinear on the moving grid like p) take the same projection, then G's shear operators
 //    (LoadMapping::axialShear(), circumferentialShear()); the total friction force (axial and
@@ -78,16 +81,27 @@ public:
     Eigen::VectorXd radialDisplacement(const Eigen::VectorXd& u, double offset) const;
     void radialDisplacement(const Eigen::VectorXd& u, double offset, Eigen::VectorXd& ur) const;
     /// Modal variant: pre-multiplies the body's mode shapes Φ (3 · mesh nodes × modes) into the
-    /// fixed operators once, Φᵀ A_G (modes × G nodes) and D_G Φ (G nodes × modes); a call then
-    /// costs O(window × modes) beyond the same projection / interpolation.
-    void setModes(const Eigen::MatrixXd& shapes);
-    /// Modal forces Φᵀ f of grid pressures p at offset s (requires setModes).
+    /// fixed operators once, Φᵀ A_G M_G⁻¹ (modes × G nodes; M_G the Gram matrix of G's hats) and
+    /// D_G Φ (G nodes × modes); a call then costs O(overlap × modes) beyond the same transfer /
+    /// interpolation. `columns`: the θ columns of the moving grid that carry film (ascending;
+    /// empty = all). The modal products then skip the other columns: modalForce ignores p there
+    /// (it must be zero there — ambient gauge pressure, no film — for the result to equal the
+    /// unrestricted one), modalRadialDisplacement returns 0 there. Throws std::invalid_argument
+    /// for a wrong number of dofs or a column out of range / not ascending.
+    void setModes(const Eigen::MatrixXd& shapes, std::vector<int> columns = {});
+    /// The θ columns the modal products use (all after setModes without columns).
+    const std::vector<int>& modalColumns() const { return columns_; }
+    /// Modal forces Φᵀ f of grid pressures p at offset s (requires setModes). Equals Φᵀ loads(p, s)
+    /// to round-off (the full Gram matrix instead of the window's: a difference ≈ 0.27³⁰).
     Eigen::VectorXd modalForce(const Eigen::VectorXd& p, double offset) const;
+    void modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& out) const;
     /// Modal forces Φᵀ f of the shear tractions at offset s (requires setModes and options.shear).
     Eigen::VectorXd modalShearForce(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta,
                                     double offset) const;
-    /// Radial displacement at the moving grid's nodes of modal coordinates q (requires setModes).
+    /// Radial displacement at the moving grid's nodes of modal coordinates q (requires setModes);
+    /// 0 on the columns setModes left out.
     Eigen::VectorXd modalRadialDisplacement(const Eigen::VectorXd& q, double offset) const;
+    void modalRadialDisplacement(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& ur) const;
     /// The projected pressure on G (for inspection and tests): G nodes, zero off the window.
     Eigen::VectorXd fixedPressure(const Eigen::VectorXd& p, double offset) const;
 
@@ -125,8 +139,9 @@ private:
     lube::FilmGrid fixed_;
     LoadMapping load_;
     DeformationMapping def_;
-    Eigen::MatrixXd modalLoad_;    // Φᵀ A_G
-    Eigen::MatrixXd modalShapes_;  // D_G Φ
+    std::vector<int> columns_;     // θ columns of the modal products (setModes)
+    Eigen::MatrixXd modalLoad_;    // Φᵀ A_G M_G⁻¹ on the columns: modes × (G rows · columns), row-major layout
+    Eigen::MatrixXd modalShapes_;  // D_G Φ on the columns: (G rows · columns) × modes
     Eigen::MatrixXd modalShearZ_, modalShearTheta_;  // Φᵀ S_z,G and Φᵀ S_θ,G (with shear)
 };
 

@@ -31,7 +31,7 @@ struct FilmAction {
 
 class PistonDynamics {
 public:
-    /// Throws std::invalid_argument unless masses and inertia are positive.
+    /// Throws std::invalid_argument unless the piston mass and inertia are > 0 and the pin mass ≥ 0.
     PistonDynamics(const PistonSpec& piston, const EngineSpec& engine, double gravity = 9.81);
 
     /// M(ψ): the (non-symmetric) mass matrix of the equations above.
@@ -41,7 +41,9 @@ public:
     /// Lateral force of the rod on the pin, F_R sin ψ (N), for the tilt acceleration β̈.
     double sideForce(const CrankState& crank, double gasForce, const FilmAction& film,
                      double tiltAcceleration) const;
-    /// Kinetic energy of the secondary motion (J): ½ vᵀ M_s v with M_s the symmetric part at ψ = 0.
+    /// Kinetic energy of the secondary motion (J), v = (ė, β̇): ½ m_pin ė² + ½ m_p |v_G|² + ½ I_g β̇² with
+    /// v_G = (ė + z_g β̇, −x_g β̇) the CG velocity relative to the primary motion, i.e.
+    /// ½ (m_p + m_pin) ė² + m_p z_g ė β̇ + ½ [I_g + m_p (x_g² + z_g²)] β̇² = ½ vᵀ M(ψ = 0) v.
     double kineticEnergy(double lateralVelocity, double tiltRate) const;
     /// Net gas force (N) for the absolute cylinder pressure p (Pa).
     double gasForce(double cylinderPressure) const;

@@ -24,7 +24,8 @@ public:
     SkirtFilm(const EngineSpec& engine, const PistonSpec& piston, const GridSpec& grid);
 
     const lube::FilmGrid& grid() const { return grid_; }
-    /// h_rigid at every node (m) for the secondary motion (e, β); Void nodes get c.
+    /// h_rigid at every node (m) for the secondary motion (e, β): the same formula at every node,
+    /// Void nodes included (their value is never used).
     void rigidThickness(double lateral, double tilt, Eigen::VectorXd& h) const;
     /// The motion-independent part c + δ_profile + δ_ovality (m).
     const Eigen::VectorXd& staticThickness() const { return h0_; }

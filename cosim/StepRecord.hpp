@@ -7,7 +7,9 @@ namespace flexehd::cosim {
 
 struct StepRecord {
     int cycle = 0;                  ///< 1-based cycle number
-    double crankDeg = 0.0;          ///< °, 0–720 within the cycle
+    /// °, the crank angle 0–720 (0 = gas-exchange TDC, 360 = firing TDC), whatever time.start_deg:
+    /// a cycle runs from start_deg to 720 and on from 0 to start_deg
+    double crankDeg = 0.0;
     double time = 0.0;              ///< s since the start of the run
     double lateral = 0.0;           ///< m, lateral shift e of the pin axis (+x thrust)
     double tilt = 0.0;              ///< rad, tilt β about +y (top of the piston towards +x > 0)

@@ -34,7 +34,7 @@ vtkNew<vtkDoubleArray> makeArray(const std::string& name, const Eigen::MatrixXd&
 }  // namespace
 
 void writeVtu(const std::string& path, const fem::Mesh& mesh, const std::vector<PointField>& fields,
-              const std::vector<FieldValue>& fieldData) {
+              const std::vector<FieldValue>& fieldData, VtuCompression compression) {
     vtkNew<vtkUnstructuredGrid> grid;
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -73,6 +73,10 @@ void writeVtu(const std::string& path, const fem::Mesh& mesh, const std::vector<
         writer->SetDataModeToAppended();
         writer->EncodeAppendedDataOff();  // raw binary
         writer->SetHeaderTypeToUInt64();
+        if (compression == VtuCompression::LZ4)
+            writer->SetCompressorTypeToLZ4();
+        else if (compression == VtuCompression::None)
+            writer->SetCompressorTypeToNone();
         if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + path + "'");
     });
 }

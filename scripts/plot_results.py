@@ -79,12 +79,17 @@ def read_history(directory):
 
 
 def cycle_complete(h, c, cycles):
-    """A cycle is complete when a later one has started or it reaches (almost) 720 deg."""
+    """A cycle is complete when a later one has started or its steps cover (almost) 720 deg.
+
+    crank_deg is the true crank angle: with time.start_deg > 0 a cycle runs from start_deg to
+    720 and on from 0, so the degrees covered are the sum of the steps, not the largest angle."""
     if c < cycles.max():
         return True
-    crank = h["crank_deg"][h["cycle"] == c]
-    step = h["step_deg"][h["cycle"] == c].max() if "step_deg" in h else 1.0
-    return crank.max() >= 720.0 - max(1.5 * step, 1.0)
+    mask = h["cycle"] == c
+    if "step_deg" not in h:
+        return h["crank_deg"][mask].max() >= 719.0
+    steps = h["step_deg"][mask]
+    return steps.sum() >= 720.0 - max(1.5 * steps.max(), 1.0)
 
 
 def select_cycle(path, h, wanted):

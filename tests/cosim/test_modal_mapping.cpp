@@ -4,9 +4,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -104,6 +106,55 @@ TEST(ModalMapping, EqualsTheTwoStepNodalRoute) {
 // forms (body inside the film, F = −∫ p n_r dA):
 //   F = −p0 R (z1 − z0) (sin θb − sin θa, cos θa − cos θb, 0),
 //   M_0 = −p0 R (z1² − z0²)/2 (cos θb − cos θa, sin θb − sin θa, 0),  M_ref = M_0 − x_ref × F.
+
+// Restricted to the grid nodes that carry film (a masked band of the arc grid, as FlexibleSurface
+// passes the non-Void nodes): the modal force of a pressure that vanishes off those nodes and the
+// grid displacement on them equal the unrestricted products to round-off; 0 off them.
+TEST(ModalMapping, RestrictedToFilmNodesEqualsTheFullProducts) {
+    const modal::ReducedBody& b = body(true);
+    const FilmGrid& g = grid();
+    const LoadMapping load(piston(), "skirt", g);
+    const DeformationMapping def(piston(), "skirt", g);
+    std::vector<int> active;
+    for (int k = 0; k < g.size(); ++k)
+        if (std::abs(g.theta(g.thetaIndex(k))) <= 0.45 && g.axialIndex(k) % 7 != 3) active.push_back(k);
+    ASSERT_GT(active.size(), 100u);
+    ASSERT_LT(active.size(), std::size_t(g.size()));
+    const ModalMapping full(b, load, def), restricted(b, load, def, active);
+    EXPECT_EQ(int(full.activeNodes().size()), g.size());
+    EXPECT_EQ(restricted.activeNodes(), active);
+    std::vector<bool> on(std::size_t(g.size()), false);
+    for (int k : active) on[std::size_t(k)] = true;
+    Eigen::VectorXd p = bump(g);
+    for (int k = 0; k < g.size(); ++k)
+        if (!on[std::size_t(k)]) p[k] = 0.0;
+    const Eigen::VectorXd fFull = full.modalForce(p), fRes = restricted.modalForce(p);
+    const double eF = (fRes - fFull).norm() / fFull.norm();
+    const Eigen::VectorXd q = Eigen::VectorXd::Random(b.numModes());
+    const Eigen::VectorXd uFull = full.radialDisplacement(q), uRes = restricted.radialDisplacement(q);
+    ASSERT_EQ(uRes.size(), g.size());
+    double eU = 0.0;
+    for (int k = 0; k < g.size(); ++k) {
+        if (on[std::size_t(k)])
+            eU = std::max(eU, std::abs(uRes[k] - uFull[k]));
+        else
+            EXPECT_EQ(uRes[k], 0.0) << k;
+    }
+    eU /= uFull.cwiseAbs().maxCoeff();
+    std::printf("  restricted (%zu of %d nodes) vs full: modal force %.1e, grid displacement %.1e\n", active.size(),
+                g.size(), eF, eU);
+    EXPECT_LE(eF, 1e-13);
+    EXPECT_LE(eU, 1e-14);
+    // The full-size operators: zero columns / rows off the active nodes, the same products.
+    const Eigen::MatrixXd B = restricted.loadOperator(), G = restricted.gridShapes();
+    EXPECT_LE((B * p - fRes).norm(), 1e-13 * fRes.norm());
+    EXPECT_LE((G * q - uRes).norm(), 1e-14 * uRes.norm());
+    EXPECT_THAT([&] { ModalMapping(b, load, def, {5, 4}); },
+                ::testing::ThrowsMessage<std::invalid_argument>(::testing::HasSubstr("not ascending")));
+    EXPECT_THAT([&] { ModalMapping(b, load, def, {g.size()}); },
+                ::testing::ThrowsMessage<std::invalid_argument>(::testing::HasSubstr("out of range")));
+}
+
 TEST(ModalMapping, RigidBodyModalForcesEqualTheClosedFormResultant) {
     const modal::ReducedBody& b = body(false);
     const FilmGrid& g = grid();

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -211,6 +212,67 @@ TEST(MovingGridMapping, ModalShearEqualsTheNodalRoute) {
     EXPECT_FALSE(plain.hasShear());
     EXPECT_THAT([&] { (void)plain.shearLoads(tz, tt, 0.0); },
                 ::testing::ThrowsMessage<std::logic_error>(::testing::HasSubstr("options.shear")));
+}
+
+// The modal products restricted to the θ columns that carry film (two skirt-like panels of
+// ±0.7 rad around θ = 0 and π, as FlexibleSurface passes them) equal the unrestricted ones to
+// round-off when p vanishes off those columns (ambient, no film): modal forces against the full
+// mapping and the nodal route Φᵀ loads(p, s), radial displacement on the film columns and 0 on
+// the others; at offsets on and off G's rows and down to G's end. Errors for bad column lists.
+TEST(MovingGridMapping, ModalProductsRestrictedToFilmColumnsEqualTheFullOnes) {
+    const fem::Mesh& m = sleeve();
+    const FilmGrid& g = movingGrid();
+    std::vector<int> columns;
+    for (int j = 0; j < g.nTheta(); ++j)
+        if (std::abs(std::remainder(g.theta(j), kPi)) <= 0.7) columns.push_back(j);
+    ASSERT_GT(columns.size(), 10u);
+    ASSERT_LT(columns.size(), std::size_t(g.nTheta()) / 2);
+    MovingGridMapping full(m, "inner", g, -0.030, 0.020, 101), restricted(m, "inner", g, -0.030, 0.020, 101);
+    const Eigen::MatrixXd phi = Eigen::MatrixXd::Random(3 * m.numNodes(), 12) * 1e-3;
+    full.setModes(phi);
+    restricted.setModes(phi, columns);
+    EXPECT_EQ(int(full.modalColumns().size()), g.nTheta());
+    EXPECT_EQ(restricted.modalColumns(), columns);
+    std::vector<bool> film(std::size_t(g.nTheta()), false);
+    for (int j : columns) film[std::size_t(j)] = true;
+    const Eigen::VectorXd q = Eigen::VectorXd::Random(12);
+    double worstF = 0.0, worstU = 0.0, worstNodal = 0.0;
+    for (double offset : {0.0, 0.00123, -0.0177, 0.0139, -0.024}) {
+        for (Field kind : {Field::Random, Field::Smooth, Field::Discontinuous}) {
+            Eigen::VectorXd p = field(g, kind, 11);
+            for (int k = 0; k < g.size(); ++k)
+                if (!film[std::size_t(g.thetaIndex(k))]) p[k] = 0.0;
+            const Eigen::VectorXd fFull = full.modalForce(p, offset), fRes = restricted.modalForce(p, offset);
+            const Eigen::VectorXd nodal = phi.transpose() * full.loads(p, offset);
+            worstF = std::max(worstF, (fRes - fFull).norm() / fFull.norm());
+            worstNodal = std::max(worstNodal, (fRes - nodal).norm() / nodal.norm());
+        }
+        const Eigen::VectorXd uFull = full.modalRadialDisplacement(q, offset);
+        const Eigen::VectorXd uRes = restricted.modalRadialDisplacement(q, offset);
+        ASSERT_EQ(uRes.size(), g.size());
+        double diff = 0.0;
+        for (int k = 0; k < g.size(); ++k) {
+            if (film[std::size_t(g.thetaIndex(k))])
+                diff = std::max(diff, std::abs(uRes[k] - uFull[k]));
+            else
+                EXPECT_EQ(uRes[k], 0.0) << k;
+        }
+        worstU = std::max(worstU, diff / uFull.cwiseAbs().maxCoeff());
+        // Also against the nodal route of the displacement.
+        const Eigen::VectorXd uNodal = full.radialDisplacement(phi * q, offset);
+        EXPECT_LE((uFull - uNodal).norm(), 1e-13 * uNodal.norm()) << offset;
+    }
+    std::printf("  restricted vs full: modal force %.1e, radial displacement %.1e; vs nodal route %.1e\n", worstF,
+                worstU, worstNodal);
+    EXPECT_LE(worstF, 1e-13);
+    EXPECT_LE(worstU, 1e-14);
+    EXPECT_LE(worstNodal, 1e-13);
+    EXPECT_THAT([&] { restricted.setModes(phi, {3, 2}); },
+                ::testing::ThrowsMessage<std::invalid_argument>(::testing::HasSubstr("not ascending")));
+    EXPECT_THAT([&] { restricted.setModes(phi, {0, g.nTheta()}); },
+                ::testing::ThrowsMessage<std::invalid_argument>(::testing::HasSubstr("out of range")));
+    EXPECT_THROW((void)restricted.modalForce(Eigen::VectorXd::Zero(7), 0.0), std::invalid_argument);
+    EXPECT_THROW((void)restricted.modalForce(field(g, Field::Smooth, 0), 0.0145), std::out_of_range);
 }
 
 // Physical check of the modal liner route. Liner: meshes/liner.geo coarse (9 mm, TRI6/TET10),

@@ -1,50 +1,26 @@
 // Piston secondary motion: crank-slider kinematics, the equations of motion (docs/dynamics.md),
 // and the rigid-body (HD) co-simulation: no-motion limit, force and moment balance at every step
-// (recomputed from history.csv quantities), and time-step convergence.
+// (recomputed from history.csv quantities), time-step convergence, the kinetic energy of the
+// secondary motion against a point-mass model, and the crank angle of the outputs.
 #include "cosim/CrankKinematics.hpp"
+#include "cosim/CycleMetrics.hpp"
 #include "cosim/PistonDynamics.hpp"
 #include "cosim/PistonSimulation.hpp"
+#include "SmallEngineCase.hpp"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace flexehd::cosim;
-
-namespace {
-
-// A small engine close to the example (86 × 86 mm), with a synthetic firing pressure trace.
-EngineCase smallCase() {
-    EngineCase c;
-    c.engine = EngineSpec{};
-    c.engine.rodLength = 0.1435;
-    c.piston.mass = 0.32;
-    c.piston.pinMass = 0.10;
-    c.piston.inertia = 2.6e-4;
-    c.piston.cgX = 0.0;
-    c.piston.cgZ = 0.006;
-    c.piston.skirtTop = 0.0108;
-    c.piston.skirtBottom = -0.025;
-    c.piston.clearance = 50e-6;
-    c.piston.skirtHalfAngle = 40.0 * std::numbers::pi / 180.0;
-    for (double z = -0.025; z <= 0.01081; z += 0.0358 / 8) {
-        const double s = (z - (-0.008)) / 0.018;
-        c.piston.profile.push_back({z, 20e-6 * s * s});
-    }
-    c.lubricant.viscosity = 0.008;
-    c.contact.compositeModulus = 5.6e10;
-    for (int d = 0; d <= 720; d += 2) {
-        const double x = (d - 372.0) / 28.0;
-        c.cylinderPressure.push_back({double(d), 1.0e5 + 3.4e6 * std::exp(-x * x)});
-    }
-    c.grid.axialNodes = 24;
-    c.grid.circumferentialNodes = 72;
-    c.time.maxCycles = 1;
-    return c;
-}
-
-}  // namespace
+using flexehd::test::smallCase;
 
 TEST(CrankKinematics, MatchesClosedFormAndFiniteDifferences) {
     const double r = 0.043, l = 0.1435, c = 0.0;
@@ -94,6 +70,36 @@ TEST(PistonDynamics, EquationsMatchTheFreeBodyBalance) {
     const double rodAxial = side / k.tanRod;  // F_R cos ψ
     EXPECT_NEAR(mp * (A - xg * tiltAcc) + mpin * A, -Fg + f.fz + rodAxial, 1e-9);
     EXPECT_NEAR(d.gasForce(1.0e5 + 1.0e6), 1.0e6 * std::numbers::pi * 0.086 * 0.086 / 4, 1e-6);
+}
+
+// The slap energy (kineticEnergy, CycleMetrics, summary.json) against a rigid body built from
+// point masses: four masses m_p/4 at G ± (a, 0) and G ± (0, b) in the x–z plane have their CG at G
+// and I_g = m_p (a² + b²)/2. Each point's velocity relative to the primary motion is
+// (ė, 0, 0) + ω × r with ω = (0, β̇, 0) and r its position from the pin axis; the pin moves with ė.
+TEST(PistonDynamics, KineticEnergyOfAPointMassModel) {
+    const double mp = 0.32, mpin = 0.10, a = 0.020, b = 0.030;
+    const double Ig = mp * (a * a + b * b) / 2;
+    for (const auto& [xg, zg] : {std::pair{0.0, 0.0}, std::pair{0.0, 0.012}, std::pair{0.003, -0.008},
+                                 std::pair{-0.002, 0.015}}) {
+        EngineCase c = smallCase();
+        c.piston.mass = mp;
+        c.piston.pinMass = mpin;
+        c.piston.inertia = Ig;
+        c.piston.cgX = xg;
+        c.piston.cgZ = zg;
+        const PistonDynamics d(c.piston, c.engine);
+        for (const auto& [v, w] : {std::pair{0.05, 0.0}, std::pair{0.0, 3.0}, std::pair{0.05, 3.0},
+                                   std::pair{-0.04, 2.5}}) {
+            const Eigen::Vector3d omega(0.0, w, 0.0);
+            double T = 0.5 * mpin * v * v;
+            for (const Eigen::Vector3d& r : {Eigen::Vector3d(xg + a, 0, zg), Eigen::Vector3d(xg - a, 0, zg),
+                                             Eigen::Vector3d(xg, 0, zg + b), Eigen::Vector3d(xg, 0, zg - b)}) {
+                const Eigen::Vector3d u = Eigen::Vector3d(v, 0, 0) + omega.cross(r);
+                T += 0.5 * (mp / 4) * u.squaredNorm();
+            }
+            EXPECT_NEAR(d.kineticEnergy(v, w), T, 1e-12 * T) << "x_g " << xg << ", z_g " << zg << ", v " << v << ", w " << w;
+        }
+    }
 }
 
 // With no gas force, no offsets and an (almost) straight rod nothing pushes the piston sideways:
@@ -181,4 +187,101 @@ TEST(PistonSimulation, TimeStepConvergence) {
     EXPECT_GT(d1 / d2, 3.0);
     EXPECT_GT(d2 / d3, 3.0);
     EXPECT_LT(d3, 0.01 * scale);
+}
+
+// history.csv, summary.json and the VTK series give the crank angle of the four-stroke cycle
+// (0 = gas-exchange TDC), not the angle turned since time.start_deg. The run starts at 700° and
+// crosses 720° = 0°; the crank turns at 6 n °/s (n in rev/min), so a record at time t since the
+// start is at 700° + 6 n t, reduced to 0–720.
+TEST(PistonSimulation, OutputsGiveTheTrueCrankAngleWhateverTheStart) {
+    EngineCase c = smallCase();
+    c.grid = {16, 48};
+    c.time.startDeg = 700.0;
+    c.output.vtkEveryDeg = 10.0;
+    PistonSimulation sim(c);
+    std::vector<Snapshot> snaps;
+    const auto rec = sim.run({.onStep = {}, .onSnapshot = [&](const Snapshot& s) { snaps.push_back(s); }, .progress = {}},
+                             40.0);
+    ASSERT_GT(rec.size(), 20u);
+    auto expected = [&](double time) {
+        const double phi = 700.0 + 6.0 * c.engine.speedRpm * time;
+        return phi > 720.0 + 1e-9 ? phi - 720.0 : phi;
+    };
+    int wrapped = 0;
+    for (const auto& r : rec) {
+        EXPECT_NEAR(r.crankDeg, expected(r.time), 1e-6) << "t = " << r.time << " s";
+        wrapped += r.crankDeg < 360.0;
+    }
+    EXPECT_GT(wrapped, 5);  // the points after 720° are written as 0–20°
+    EXPECT_NEAR(rec.back().crankDeg, 20.0, 1e-6);
+    // The summary's angles come from the records.
+    const CycleMetrics m = cycleMetrics(rec, sim.dynamics(), 1.0);
+    auto lowest = std::min_element(rec.begin(), rec.end(), [](const auto& x, const auto& y) { return x.minFilm < y.minFilm; });
+    EXPECT_NEAR(m.minFilmDeg, expected(lowest->time), 1e-6);
+    // Snapshots every 10° from the start: crank angles 710, 720, 10, 20; the VTK time is the
+    // continuous angle 710 … 740.
+    ASSERT_EQ(snaps.size(), 4u);
+    const double crank[] = {710.0, 720.0, 10.0, 20.0};
+    for (std::size_t i = 0; i < snaps.size(); ++i) {
+        EXPECT_NEAR(snaps[i].crankDeg, crank[i], 1e-6) << i;
+        EXPECT_NEAR(snaps[i].continuousDeg, 710.0 + 10.0 * double(i), 1e-6) << i;
+    }
+}
+
+// The periodicity error (docs/coupling.md §1) compares the two cycles at the same crank angle
+// also when the written crank angle wraps (start_deg = 300: 300 … 720, 0 … 300). Recomputed
+// here from the records of both cycles, matched by time: the crank turns at constant speed, so
+// cycle 2 at time t meets cycle 1 at t − 720°/(6 n °/s).
+TEST(PistonSimulation, PeriodicityErrorComparesTheSameCrankAngle) {
+    EngineCase c = smallCase();
+    c.grid = {16, 48};
+    c.time.startDeg = 300.0;
+    c.time.maxCycles = 2;
+    c.time.periodicityTolerance = 1e-12;  // run both cycles
+    c.output.vtkEveryDeg = 0.0;
+    PistonSimulation sim(c);
+    std::vector<StepRecord> all;
+    sim.run({.onStep = [&](const StepRecord& r) { all.push_back(r); }, .onSnapshot = {}, .progress = {}});
+    ASSERT_EQ(sim.statistics().cycles, 2);
+    std::vector<StepRecord> one, two;
+    for (const auto& r : all) (r.cycle == 1 ? one : two).push_back(r);
+    ASSERT_GT(one.size(), 100u);
+    ASSERT_GT(two.size(), 100u);
+    const double period = 720.0 / (6.0 * c.engine.speedRpm);  // s
+    const double reach = std::max(c.piston.skirtTop, -c.piston.skirtBottom);
+    double err = 0.0;
+    for (const auto& r : two) {
+        const double t = r.time - period;
+        auto b = std::lower_bound(one.begin(), one.end(), t, [](const StepRecord& x, double v) { return x.time < v; });
+        if (b == one.end()) b = one.end() - 1;
+        const auto a = b == one.begin() ? b : b - 1;
+        const double w = b->time > a->time ? std::clamp((t - a->time) / (b->time - a->time), 0.0, 1.0) : 0.0;
+        const double e = a->lateral + w * (b->lateral - a->lateral), beta = a->tilt + w * (b->tilt - a->tilt);
+        err = std::max(err, std::abs(r.lateral - e) + std::abs(r.tilt - beta) * reach);
+    }
+    std::printf("periodicity error %.6g m (recomputed %.6g m)\n", sim.statistics().periodicityError, err);
+    EXPECT_GT(err, 1e-8);  // the first cycle starts at rest: the two cycles differ
+    EXPECT_NEAR(sim.statistics().periodicityError, err, 1e-3 * err);
+}
+
+// When the iteration cannot converge the diagnosis reports the film solves the failed attempt
+// made: with coupling.max_iterations = 1, one pass plus the two of the finite-difference
+// Jacobian, 3 in all. Starting at 90° (large rod angle and inertia) one pass is not enough, the
+// step is quartered below time.min_step_deg and the run stops.
+TEST(PistonSimulation, NonConvergenceReportsTheFilmSolvesMade) {
+    EngineCase c = smallCase();
+    c.grid = {16, 48};
+    c.time.startDeg = 90.0;
+    c.time.minStepDeg = 0.05;  // the first step, 0.1°, retried at 0.025°: below
+    c.coupling.maxIterations = 1;
+    PistonSimulation sim(c);
+    try {
+        sim.run({}, 10.0);
+        FAIL() << "the run should stop";
+    } catch (const std::runtime_error& e) {
+        const std::string m = e.what();
+        std::printf("%s\n", m.c_str());
+        EXPECT_NE(m.find("coupling.max_iterations = 1 passes (3 film solves"), std::string::npos) << m;
+        EXPECT_NE(m.find("at crank angle 90.0000 deg"), std::string::npos) << m;
+    }
 }

@@ -1,4 +1,5 @@
-// Result writers of a run: history.csv (HistoryWriter) and the VTK series (FieldSeriesWriter).
+// Result writers of a run: history.csv (HistoryWriter), the VTK series (FieldSeriesWriter) and the
+// mode shapes (ModeShapeExport).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,6 +25,7 @@
 
 #include "cosim/FieldSeriesWriter.hpp"
 #include "cosim/HistoryWriter.hpp"
+#include "cosim/ModeShapeExport.hpp"
 #include "tests/fem/TestData.hpp"
 
 namespace flexehd::cosim {
@@ -485,6 +487,49 @@ TEST(FieldSeriesWriter, BadSnapshotsAreRefusedBeforeAnyFileIsWritten) {
     EXPECT_THAT([&] { w.write(5.0, f.film, &piston, nullptr); },
                 ThrowsMessage<std::runtime_error>(HasSubstr("strictly increasing")));
     EXPECT_EQ(readPvd(dir / "film.pvd").size(), 1u);
+}
+
+// Mode shapes (ModeShapeExport): LZ4 files that VTK reads back; written once — an export of the
+// same data into the same directory keeps the files (same modification time), changed shapes or
+// a missing file rewrite them.
+TEST(ModeShapeExport, WrittenOnceAndRewrittenWhenTheDataChanges) {
+    const auto dir = test::scratchDir() / "modes";
+    const fem::Mesh mesh = oneTet();
+    Eigen::MatrixXd shapes(12, 3);
+    shapes.setRandom();
+    const Eigen::VectorXd freq = Eigen::VectorXd::LinSpaced(3, 100.0, 300.0);
+    bool reused = true;
+    const auto files = writeModeShapes(dir.string(), mesh, shapes, freq, Eigen::VectorXd(), &reused);
+    EXPECT_FALSE(reused);
+    ASSERT_EQ(files.size(), 4u);
+    EXPECT_EQ(files.front(), "mode_001.vtu");
+    EXPECT_EQ(files.back(), "modes.pvd");
+    EXPECT_TRUE(fs::exists(dir / "modes.fingerprint"));
+    EXPECT_EQ(slurp(dir / "modes.fingerprint"), modeShapeFingerprint(mesh, shapes, freq, Eigen::VectorXd()) + "\n");
+    const auto vtu = readVtu(dir / "mode_002.vtu");
+    ASSERT_EQ(vtu->GetNumberOfPoints(), 4);
+    auto* u = vtu->GetPointData()->GetArray("displacement");
+    ASSERT_NE(u, nullptr);
+    const double scale = u->GetComponent(0, 0) / shapes(0, 1);  // the viewing scale, same for all
+    for (vtkIdType n = 0; n < 4; ++n)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(u->GetComponent(n, c), scale * shapes(3 * n + c, 1), 1e-15 * std::abs(scale));
+    ASSERT_EQ(readPvd(dir / "modes.pvd").size(), 3u);
+
+    const auto stamp = fs::last_write_time(dir / "mode_001.vtu");
+    EXPECT_EQ(writeModeShapes(dir.string(), mesh, shapes, freq, Eigen::VectorXd(), &reused), files);
+    EXPECT_TRUE(reused);
+    EXPECT_EQ(fs::last_write_time(dir / "mode_001.vtu"), stamp);
+
+    shapes(4, 2) += 1e-3;  // other data: rewritten
+    writeModeShapes(dir.string(), mesh, shapes, freq, Eigen::VectorXd(), &reused);
+    EXPECT_FALSE(reused);
+    EXPECT_EQ(slurp(dir / "modes.fingerprint"), modeShapeFingerprint(mesh, shapes, freq, Eigen::VectorXd()) + "\n");
+    fs::remove(dir / "mode_003.vtu");  // a file missing: rewritten
+    writeModeShapes(dir.string(), mesh, shapes, freq, Eigen::VectorXd(), &reused);
+    EXPECT_FALSE(reused);
+    EXPECT_TRUE(fs::exists(dir / "mode_003.vtu"));
+    writeModeShapes(dir.string(), mesh, shapes, freq, Eigen::VectorXd(), &reused);
+    EXPECT_TRUE(reused);
 }
 
 }  // namespace

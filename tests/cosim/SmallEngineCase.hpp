@@ -1,0 +1,41 @@
+#pragma once
+// The example engine (examples/engine86, 86 × 86 mm at 1000 rpm) in a small form for the
+// co-simulation tests: a synthetic firing pressure trace, rigid bodies, one cycle.
+#include "cosim/EngineCase.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace flexehd::test {
+
+// A small engine close to the example (86 × 86 mm), with a synthetic firing pressure trace.
+inline cosim::EngineCase smallCase() {
+    cosim::EngineCase c;
+    c.engine = cosim::EngineSpec{};
+    c.engine.rodLength = 0.1435;
+    c.piston.mass = 0.32;
+    c.piston.pinMass = 0.10;
+    c.piston.inertia = 2.6e-4;
+    c.piston.cgX = 0.0;
+    c.piston.cgZ = 0.006;
+    c.piston.skirtTop = 0.0108;
+    c.piston.skirtBottom = -0.025;
+    c.piston.clearance = 50e-6;
+    c.piston.skirtHalfAngle = 40.0 * std::numbers::pi / 180.0;
+    for (double z = -0.025; z <= 0.01081; z += 0.0358 / 8) {
+        const double s = (z - (-0.008)) / 0.018;
+        c.piston.profile.push_back({z, 20e-6 * s * s});
+    }
+    c.lubricant.viscosity = 0.008;
+    c.contact.compositeModulus = 5.6e10;
+    for (int d = 0; d <= 720; d += 2) {
+        const double x = (d - 372.0) / 28.0;
+        c.cylinderPressure.push_back({double(d), 1.0e5 + 3.4e6 * std::exp(-x * x)});
+    }
+    c.grid.axialNodes = 24;
+    c.grid.circumferentialNodes = 72;
+    c.time.maxCycles = 1;
+    return c;
+}
+
+}  // namespace flexehd::test
