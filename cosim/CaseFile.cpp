@@ -1,4 +1,5 @@
 #include "cosim/CaseFile.hpp"
+#include "cosim/YamlKeys.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -15,7 +16,9 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "cosim/BoreDistortion.hpp"
 #include "cosim/CylinderPressure.hpp"
+#include "cosim/ThermalDisplacementFile.hpp"
 
 namespace flexehd::cosim {
 namespace {
@@ -52,50 +55,9 @@ bool parseInt(const std::string& text, long long& value) {
     return ec == std::errc() && ptr == end;
 }
 
-std::string lower(std::string s) {
-    for (auto& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    return s;
-}
-
-/// Edit distance, ignoring case (a typo in case is a typo).
-std::size_t editDistance(const std::string& aIn, const std::string& bIn) {
-    const std::string a = lower(aIn), b = lower(bIn);
-    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j)
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
-
-/// The closest candidate, if it is close enough to be a plausible typo: a candidate that
-/// contains the word or is contained in it (`speed` -> `speed_rpm`), else the one at the
-/// smallest edit distance if that is small.
-std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
-    std::string best;
-    std::size_t bestDist = std::string::npos;
-    if (word.size() >= 3)
-        for (const auto& c : candidates)
-            if (lower(c).find(lower(word)) != std::string::npos || lower(word).find(lower(c)) != std::string::npos) {
-                const std::size_t d = editDistance(word, c);
-                if (d < bestDist) bestDist = d, best = c;
-            }
-    if (!best.empty()) return best;
-    for (const auto& c : candidates) {
-        const std::size_t d = editDistance(word, c);
-        if (d < bestDist) bestDist = d, best = c;
-    }
-    return bestDist <= std::max<std::size_t>(2, word.size() / 3) ? best : "";
-}
-
-std::string joined(const std::vector<std::string>& items) {
-    std::string out;
-    for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-    return out;
-}
+const auto& closest = closestKey;
+const auto& joined = joinedKeys;
+const auto& describe = describeNode;
 
 std::string withArticle(const std::string& phrase) {
     const bool vowel = !phrase.empty() && std::strchr("aeiou", phrase[0]) != nullptr;
@@ -108,13 +70,6 @@ struct Context {
     std::string file;  ///< the case file as given, for messages
     fs::path dir;      ///< its directory, absolute
 };
-
-std::string describe(const YAML::Node& n) {
-    if (!n.IsDefined() || n.IsNull()) return "nothing";
-    if (n.IsMap()) return "a mapping";
-    if (n.IsSequence()) return "a list";
-    return "'" + n.Scalar() + "'";
-}
 
 [[noreturn]] void fail(const Context& ctx, const std::string& keyPath, const YAML::Node& at, const std::string& msg) {
     std::string line;
@@ -447,6 +402,82 @@ void readContact(const Section& s, ContactSpec& c) {
     }
 }
 
+// ---- liner bore distortion and thermal displacements (issue 7; BoreDistortion, ClearanceTerms) --
+
+/// liner.bore_distortion: {format: fourier, file: CSV} | {format: fourier, orders: [...]} |
+/// {format: nodal, file: CSV}. Tables are read and checked here; errors name the key.
+void readLiner(const Section& top, const EngineSpec& engine, LinerSpec& l) {
+    const Section s(top.ctx(), top.get("liner"), "liner", {"bore_distortion"});
+    if (!s.has("bore_distortion")) return;
+    const Section d(s.ctx(), s.get("bore_distortion"), s.keyPath("bore_distortion"), {"format", "file", "orders"});
+    BoreDistortionSpec& b = l.boreDistortion;
+    if (!d.has("format")) d.missing("format", "fourier (orders per axial position) or nodal (an FE result)");
+    const bool fourier = choice(d, "format", {"fourier", "nodal"}, 0) == 0;
+    if (d.has("file") && d.has("orders"))
+        d.fail("orders", "give either file (a CSV table) or orders (an inline table), not both");
+    if (!fourier && d.has("orders"))
+        d.fail("orders", "an inline table needs format: fourier; a nodal FE result is read from a file");
+    if (!d.has("file") && !d.has("orders"))
+        d.missing("file", fourier ? "the Fourier table (CSV), or an inline table under orders"
+                                  : "the FE result on the bore (CSV: x, y, z, ux, uy, uz or ur)");
+    if (d.has("file")) {
+        b.file = resolve(d.ctx(), text(d, "file", "", "a file path")).string();
+        try {
+            if (fourier)
+                b.fourier = readFourierTable(b.file, engine.bore);
+            else
+                b.nodes = readBoreNodes(b.file, engine.bore);
+        } catch (const std::exception& e) {
+            d.fail("file", e.what());
+        }
+        b.format = fourier ? BoreDistortionFormat::Fourier : BoreDistortionFormat::Nodal;
+        return;
+    }
+    const YAML::Node list = d.get("orders");
+    const std::string expected = "a list of {z or depth, order, amplitude, phase or phase_deg} mappings";
+    if (!list.IsSequence() || list.size() == 0) d.fail("orders", "expected " + expected + ", got " + describe(list));
+    std::vector<std::string> paths;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        paths.push_back(fmt::format("{}[{}]", d.keyPath("orders"), i));
+        const Section e(d.ctx(), list[i], paths.back(), {"z", "depth", "order", "amplitude", "phase", "phase_deg"});
+        if (!list[i].IsMap())
+            fail(d.ctx(), paths.back(), list[i], "expected " + expected + ", got " + describe(list[i]));
+        FourierTerm t;
+        if (e.has("z") == e.has("depth"))
+            e.fail(e.has("z") ? "depth" : "z", "give exactly one of z (m, liner frame) and depth (m below the liner top)");
+        t.z = e.has("z") ? number(e, "z", kLength, Sign::Any, 0.0) : -number(e, "depth", kLength, Sign::Any, 0.0);
+        if (!e.has("order")) e.missing("order", "an integer Fourier order >= 0");
+        t.order = integer(e, "order", 0, 0, "order");
+        t.amplitude = number(e, "amplitude", {"radial amplitude", "m"}, Sign::Any, 0.0, true);
+        if (e.has("phase") == e.has("phase_deg"))
+            e.fail(e.has("phase") ? "phase_deg" : "phase", "give exactly one of phase (rad) and phase_deg (deg)");
+        t.phase = e.has("phase") ? number(e, "phase", {"angle", "rad"}, Sign::Any, 0.0)
+                                 : number(e, "phase_deg", {"angle", "deg"}, Sign::Any, 0.0) * kDeg;
+        b.fourier.push_back(t);
+    }
+    if (const auto problem = checkFourierTerms(b.fourier, engine.bore))
+        fail(d.ctx(), paths[problem->index], list[problem->index],
+             problem->message + (problem->first != problem->index ? " (first at " + paths[problem->first] + ")" : ""));
+    sortFourierTerms(b.fourier);
+    b.format = BoreDistortionFormat::Fourier;
+}
+
+/// thermal: {file: thermal.h5}. With options.checkBodyFiles the file is read and validated.
+void readThermal(const Section& top, const CaseFileOptions& options, ThermalSpec& t) {
+    if (!top.has("thermal")) return;
+    const Section s(top.ctx(), top.get("thermal"), "thermal", {"file"});
+    const std::string file =
+        text(s, "file", "", "the thermal-displacement file (HDF5, from `flexehd thermal`)", true);
+    t.file = resolve(s.ctx(), file).string();
+    if (options.checkBodyFiles) {
+        try {
+            (void)readThermalDisplacementFile(t.file);
+        } catch (const std::exception& e) {
+            s.fail("file", e.what());
+        }
+    }
+}
+
 BodySpec readBody(const Section& bodies, const std::string& key, const std::string& defSurface,
                   const std::vector<std::string>& defInterfaces, const CaseFileOptions& options) {
     BodySpec b;
@@ -584,7 +615,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
 
     const Section top(ctx, root, "",
                       {"name", "engine", "piston", "lubricant", "contact", "cylinder_pressure", "bodies", "grid",
-                       "time", "coupling", "output"});
+                       "time", "coupling", "output", "liner", "thermal"});
     EngineCase c;
     c.path = absolute.string();
     c.name = text(top, "name", absolute.stem().string(), "a name (text)");
@@ -601,6 +632,13 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
         ctx, top.get("engine"), "engine",
         {"bore", "stroke", "rod_length", "pin_offset", "speed_rpm", "crankcase_pressure", "pin_tdc_depth"});
     readEngine(engine, c.engine);
+    readLiner(top, c.engine, c.liner);
+    readThermal(top, options, c.thermal);
+    if ((c.liner.boreDistortion.format != BoreDistortionFormat::None || !c.thermal.file.empty()) &&
+        !engine.has("pin_tdc_depth"))
+        engine.missing("pin_tdc_depth",
+                       "the depth of the pin axis below the deck at TDC in m (required with liner.bore_distortion "
+                       "or thermal: it places the piston on the liner's tables)");
     if (c.linerBody.model == BodyModel::Flexible && !engine.has("pin_tdc_depth"))
         engine.missing("pin_tdc_depth",
                        "the depth of the pin axis below the deck at TDC in m (required with a "

@@ -88,20 +88,25 @@ struct GridSpec {
 };
 
 struct TimeSpec {
-    double startDeg = 0.0;         ///< °, crank angle where the first cycle starts
+    double startDeg = 0.0;         ///< °, crank angle where the first cycle starts (outputs give true angles)
     double maxStepDeg = 0.5;       ///< °, largest crank-angle step
     double minStepDeg = 1e-3;      ///< °, step control gives up (diagnosis) below this
     double lateralTolerance = 0.2e-6;  ///< m, local error tolerance on the lateral shift
     double tiltTolerance = 5e-6;       ///< rad, local error tolerance on the tilt
     int maxCycles = 5;             ///< cycles simulated at most
-    double periodicityTolerance = 1e-6;  ///< m, max |e(φ) − e(φ − 720°)| to call it periodic
+    /// m: the cycle is periodic when max over its steps of |Δe| + |Δβ|·reach ≤ this, with Δ the change
+    /// from the previous cycle at the same crank angle and reach = max(skirtTop, −skirtBottom)
+    double periodicityTolerance = 1e-6;
 };
 
 enum class CouplingAcceleration { IqnIls, Aitken };
 
 struct CouplingSpec {
-    double tolerance = 1e-3;   ///< relative change of the modal coordinates (and film forces)
-    int maxIterations = 30;
+    /// Relative to the clearance: the film-structure coupling has converged when the largest film-
+    /// thickness change of the modal residual H(y) − y, max over grid nodes and bodies of |Δh|, is
+    /// ≤ tolerance × piston.clearance (docs/coupling.md §1).
+    double tolerance = 1e-3;
+    int maxIterations = 30;    ///< passes per step, one film solve each (+ 2 for the first pass's Jacobian)
     CouplingAcceleration acceleration = CouplingAcceleration::IqnIls;
     ElasticResponse response = ElasticResponse::QuasiStatic;
 };
@@ -110,6 +115,40 @@ struct OutputSpec {
     std::string directory;     ///< results directory (created), resolved to an absolute path
     double vtkEveryDeg = 10.0; ///< °, spacing of the VTK snapshots in the last cycle; 0 = none
     bool modeShapes = true;    ///< also export the bodies' mode shapes for ParaView
+};
+
+/// One Fourier order of the bore distortion at one axial position (case key
+/// `liner.bore_distortion`, format `fourier`): Δr(θ) = amplitude · cos(order · (θ − phase)).
+struct FourierTerm {
+    double z = 0.0;          ///< m, liner frame (0 at the liner top face, negative down the bore)
+    int order = 0;           ///< n ≥ 0
+    double amplitude = 0.0;  ///< m, radial, outward positive
+    double phase = 0.0;      ///< rad, from +x towards +y
+};
+
+/// One node of an external FE result on the bore (format `nodal`), liner frame.
+struct BoreNode {
+    double x = 0.0, y = 0.0, z = 0.0;  ///< m, undeformed position
+    double ur = 0.0;                   ///< m, radial displacement, outward positive
+};
+
+enum class BoreDistortionFormat { None, Fourier, Nodal };
+
+/// Liner bore distortion from assembly (GUIDE eq. 2: part of h_rigid; outward opens the gap).
+struct BoreDistortionSpec {
+    BoreDistortionFormat format = BoreDistortionFormat::None;  ///< None = no distortion
+    std::string file;                  ///< absolute path of the table, empty for an inline table
+    std::vector<FourierTerm> fourier;  ///< Fourier: the terms, sorted by z then order
+    std::vector<BoreNode> nodes;       ///< Nodal: the bore nodes of the FE result
+};
+
+struct LinerSpec {
+    BoreDistortionSpec boreDistortion;
+};
+
+/// Thermal displacements of piston and liner (case key `thermal`; file format: docs/coupling.md §5).
+struct ThermalSpec {
+    std::string file;  ///< absolute path of thermal.h5 (`flexehd thermal`); empty = no thermal
 };
 
 struct EngineCase {
@@ -127,6 +166,8 @@ struct EngineCase {
     TimeSpec time;
     CouplingSpec coupling;
     OutputSpec output;
+    LinerSpec liner;      ///< liner geometry beyond the bore: assembly distortion
+    ThermalSpec thermal;  ///< thermal displacements (none by default)
 };
 
 }  // namespace flexehd::cosim

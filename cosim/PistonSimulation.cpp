@@ -1,5 +1,6 @@
 #include "cosim/PistonSimulation.hpp"
 
+#include "cosim/ClearanceTerms.hpp"
 #include "lube/FilmIntegrals.hpp"
 #include "modal/ReducedBodyFile.hpp"
 
@@ -35,6 +36,15 @@ lube::ReynoldsOptions makeOptions(const LubricantSpec& l, lube::SolverKind kind)
 double wrap720(double deg) {
     double w = std::fmod(deg, 720.0);
     return w < 0.0 ? w + 720.0 : w;
+}
+
+// The crank angle 0–720° (0 = gas-exchange TDC) written for a point of `cycle`: the continuous
+// angle reduced by whole cycles. Cycle k spans time.start_deg + 720 (k − 1) … + 720, so the
+// reduced angle runs from start_deg to 720 and on from 0 to start_deg; it is 720 (not 0) at the
+// end of a cycle that starts at 0.
+double cycleCrankDeg(double continuousDeg, int cycle) {
+    const double a = continuousDeg - 720.0 * (cycle - 1);
+    return a > 720.0 + 1e-9 ? a - 720.0 : a;
 }
 }  // namespace
 
@@ -94,6 +104,16 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
                                                    lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
         ml_ = liner_->modes();
     }
+    if (ClearanceTerms::wanted(c)) {
+        // Liner offsets the grid visits: the extremes of the crank-slider over a revolution.
+        double lo = linerOffset(0.0), hi = lo;
+        for (int k = 1; k <= 1440; ++k) {
+            const double s = linerOffset(0.25 * k);
+            lo = std::min(lo, s);
+            hi = std::max(hi, s);
+        }
+        clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
+    }
     stats_.timings.setup = seconds(t0);
 }
 
@@ -108,17 +128,25 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     Evaluation ev;
     auto t0 = Clock::now();
     film_.rigidThickness(x[0], x[1], ev.hRigid);
+    if (clearance_) clearance_->add(ctx.offset, ev.hRigid);  // distortion, thermal (GUIDE eq. 2)
     ev.h = ev.hRigid;
-    Eigen::VectorXd dh;
-    if (piston_) {
-        piston_->filmChange(y.head(mp_), 0.0, dh);
-        ev.h += dh;
+    const double rigidSeconds = seconds(t0);
+    if (piston_ || liner_) {
+        // Elastic Δh of y at this offset; the Jacobian's evaluations reuse the pass's (y frozen).
+        t0 = Clock::now();
+        if (!(elasticOffset_ == ctx.offset && elasticY_.size() == y.size() && elasticY_ == y)) {
+            if (piston_) piston_->filmChange(y.head(mp_), 0.0, pistonDh_);
+            if (liner_) liner_->filmChange(y.tail(ml_), ctx.offset, linerDh_);
+            elasticY_ = y;
+            elasticOffset_ = ctx.offset;
+        }
+        if (piston_) ev.h += pistonDh_;
+        if (liner_) ev.h += linerDh_;
+        const double dt = seconds(t0);
+        stats_.timings.mapping += dt;
+        stats_.timings.structure += dt;
     }
-    if (liner_) {
-        liner_->filmChange(y.tail(ml_), ctx.offset, dh);
-        ev.h += dh;
-    }
-    stats_.timings.structure += seconds(t0);
+    stats_.timings.film += rigidSeconds;
     t0 = Clock::now();
     const lube::FilmGrid& g = film_.grid();
     // A Newton iterate may push the skirt into the liner: floor h (the asperity pressure, from the
@@ -178,21 +206,29 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
         t0 = Clock::now();
         const Eigen::VectorXd ptot = ev.p + ev.pc;
         ev.Hy.resize(mp_ + ml_);
-        Eigen::VectorXd q;
-        if (piston_) {
-            piston_->respond(ptot, 0.0, q);
+        Eigen::VectorXd fp, fl, q;
+        if (piston_) piston_->modalForce(ptot, 0.0, fp);  // load mapping: Φᵀ A p
+        if (liner_) liner_->modalForce(ptot, ctx.offset, fl);
+        const double tMap = seconds(t0);
+        t0 = Clock::now();
+        if (piston_) {  // modal update: q = C f
+            piston_->quasiStatic(fp, q);
             ev.Hy.head(mp_) = q;
         }
         if (liner_) {
-            liner_->respond(ptot, ctx.offset, q);
+            liner_->quasiStatic(fl, q);
             ev.Hy.tail(ml_) = q;
         }
-        stats_.timings.structure += seconds(t0);
+        const double tModal = seconds(t0);
+        stats_.timings.mapping += tMap;
+        stats_.timings.modal += tModal;
+        stats_.timings.structure += tMap + tModal;
     }
     return ev;
 }
 
-bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations) {
+bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
+                               std::string& failure) {
     Context ctx;
     ctx.crankDeg = s.crankDeg + dtDeg;
     ctx.dt = dtDeg * kin_.secondsPerDegree();
@@ -204,7 +240,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
     }
     ctx.crank = kin_.at(ctx.crankDeg);
     ctx.gas = dyn_.gasForce(pressure_(wrap720(ctx.crankDeg)));
-    ctx.offset = liner_ ? linerOffset(ctx.crankDeg) : 0.0;
+    ctx.offset = liner_ || clearance_ ? linerOffset(ctx.crankDeg) : 0.0;
     ctx.now = &s;
     ctx.before = &prev;
     const double dt = ctx.dt;
@@ -224,11 +260,17 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
     Eigen::Vector2d lastX = x, lastR = Eigen::Vector2d::Zero();
     Eigen::VectorXd dh, dh2;
     iterations = 0;
+    failure.clear();
+    // Why the iteration failed, for the diagnosis when the step size runs out.
+    auto fail = [&](const std::string& why) {
+        failure = fmt::format("{} (after {} film solves in this attempt)", why, iterations);
+        return false;
+    };
     for (int it = 0; it < maxIt; ++it) {
         try {
             ev = evaluate(ctx, x, y, true);
         } catch (const std::runtime_error&) {
-            return false;  // film solve failed: the caller shortens the step
+            return fail("a film solve failed");  // the caller shortens the step
         }
         ++iterations;
         double couplingRes = 0.0;
@@ -243,7 +285,9 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
                 liner_->filmChange(d.tail(ml_), ctx.offset, dh2);
                 couplingRes = std::max(couplingRes, dh2.cwiseAbs().maxCoeff());
             }
-            stats_.timings.structure += seconds(t0);
+            const double tMap = seconds(t0);
+            stats_.timings.mapping += tMap;
+            stats_.timings.structure += tMap;
         }
         if (it == 0) {
             // Finite-difference Jacobian of the motion residual (modal coordinates frozen).
@@ -255,7 +299,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
                 try {
                     e2 = evaluate(ctx, xp, y, false);
                 } catch (const std::runtime_error&) {
-                    return false;
+                    return fail("a film solve of the finite-difference Jacobian failed");
                 }
                 ++iterations;
                 jacobian_.col(i) = (e2.residual - ev.residual) / delta[i];
@@ -270,7 +314,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             }
         }
         const Eigen::Vector2d dx = -jacobian_.partialPivLu().solve(ev.residual);
-        if (!dx.allFinite()) return false;
+        if (!dx.allFinite()) return fail("the Newton update is not finite");
         const bool motionDone = std::abs(dx[0]) <= 1e-5 * tol[0] && std::abs(dx[1]) <= 1e-5 * tol[1] &&
                                 std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + forceFloor) &&
                                 std::abs(ev.residual[1]) <= 1e-4 * (ev.scale[1] + forceFloor * reach);
@@ -290,18 +334,26 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
         lastX = x;
         lastR = ev.residual;
         x += dx;
-        if (flexible) y = acc.next(y, ev.Hy);
+        if (flexible) {
+            const auto t0 = Clock::now();
+            y = acc.next(y, ev.Hy);  // modal update: IQN-ILS / Aitken
+            const double tModal = seconds(t0);
+            stats_.timings.modal += tModal;
+            stats_.timings.structure += tModal;
+        }
     }
+    failure = fmt::format("the Newton/coupling iteration did not converge in coupling.max_iterations = {} passes "
+                          "({} film solves, Jacobian included)", maxIt, iterations);
     return false;
 }
 
-StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cycle, double cycleStart,
-                                    double stepDeg, int iterations) const {
+StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cycle, double stepDeg,
+                                    int iterations) const {
     StepRecord r;
     const CrankState k = kin_.at(s.crankDeg);
     const double gas = dyn_.gasForce(pressure_(wrap720(s.crankDeg)));
     r.cycle = cycle;
-    r.crankDeg = s.crankDeg - cycleStart;
+    r.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
     r.time = s.time;
     r.lateral = s.x[0];
     r.tilt = s.x[1];
@@ -320,12 +372,13 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
     return r;
 }
 
-Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cycle, double cycleStart) const {
+Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cycle) const {
     Snapshot sn;
     const lube::FilmGrid& g = film_.grid();
     const CrankState k = kin_.at(s.crankDeg);
     sn.cycle = cycle;
-    sn.crankDeg = s.crankDeg - cycleStart;
+    sn.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
+    sn.continuousDeg = s.crankDeg;
     sn.pinHeight = k.position;
     sn.linerOffset = linerOffset(s.crankDeg);
     sn.lateral = s.x[0];
@@ -360,6 +413,10 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     State s;
     s.crankDeg = T.startDeg;
     film_.rigidThickness(0.0, 0.0, s.h);
+    if (clearance_) {
+        clearance_->add(linerOffset(s.crankDeg), s.h);
+        if (cb.progress) cb.progress("film thickness: " + clearance_->summary());
+    }
     s.hRigid = s.h;
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);
     State prev = s;
@@ -367,6 +424,9 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     const double every = case_.output.vtkEveryDeg;
     const double skirtLength = case_.piston.skirtTop - case_.piston.skirtBottom;
     std::vector<StepRecord> previousCycle, cycleRecords;
+    // Degrees since the start of the cycle of each record (monotonic, unlike the written crank
+    // angle when time.start_deg > 0): the abscissa of the periodicity comparison.
+    std::vector<double> previousSince, cycleSince;
     Evaluation ev, lastEv;
     bool haveLast = false;
     stats_ = RunStatistics{.timings = stats_.timings};
@@ -379,12 +439,14 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         const double cycleStart = T.startDeg + 720.0 * (cycle - 1);
         const double cycleEnd = spanDeg > 0.0 ? std::min(cycleStart + 720.0, T.startDeg + spanDeg) : cycleStart + 720.0;
         cycleRecords.clear();
+        cycleSince.clear();
         std::vector<Snapshot> snaps;
         if (haveLast) {  // the boundary point opens the new cycle too
-            StepRecord r = record(s, lastEv, cycle, cycleStart, 0.0, 0);
+            StepRecord r = record(s, lastEv, cycle, 0.0, 0);
             cycleRecords.push_back(r);
+            cycleSince.push_back(s.crankDeg - cycleStart);
             if (cb.onStep) cb.onStep(r);
-            if (every > 0.0) snaps.push_back(snapshot(s, lastEv, cycle, cycleStart));
+            if (every > 0.0) snaps.push_back(snapshot(s, lastEv, cycle));
         }
         double nextProgress = cycleStart;
         while (s.crankDeg < cycleEnd - 1e-9) {
@@ -400,7 +462,8 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             if (std::abs(s.crankDeg + step - cycleEnd) < 1e-9) atSnapshot = every > 0.0;
             State n;
             int iterations = 0;
-            const bool ok = advance(s, prev, step, n, ev, iterations);
+            std::string failure;
+            const bool ok = advance(s, prev, step, n, ev, iterations, failure);
             double ratio = 0.0;
             if (ok) {
                 const double dt = step * kin_.secondsPerDegree();
@@ -418,9 +481,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
                         "time.max_step_deg, a finer film grid, more coupling.max_iterations, or check the loads and "
                         "clearances of the case.",
                         T.minStepDeg, wrap720(s.crankDeg), cycle,
-                        ok ? fmt::format("local error {:.3g} x the tolerance", ratio)
-                           : fmt::format("Newton/coupling iterations did not converge in {} film solves "
-                                         "(or a film solve failed)", case_.coupling.maxIterations),
+                        ok ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure,
                         s.x[0] * 1e6, s.x[1] * 1e3, s.h.minCoeff() * 1e6));
                 }
                 continue;
@@ -446,10 +507,11 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             s = std::move(n);
             lastEv = ev;
             haveLast = true;
-            StepRecord rec = record(s, ev, cycle, cycleStart, step, iterations);
+            StepRecord rec = record(s, ev, cycle, step, iterations);
             cycleRecords.push_back(rec);
+            cycleSince.push_back(s.crankDeg - cycleStart);
             if (cb.onStep) cb.onStep(rec);
-            if (atSnapshot) snaps.push_back(snapshot(s, ev, cycle, cycleStart));
+            if (atSnapshot) snaps.push_back(snapshot(s, ev, cycle));
             // Next step: grow with the error ratio, from the unclipped step size.
             const double grow = ratio > 0.0 ? std::min(2.0, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 2.0;
             dtDeg = std::min(T.maxStepDeg, std::max(step, std::min(dtDeg, T.maxStepDeg)) * grow);
@@ -468,11 +530,15 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         if (!previousCycle.empty()) {
             double err = 0.0;
             std::size_t j = 0;
-            for (const StepRecord& r : cycleRecords) {
-                while (j + 1 < previousCycle.size() && previousCycle[j + 1].crankDeg < r.crankDeg) ++j;
+            for (std::size_t i = 0; i < cycleRecords.size(); ++i) {
+                const StepRecord& r = cycleRecords[i];
+                const double at = cycleSince[i];
+                while (j + 1 < previousCycle.size() && previousSince[j + 1] < at) ++j;
+                const std::size_t j1 = std::min(j + 1, previousCycle.size() - 1);
                 const StepRecord& a = previousCycle[j];
-                const StepRecord& b = previousCycle[std::min(j + 1, previousCycle.size() - 1)];
-                const double w = b.crankDeg > a.crankDeg ? std::clamp((r.crankDeg - a.crankDeg) / (b.crankDeg - a.crankDeg), 0.0, 1.0) : 0.0;
+                const StepRecord& b = previousCycle[j1];
+                const double sa = previousSince[j], sb = previousSince[j1];
+                const double w = sb > sa ? std::clamp((at - sa) / (sb - sa), 0.0, 1.0) : 0.0;
                 const double e0 = a.lateral + w * (b.lateral - a.lateral);
                 const double t0 = a.tilt + w * (b.tilt - a.tilt);
                 err = std::max({err, std::abs(r.lateral - e0) + std::abs(r.tilt - t0) * std::max(case_.piston.skirtTop, -case_.piston.skirtBottom)});
@@ -492,6 +558,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             break;
         }
         previousCycle = cycleRecords;
+        previousSince = cycleSince;
     }
     stats_.timings.dynamics = seconds(tRun) - (stats_.timings.film - filmT0) - (stats_.timings.structure - structT0);
     return cycleRecords;

@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,10 +35,13 @@
 
 namespace flexehd::cosim {
 
+class ClearanceTerms;
+
 /// Film and body state at one written crank angle (the VTK snapshots).
 struct Snapshot {
     int cycle = 0;
-    double crankDeg = 0.0;       ///< ° within the cycle
+    double crankDeg = 0.0;       ///< °, the crank angle 0–720 (0 = gas-exchange TDC), as in StepRecord
+    double continuousDeg = 0.0;  ///< °, the continuous crank angle: time.start_deg + degrees turned
     double pinHeight = 0.0;      ///< m, cylinder-frame z of the pin axis (crank axis at 0)
     double linerOffset = 0.0;    ///< m, liner-frame z of the piston frame's origin
     double lateral = 0.0, tilt = 0.0;
@@ -48,7 +52,9 @@ struct Snapshot {
 struct Timings {
     double setup = 0.0;      ///< s: bodies, mappings, compliance
     double film = 0.0;       ///< s: Reynolds solves, contact, film integrals
-    double structure = 0.0;  ///< s: modal response and deformation mapping
+    double structure = 0.0;  ///< s: modal response and deformation mapping (mapping + modal)
+    double mapping = 0.0;    ///< s, of structure: load and deformation mapping products (Φᵀ A p, D Φ y)
+    double modal = 0.0;      ///< s, of structure: quasi-static response C f and the coupling accelerator
     double dynamics = 0.0;   ///< s: everything else in the step loop
 };
 
@@ -89,6 +95,8 @@ public:
     const PistonDynamics& dynamics() const { return dyn_; }
     const FlexibleSurface* piston() const { return piston_.get(); }
     const FlexibleSurface* liner() const { return liner_.get(); }
+    /// Bore distortion and thermal terms of the film thickness (null when the case has none).
+    const ClearanceTerms* clearance() const { return clearance_.get(); }
     /// Liner-frame z of the piston frame's origin at the crank angle.
     double linerOffset(double crankDeg) const;
 
@@ -97,9 +105,10 @@ private:
     struct Context;
     struct Evaluation;
     Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
-    bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations);
-    StepRecord record(const State& s, const Evaluation& ev, int cycle, double cycleStart, double stepDeg, int iterations) const;
-    Snapshot snapshot(const State& s, const Evaluation& ev, int cycle, double cycleStart) const;
+    bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
+                 std::string& failure);
+    StepRecord record(const State& s, const Evaluation& ev, int cycle, double stepDeg, int iterations) const;
+    Snapshot snapshot(const State& s, const Evaluation& ev, int cycle) const;
 
     EngineCase case_;
     CrankKinematics kin_;
@@ -110,7 +119,11 @@ private:
     lube::ReynoldsSolver fallback_;  // active set on a sparse factorization, if multigrid fails
     std::optional<lube::GreenwoodTripp> contact_;
     std::unique_ptr<FlexibleSurface> piston_, liner_;
+    std::unique_ptr<ClearanceTerms> clearance_;  // added to h_rigid at the liner offset
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
+    // Elastic Δh of the last y and liner offset evaluated (reused by the Jacobian's evaluations).
+    Eigen::VectorXd elasticY_, pistonDh_, linerDh_;
+    double elasticOffset_ = std::numeric_limits<double>::quiet_NaN();
     Eigen::Matrix2d jacobian_;
     bool haveJacobian_ = false;
     RunStatistics stats_;

@@ -92,6 +92,8 @@ nlohmann::json summaryJson(const cosim::EngineCase& c, const cosim::PistonSimula
     d["timings_s"] = {{"setup", st.timings.setup},
                       {"film", st.timings.film},
                       {"structure", st.timings.structure},
+                      {"mapping", st.timings.mapping},
+                      {"modal", st.timings.modal},
                       {"dynamics", std::max(0.0, st.timings.dynamics - outputInRun)},
                       {"output", outputSeconds + outputInRun},
                       {"total", totalSeconds}};
@@ -157,7 +159,7 @@ void runCase(const RunArgs& a) {
             liner.origin = Eigen::Vector3d(0.0, 0.0, s.pinHeight - s.linerOffset);
             liner.displacement = sim.liner()->displacement(s.linerModal);
         }
-        fields.write(720.0 * (s.cycle - 1) + s.crankDeg, film, sim.piston() ? &piston : nullptr,
+        fields.write(s.continuousDeg, film, sim.piston() ? &piston : nullptr,
                      sim.liner() ? &liner : nullptr);
         outputInRun += w.seconds();
     };

@@ -3,6 +3,7 @@
 // error naming the file and the key; periodic piecewise-linear interpolation against hand
 // values; the example's piston mass properties against an integration over the piston mesh.
 #include <gmock/gmock.h>
+#include "TestFiles.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,28 +45,9 @@ std::string source(const std::string& rel) {
     return std::string(FLEXEHD_SOURCE_DIR) + "/" + rel;
 }
 
-fs::path scratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    auto dir = fs::temp_directory_path() / ("flexehd_" + std::string(info->test_suite_name()) + "_" + info->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-template <typename F>
-std::string errorOf(F&& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
-
-void writeFile(const fs::path& p, const std::string& text) {
-    std::ofstream out(p, std::ios::binary);
-    out << text;
-}
+using flexehd::test::errorOf;
+using flexehd::test::scratchDir;
+using flexehd::test::writeFile;
 
 CaseFileOptions noBodyFiles() {
     CaseFileOptions o;

@@ -1,0 +1,247 @@
+// Thermal analysis at the co-simulation level: the surface table of a freely expanding
+// sleeve (mean over θ of u_r = α ΔT R), the liner temperature interpolation (exact for data
+// linear in z and r), and `flexehd thermal` end to end on the coarse shipped meshes: a
+// readable thermal.h5 with the agreed layout, VTU files, clear errors for bad input.
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "CliRunner.hpp"
+#include "cosim/CylindricalSurfaceSampler.hpp"
+#include "cosim/LinerTemperature.hpp"
+#include "cosim/ThermalDisplacementFile.hpp"
+#include "fem/MeshReader.hpp"
+#include "fem/ThermalDeformation.hpp"
+
+namespace fs = std::filesystem;
+using namespace flexehd;
+using testing::HasSubstr;
+
+namespace {
+
+const std::string kSource = FLEXEHD_SOURCE_DIR;
+
+fs::path scratch() {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    auto dir = fs::temp_directory_path() / ("flexehd_thermal_" + std::string(info->name()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+}  // namespace
+
+// Free expansion of a sleeve (outer radius 43 mm, inner 40 mm) under uniform ΔT: the mean
+// over a uniform θ table of u_r is α ΔT R on either surface (a rigid translation left by the
+// support averages out over θ), and the points of a full cylinder are all on the surface.
+TEST(SurfaceTable, FreeExpansionOfASleeveGivesAlphaDeltaTR) {
+    const fem::Mesh m = fem::readMesh(kSource + "/tests/cosim/data/sleeve.geo", {2, 0.008});
+    const double alpha = 1.1e-5, dT = 100.0, Tref = 293.15;
+    const Eigen::VectorXd T = Eigen::VectorXd::Constant(m.numNodes(), Tref + dT);
+    const auto d = fem::solveThermalDeformation(m, {1.1e11, 0.26, 7200.0}, alpha, T, Tref, {{}, "inner"});
+    for (const auto& [group, R] : {std::pair<std::string, double>{"outer", 0.043}, {"inner", 0.040}}) {
+        const cosim::SurfaceTable t = cosim::CylindricalSurfaceSampler(m, {group}).sample(d.displacement, 9, 48);
+        ASSERT_EQ(t.radial.rows(), 9);
+        ASSERT_EQ(t.radial.cols(), 48);
+        EXPECT_NEAR(t.axial.front(), -0.030, 1e-9);
+        EXPECT_NEAR(t.axial.back(), 0.020, 1e-9);
+        EXPECT_NEAR(t.theta[1], 2 * std::numbers::pi / 48, 1e-15);
+        EXPECT_EQ(t.onSurface.cast<int>().sum(), 9 * 48);
+        for (Eigen::Index i = 0; i < t.radial.rows(); ++i)
+            EXPECT_NEAR(t.radial.row(i).mean(), alpha * dT * R, 1e-3 * alpha * dT * R) << group << " row " << i;
+    }
+}
+
+// Thermocouples at two radii, temperatures linear in z: T(r, z) = a + b z + c r reproduced
+// at every node (linear in z between stations, linear in r through the two depths).
+TEST(LinerTemperature, ReproducesFieldsLinearInZAndR) {
+    const fem::Mesh m = fem::readMesh(kSource + "/tests/cosim/data/sleeve.geo", {1, 0.008});
+    auto exact = [](double r, double z) { return 400.0 + 800.0 * z - 5000.0 * (r - 0.041); };
+    const std::vector<double> radii{0.041, 0.042};
+    std::vector<cosim::ThermocoupleStation> st;
+    for (double z : {-0.030, -0.010, 0.020}) st.push_back({z, {exact(0.041, z), exact(0.042, z)}});
+    const Eigen::VectorXd T = cosim::linerTemperature(m, radii, st);
+    double err = 0.0;
+    for (fem::Index n = 0; n < m.numNodes(); ++n)
+        err = std::max(err, std::abs(T(n) - exact(m.nodes.col(n).head<2>().norm(), m.nodes(2, n))));
+    EXPECT_LT(err, 1e-9);
+    // Beyond the last station the temperature stays at the last station's value.
+    EXPECT_NEAR(cosim::thermocoupleTemperature(radii, st, 0.041, 0.05), exact(0.041, 0.020), 1e-12);
+}
+
+// ---- flexehd thermal ------------------------------------------------------------------------
+
+namespace {
+
+/// A thermal case on the coarse test meshes (docs/meshes.md), grid 16 × 24.
+std::string coarseCase(const std::string& extraPiston = "", const std::string& templugs = "") {
+    return "name: coarse thermal test\n"
+           "reference_temperature: 293.15\n"
+           "grid: {axial_nodes: 16, circumferential_nodes: 24}\n"
+           "piston:\n"
+           "  mesh: " + kSource + "/meshes/piston.geo\n"
+           "  mesh_size: 0.0065\n"
+           "  material: {youngs_modulus: 7.5e10, poisson_ratio: 0.33, conductivity: 150.0, expansion: 2.1e-5}\n"
+           "  convection:\n"
+           "    crown: {h: 300.0, fluid_temperature: 900.0}\n"
+           "    ring_lands: {h: 150.0, fluid_temperature: 420.0}\n"
+           "    ring_grooves: {h: 1500.0, fluid_temperature: 410.0}\n"
+           "    skirt: {h: 600.0, fluid_temperature: 390.0}\n"
+           "    skirt_taper: {h: 600.0, fluid_temperature: 390.0}\n"
+           "    pin_bore: {h: 800.0, fluid_temperature: 380.0}\n"
+           "    underside: {h: 500.0, fluid_temperature: 370.0}\n" +
+           extraPiston +
+           "  calibration:\n"
+           "    fit_h: [crown, underside]\n"
+           "    templugs:\n" +
+           (templugs.empty() ? "      - {name: crown_centre, position: [0.0, 0.0, 0.031], temperature: 520.0}\n"
+                               "      - {name: top_land, position: [0.041, 0.0, 0.030], temperature: 490.0}\n"
+                               "      - {name: pin_boss, position: [0.0, 0.030, 0.012], temperature: 445.0}\n"
+                             : templugs) +
+           "liner:\n"
+           "  mesh: " + kSource + "/meshes/liner.geo\n"
+           "  mesh_size: 0.012\n"
+           "  material: {youngs_modulus: 1.1e11, poisson_ratio: 0.26, expansion: 1.1e-5}\n"
+           "  thermocouples:\n"
+           "    radii: [0.0445, 0.0480]\n"
+           "    stations:\n"
+           "      - [-0.150, 370.0, 365.0]\n"
+           "      - [-0.010, 420.0, 405.0]\n";
+}
+
+std::string writeCase(const fs::path& dir, const std::string& text) {
+    const auto p = dir / "thermal.yaml";
+    std::ofstream(p) << text;
+    return p.string();
+}
+
+std::string stringAttribute(hid_t obj, const char* name) {
+    const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
+    const hid_t t = H5Aget_type(a);
+    std::string v;
+    if (H5Tis_variable_str(t) > 0) {
+        char* p = nullptr;
+        const hid_t mem = H5Tcopy(H5T_C_S1);
+        H5Tset_size(mem, H5T_VARIABLE);
+        H5Tset_cset(mem, H5Tget_cset(t));
+        H5Aread(a, mem, &p);
+        v = p ? p : "";
+        H5free_memory(p);
+        H5Tclose(mem);
+    }
+    H5Tclose(t);
+    H5Aclose(a);
+    return v;
+}
+
+std::vector<hsize_t> dims(hid_t file, const std::string& name) {
+    const hid_t d = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    if (d < 0) return {};
+    const hid_t s = H5Dget_space(d);
+    std::vector<hsize_t> out(std::size_t(H5Sget_simple_extent_ndims(s)));
+    H5Sget_simple_extent_dims(s, out.data(), nullptr);
+    H5Sclose(s);
+    H5Dclose(d);
+    return out;
+}
+
+}  // namespace
+
+TEST(ThermalCli, WritesThermalFileWithAgreedLayoutAndVtu) {
+    const fs::path dir = scratch();
+    const std::string casePath = writeCase(dir, coarseCase());
+    const auto r = test::runFlexehd("thermal " + casePath + " --out " + (dir / "out").string() + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);
+    for (const char* f : {"thermal.h5", "piston.vtu", "liner.vtu", "summary.json"})
+        EXPECT_TRUE(fs::is_regular_file(dir / "out" / f)) << f;
+    EXPECT_GT(double(doc["piston"]["temperature"]["max_k"]), double(doc["piston"]["temperature"]["min_k"]));
+    EXPECT_EQ(doc["piston"]["calibration"]["templugs"].size(), 3u);
+    EXPECT_TRUE(bool(doc["piston"]["calibration"]["matched"])) << doc["piston"]["calibration"]["message"];
+    EXPECT_LT(double(doc["piston"]["calibration"]["rms_residual_k"]), 5.0);
+    EXPECT_GT(double(doc["liner"]["temperature"]["max_k"]), 400.0);
+
+    // The agreed layout, read with the raw HDF5 API.
+    const std::string h5 = (dir / "out" / "thermal.h5").string();
+    const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_EQ(stringAttribute(file, "format"), "flexehd-thermal");
+    {
+        int version = 0;
+        const hid_t a = H5Aopen(file, "version", H5P_DEFAULT);
+        H5Aread(a, H5T_NATIVE_INT, &version);
+        H5Aclose(a);
+        EXPECT_EQ(version, 1);
+    }
+    for (const std::string g : {"/piston", "/liner"}) {
+        const hid_t grp = H5Gopen2(file, g.c_str(), H5P_DEFAULT);
+        ASSERT_GE(grp, 0) << g;
+        EXPECT_EQ(stringAttribute(grp, "units"), "m");
+        H5Gclose(grp);
+        EXPECT_EQ(dims(file, g + "/axial"), std::vector<hsize_t>({16}));
+        EXPECT_EQ(dims(file, g + "/theta"), std::vector<hsize_t>({24}));
+        EXPECT_EQ(dims(file, g + "/radial_displacement"), std::vector<hsize_t>({16, 24}));
+    }
+    H5Fclose(file);
+
+    // And through the reader `flexehd run` uses.
+    const cosim::ThermalDisplacement t = cosim::readThermalDisplacementFile(h5);
+    ASSERT_TRUE(t.piston && t.liner);
+    EXPECT_NEAR(t.piston->axial.front(), -0.025, 1e-6);   // skirt bottom, piston frame
+    EXPECT_NEAR(t.piston->axial.back(), 0.0123, 1e-6);    // top of the skirt taper
+    EXPECT_NEAR(t.liner->axial.front(), -0.160, 1e-6);    // liner frame
+    EXPECT_NEAR(t.liner->axial.back(), 0.0, 1e-6);
+    // Plausibility: hot aluminium skirt grows outward by α (T − T_ref) R within the range of its
+    // temperatures; the bore grows outward.
+    const double R = 0.04295, a = 2.1e-5, Tref = 293.15;
+    const double uMin = a * (double(doc["piston"]["temperature"]["min_k"]) - Tref) * R;
+    const double uMax = a * (double(doc["piston"]["temperature"]["max_k"]) - Tref) * R;
+    const double uSkirt = t.piston->at(0.0, 0.0);
+    EXPECT_GT(uSkirt, 0.5 * uMin);
+    EXPECT_LT(uSkirt, 1.5 * uMax);
+    EXPECT_GT(t.liner->at(-0.08, 1.0), 0.0);
+}
+
+TEST(ThermalCli, UnknownKeyNamesTheKey) {
+    const fs::path dir = scratch();
+    std::string text = coarseCase("  suport: pin_bore\n");
+    const auto r = test::runFlexehd("thermal " + writeCase(dir, text) + " --out " + (dir / "out").string());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_THAT(r.err, HasSubstr("piston.suport"));
+    EXPECT_THAT(r.err, HasSubstr("unknown key (did you mean 'support'?)"));
+}
+
+TEST(ThermalCli, MissingMeshFileIsNamed) {
+    const fs::path dir = scratch();
+    std::string text = coarseCase();
+    text.replace(text.find("meshes/liner.geo"), 16, "meshes/linr.geo");
+    const auto r = test::runFlexehd("thermal " + writeCase(dir, text) + " --out " + (dir / "out").string());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_THAT(r.err, HasSubstr("liner.mesh"));
+    EXPECT_THAT(r.err, HasSubstr("file not found"));
+    EXPECT_THAT(test::runFlexehd("thermal " + (dir / "nothing.yaml").string()).err, HasSubstr("not found"));
+}
+
+TEST(ThermalCli, OutOfRangeValueAndTemplugOutsideThePiston) {
+    const fs::path dir = scratch();
+    std::string text = coarseCase();
+    text.replace(text.find("expansion: 2.1e-5"), 17, "expansion: -2.1e-5");
+    auto r = test::runFlexehd("thermal " + writeCase(dir, text));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_THAT(r.err, HasSubstr("piston.material.expansion"));
+
+    r = test::runFlexehd("thermal " + writeCase(dir, coarseCase("", "      - {name: crown_centre, position: [0.0, 0.0, 0.031], temperature: 520.0}\n"
+                                                                      "      - {name: in_the_air, position: [0.0, 0.0, 0.040], temperature: 500.0}\n")) +
+                         " --out " + (dir / "out").string());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_THAT(r.err, HasSubstr("piston.calibration"));
+    EXPECT_THAT(r.err, HasSubstr("'in_the_air'"));
+    EXPECT_THAT(r.err, HasSubstr("outside the mesh"));
+}
