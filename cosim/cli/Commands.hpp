@@ -12,5 +12,7 @@ void addInspectCommand(CLI::App& app);
 void addExportModesCommand(CLI::App& app);
 void addBearingCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
+void addThermalCommand(CLI::App& app);
+void addSweepCommand(CLI::App& app);
 
 }  // namespace flexehd::cli

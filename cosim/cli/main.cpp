@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
     flexehd::cli::addExportModesCommand(app);
     flexehd::cli::addBearingCommand(app);
     flexehd::cli::addRunCommand(app);
+    flexehd::cli::addThermalCommand(app);
+    flexehd::cli::addSweepCommand(app);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,289 @@
+// `flexehd sweep`: study files (designs, errors), and small studies of the coarse rigid example
+// (16 × 48 grid, one cycle): one process and two MPI ranks give the same study.csv, a killed
+// study resumes with only the missing variant, a failing variant is recorded with its error.
+#include "cosim/BodyCache.hpp"
+#include "cosim/StudyFile.hpp"
+#include "cosim/VariantCase.hpp"
+#include "CliRunner.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using flexehd::test::CommandResult;
+using flexehd::test::runFlexehd;
+using testing::AllOf;
+using testing::HasSubstr;
+using testing::Not;
+
+namespace {
+
+const std::string kSource = FLEXEHD_SOURCE_DIR;
+
+struct TempDir {
+    fs::path path;
+    explicit TempDir(const std::string& name)
+        : path(fs::temp_directory_path() / ("flexehd_sweep_" + name + "_" + std::to_string(::getpid()))) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+/// A study of the rigid example engine, coarse: `body` gives design, parameters, etc.
+std::string writeStudy(const fs::path& dir, const std::string& body, const std::string& name = "study.yaml") {
+    const fs::path file = dir / name;
+    std::ofstream(file) << "name: test study\n"
+                        << "base_case: " << kSource << "/examples/engine86/hd.yaml\n"
+                        << "directory: results\n"
+                        << "set:\n"
+                        << "  grid.axial_nodes: 16\n"
+                        << "  grid.circumferential_nodes: 48\n"
+                        << "  time.max_cycles: 1\n"
+                        << "  output.vtk_every_deg: 0\n"
+                        << "  output.mode_shapes: false\n"
+                        << body;
+    return file.string();
+}
+
+std::string readText(const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+/// study.csv without its run_time_s column (the one column that differs between runs).
+std::vector<std::string> csvWithoutTimes(const fs::path& p) {
+    std::vector<std::string> lines;
+    std::istringstream in(readText(p));
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    for (std::stringstream h(line); std::getline(h, line, ',');) header.push_back(line);
+    const auto col = std::find(header.begin(), header.end(), "run_time_s") - header.begin();
+    std::istringstream again(readText(p));
+    while (std::getline(again, line)) {
+        std::vector<std::string> f;
+        for (std::stringstream s(line); std::getline(s, line, ',');) f.push_back(line);
+        if (col < long(f.size())) f.erase(f.begin() + col);
+        std::string joined;
+        for (const auto& x : f) joined += x + ",";
+        lines.push_back(joined);
+    }
+    return lines;
+}
+
+CommandResult runMpi(int ranks, const std::string& args) {
+    // Open MPI refuses root unless told; the container runs tests as root.
+    const std::string cmd = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") + FLEXEHD_MPIEXEC +
+                            " -n " + std::to_string(ranks) + " --oversubscribe " + FLEXEHD_BINARY + " " + args;
+    const auto err = fs::temp_directory_path() / ("flexehd_mpi_err_" + std::to_string(::getpid()));
+    CommandResult r;
+    FILE* p = popen((cmd + " 2>" + err.string()).c_str(), "r");
+    std::array<char, 4096> buf;
+    while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
+    r.status = WEXITSTATUS(pclose(p));
+    r.err = readText(err);
+    fs::remove(err);
+    return r;
+}
+
+nlohmann::json studyJson(const fs::path& dir) { return nlohmann::json::parse(readText(dir / "study.json")); }
+
+}  // namespace
+
+// ---- study files ---------------------------------------------------------------------------
+
+TEST(StudyFile, FullFactorialListsAndRanges) {
+    TempDir t("factorial");
+    const auto s = flexehd::cosim::readStudyFile(writeStudy(t.path,
+        "parameters:\n"
+        "  engine.pin_offset: [-0.5e-3, 0.0]\n"
+        "  piston.clearance: {start: 30e-6, stop: 70e-6, count: 3}\n"));
+    ASSERT_EQ(s.variants.size(), 6u);
+    EXPECT_EQ(s.parameters, (std::vector<std::string>{"engine.pin_offset", "piston.clearance"}));
+    EXPECT_EQ(s.variants[0].values, (std::vector<std::string>{"-0.5e-3", "3e-05"}));
+    EXPECT_EQ(s.variants[2].values, (std::vector<std::string>{"-0.5e-3", "7e-05"}));  // the last key varies fastest
+    EXPECT_EQ(s.variants[4].values, (std::vector<std::string>{"0.0", "5e-05"}));
+    EXPECT_EQ(s.variants[5].id, "v0005");
+    EXPECT_EQ(s.directory, (t.path / "results").string());
+    EXPECT_EQ(s.outputs, flexehd::cosim::defaultStudyOutputs());
+    // The variant's case: the value set, the paths absolute, the fixed keys applied.
+    const std::string c = flexehd::cosim::variantCaseText(s, s.variants[4]);
+    EXPECT_THAT(c, HasSubstr("clearance: 5e-05"));
+    EXPECT_THAT(c, HasSubstr("axial_nodes: 16"));
+    EXPECT_THAT(c, HasSubstr("cylinder_pressure: " + kSource + "/examples/engine86/cylinder_pressure.csv"));
+}
+
+TEST(StudyFile, LatinHypercubeHitsEveryStratumOnce) {
+    TempDir t("lhs");
+    const std::string body = "design: latin_hypercube\nsamples: 8\nseed: 42\n"
+                             "parameters:\n"
+                             "  piston.clearance: {min: 20e-6, max: 60e-6}\n"
+                             "  lubricant.viscosity: {min: 0.005, max: 0.013}\n";
+    const auto s = flexehd::cosim::readStudyFile(writeStudy(t.path, body));
+    ASSERT_EQ(s.variants.size(), 8u);
+    for (std::size_t p = 0; p < 2; ++p) {
+        const double lo = p == 0 ? 20e-6 : 0.005, hi = p == 0 ? 60e-6 : 0.013;
+        std::set<int> strata;
+        for (const auto& v : s.variants) strata.insert(int((std::stod(v.values[p]) - lo) / (hi - lo) * 8));
+        EXPECT_EQ(strata.size(), 8u) << s.parameters[p];
+    }
+    const auto again = flexehd::cosim::readStudyFile(writeStudy(t.path, body, "again.yaml"));
+    EXPECT_EQ(again.variants[3].values, s.variants[3].values);  // the seed fixes the sample
+}
+
+TEST(StudyFile, TableAndBodyRecipesShareCachedBodies) {
+    TempDir t("table");
+    const auto s = flexehd::cosim::readStudyFile(writeStudy(t.path,
+        "design: table\n"
+        "variants:\n"
+        "  - {piston.clearance: 40e-6, reduce.piston.modes: 10}\n"
+        "  - {piston.clearance: 60e-6, reduce.piston.modes: 10}\n"
+        "  - {piston.clearance: 60e-6, reduce.piston.modes: 12}\n"
+        "reduce:\n"
+        "  piston: {mesh: " + kSource + "/meshes/piston.geo, size: 0.0065, E: 7.5e10, nu: 0.33, rho: 2700,\n"
+        "           interface: [\"pin_bore:rbe2@0,0,0\"], static_correction: skirt}\n"));
+    ASSERT_EQ(s.variants.size(), 3u);
+    const auto b0 = flexehd::cosim::variantBodies(s, s.variants[0]);
+    const auto b1 = flexehd::cosim::variantBodies(s, s.variants[1]);
+    const auto b2 = flexehd::cosim::variantBodies(s, s.variants[2]);
+    ASSERT_EQ(b0.size(), 1u);
+    EXPECT_EQ(b0[0].file, b1[0].file);  // same recipe: built once
+    EXPECT_NE(b0[0].file, b2[0].file);
+    EXPECT_THAT(b0[0].args, testing::Contains("pin_bore:rbe2@0,0,0"));
+    const std::string c = flexehd::cosim::variantCaseText(s, s.variants[0], {{"piston", b0[0].file}});
+    EXPECT_THAT(c, HasSubstr("file: " + b0[0].file));  // the rigid piston of the base case became this body
+}
+
+TEST(StudyFile, BadInputIsAClearError) {
+    TempDir t("bad");
+    auto error = [&](const std::string& body) {
+        try {
+            flexehd::cosim::readStudyFile(writeStudy(t.path, body));
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_THAT(error("parameters:\n  engine.pin_ofset: [0.0, 1e-3]\n"),
+                AllOf(HasSubstr("parameters.engine.pin_ofset: not a case-file key"), HasSubstr("did you mean 'pin_offset'")));
+    EXPECT_THAT(error("parameters:\n  engine.pin_offset: [0.0]\nsamplez: 3\n"), HasSubstr("samplez (line"));
+    EXPECT_THAT(error("parameters:\n  engine.pin_offset: [0.0]\noutputs: [friction_power]\n"),
+                HasSubstr("'friction_power' is not a summary.json key"));
+    EXPECT_THAT(error("design: latin_hypercube\nparameters:\n  engine.pin_offset: {min: 0, max: 1e-3}\n"),
+                HasSubstr("needs samples"));
+    EXPECT_THAT(error("parameters:\n  engine.bore.x: [1]\n"), HasSubstr("engine.bore is '0.086' in the base case"));
+    EXPECT_THAT(error("parameters:\n  reduce.piston.size: [0.006]\n"), HasSubstr("no reduced-body recipe"));
+    // And through the command line: message and exit code 1.
+    const auto r = runFlexehd("sweep " + writeStudy(t.path, "parameters:\n  piston.clearence: [5e-5]\n") + " --quiet");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_THAT(r.err, HasSubstr("flexehd: error: "));
+    EXPECT_THAT(r.err, HasSubstr("parameters.piston.clearence: not a case-file key"));
+}
+
+// ---- studies that run ------------------------------------------------------------------------
+
+TEST(CliSweep, OneProcessAndTwoMpiRanksGiveTheSameStudy) {
+    TempDir t("mpi");
+    const std::string study = writeStudy(t.path, "parameters:\n  engine.pin_offset: [-0.8e-3, 0.0, 0.8e-3]\n");
+    const auto one = runFlexehd("sweep " + study + " --out " + (t.path / "one").string() + " --quiet --json");
+    ASSERT_EQ(one.status, 0) << one.err;
+    const auto two = runMpi(2, "sweep " + study + " --out " + (t.path / "two").string() + " --quiet --json");
+    ASSERT_EQ(two.status, 0) << two.err << two.out;
+    const auto j1 = nlohmann::json::parse(one.out), j2 = nlohmann::json::parse(two.out);
+    EXPECT_EQ(j1["ranks"], 1);
+    EXPECT_EQ(j2["ranks"], 2);
+    EXPECT_EQ(j1["ok"], 3);
+    EXPECT_EQ(j2["ok"], 3);
+    const auto a = csvWithoutTimes(t.path / "one" / "study.csv"), b = csvWithoutTimes(t.path / "two" / "study.csv");
+    ASSERT_EQ(a.size(), 4u);  // header + 3 variants
+    EXPECT_EQ(a, b);
+    // Both ranks ran variants; the pin offset moves the secondary motion.
+    std::set<int> ranks;
+    const auto twoJson = studyJson(t.path / "two");
+    for (const auto& v : twoJson["variants"]) ranks.insert(v["rank"].get<int>());
+    EXPECT_EQ(ranks.size(), 2u);
+    const auto v = studyJson(t.path / "one")["variants"];
+    EXPECT_NE(v[0]["outputs"]["lateral_max_m"], v[2]["outputs"]["lateral_max_m"]);
+    EXPECT_GT(v[1]["outputs"]["friction_power_mean_w"].get<double>(), 0.0);
+}
+
+TEST(CliSweep, ResumesWithOnlyTheMissingVariantAndRecordsAFailingOne) {
+    TempDir t("resume");
+    // v0001 has a negative clearance: it fails, the others complete.
+    const std::string study = writeStudy(t.path, "design: table\nvariants:\n"
+                                                 "  - {piston.clearance: 40e-6}\n"
+                                                 "  - {piston.clearance: -5e-6}\n"
+                                                 "  - {piston.clearance: 60e-6}\n");
+    const fs::path dir = t.path / "results";
+    const auto first = runFlexehd("sweep " + study + " --quiet --json");
+    ASSERT_EQ(first.status, 0) << first.err;
+    auto j = nlohmann::json::parse(first.out);
+    EXPECT_EQ(j["ok"], 2);
+    EXPECT_EQ(j["failed"], 1);
+    auto s = studyJson(dir);
+    EXPECT_EQ(s["variants"][1]["status"], "failed");
+    EXPECT_THAT(s["variants"][1]["message"].get<std::string>(), HasSubstr("piston.clearance"));
+    EXPECT_EQ(s["variants"][2]["status"], "ok");
+    EXPECT_THAT(readText(dir / "study.csv"), HasSubstr("1,v0001,-5e-6,failed,"));
+
+    // An interrupted study: v0002's results are gone (and its row with them).
+    const auto kept = fs::last_write_time(dir / "variants/v0000/summary.json");
+    fs::remove_all(dir / "variants/v0002");
+    const auto again = runFlexehd("sweep " + study + " --json");  // progress lines on stderr
+    ASSERT_EQ(again.status, 0) << again.err;
+    j = nlohmann::json::parse(again.out);
+    EXPECT_EQ(j["resumed"], 1);  // v0000
+    EXPECT_EQ(j["ran"], 2);      // v0002, and v0001 that failed
+    EXPECT_EQ(j["ok"], 2);
+    EXPECT_EQ(fs::last_write_time(dir / "variants/v0000/summary.json"), kept);
+    EXPECT_THAT(again.err, HasSubstr("v0002"));
+    EXPECT_THAT(again.err, Not(HasSubstr("] v0000")));
+    s = studyJson(dir);
+    EXPECT_TRUE(s["variants"][0]["resumed"].get<bool>());
+    EXPECT_EQ(s["variants"][2]["status"], "ok");
+    EXPECT_EQ(s["counts"]["pending"], 0);
+}
+
+TEST(CliSweep, AVariantOverItsTimeLimitIsStoppedAndRecorded) {
+    TempDir t("timeout");
+    const std::string study = writeStudy(t.path, "parameters:\n  engine.pin_offset: [0.0]\nrun: {timeout_s: 0.2}\n");
+    const auto r = runFlexehd("sweep " + study + " --quiet --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["failed"], 1);
+    const auto s = studyJson(t.path / "results");
+    EXPECT_EQ(s["variants"][0]["status"], "failed");
+    EXPECT_THAT(s["variants"][0]["message"].get<std::string>(), HasSubstr("timed out after 0.2 s (the run)"));
+}
+
+TEST(CliSweep, VariantsWithTheSameBodyRecipeShareOneBuild) {
+    TempDir t("bodies");
+    const std::string study = writeStudy(t.path,
+        "design: table\nvariants:\n"
+        "  - {piston.clearance: 40e-6, reduce.piston.modes: 6}\n"
+        "  - {piston.clearance: 60e-6, reduce.piston.modes: 6}\n"
+        "reduce:\n"
+        "  piston: {mesh: " + kSource + "/meshes/piston.geo, size: 0.0065, E: 7.5e10, nu: 0.33, rho: 2700,\n"
+        "           interface: [\"pin_bore:rbe2@0,0,0\"], static_correction: skirt, axial_order: 2,\n"
+        "           circumferential_order: 4}\n");
+    const auto r = runFlexehd("sweep " + study + " --quiet --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["ok"], 2) << readText(t.path / "results/study.csv");
+    int bodies = 0;
+    for (const auto& e : fs::directory_iterator(t.path / "results/cache")) bodies += e.path().extension() == ".h5";
+    EXPECT_EQ(bodies, 1);
+    // The first variant built it (its log has the reduction), the second only ran.
+    EXPECT_THAT(readText(t.path / "results/variants/v0000/run.log"), HasSubstr("modes"));
+    EXPECT_THAT(readText(t.path / "results/variants/v0001/run.log"), Not(HasSubstr("reducing")));
+    const auto summary = nlohmann::json::parse(readText(t.path / "results/variants/v0001/summary.json"));
+    EXPECT_EQ(summary["bodies"]["piston"], "flexible");
+}
