@@ -1,6 +1,6 @@
 #include "cosim/ThermalDisplacementFile.hpp"
 
-#include <hdf5.h>
+#include "modal/Hdf5Handle.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,39 +16,8 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-/// Owns an HDF5 identifier.
-class Id {
-public:
-    using Closer = herr_t (*)(hid_t);
-    Id(hid_t id, Closer close) : id_(id), close_(close) {}
-    Id(const Id&) = delete;
-    Id& operator=(const Id&) = delete;
-    ~Id() {
-        if (id_ >= 0) close_(id_);
-    }
-    hid_t get() const { return id_; }
-    bool valid() const { return id_ >= 0; }
-
-private:
-    hid_t id_;
-    Closer close_;
-};
-
-/// Silences HDF5's own error printing while alive (errors become exceptions).
-class Quiet {
-public:
-    Quiet() {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    }
-    ~Quiet() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-    Quiet(const Quiet&) = delete;
-    Quiet& operator=(const Quiet&) = delete;
-
-private:
-    H5E_auto2_t func_ = nullptr;
-    void* data_ = nullptr;
-};
+using Id = modal::Hdf5Handle;
+using Quiet = modal::QuietHdf5Errors;
 
 class Reader {
 public:

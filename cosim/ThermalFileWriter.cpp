@@ -1,6 +1,6 @@
 #include "cosim/ThermalFileWriter.hpp"
 
-#include <hdf5.h>
+#include "modal/Hdf5Handle.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -10,27 +10,7 @@
 namespace flexehd::cosim {
 namespace {
 
-/// Owns an HDF5 identifier.
-class Id {
-public:
-    using Closer = herr_t (*)(hid_t);
-    Id(hid_t id, Closer close) : id_(id), close_(close) {}
-    Id(const Id&) = delete;
-    Id& operator=(const Id&) = delete;
-    ~Id() {
-        if (id_ >= 0) close_(id_);
-    }
-    hid_t get() const { return id_; }
-    herr_t close() {
-        const herr_t r = id_ >= 0 ? close_(id_) : 0;
-        id_ = H5I_INVALID_HID;
-        return r;
-    }
-
-private:
-    hid_t id_;
-    Closer close_;
-};
+using Id = modal::Hdf5Handle;
 
 class Writer {
 public:

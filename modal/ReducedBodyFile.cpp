@@ -1,6 +1,7 @@
 #include "modal/ReducedBodyFile.hpp"
 
 #include "fem/AtomicFile.hpp"
+#include "modal/Hdf5Handle.hpp"
 
 #include <hdf5.h>
 
@@ -24,51 +25,7 @@ using Dims = std::vector<hsize_t>;
 
 // --- HDF5 plumbing ----------------------------------------------------------------------
 
-/// Owns one HDF5 identifier and releases it with the matching H5?close function.
-class Handle {
-public:
-    using Closer = herr_t (*)(hid_t);
-    Handle(hid_t id, Closer close) : id_(id), close_(close) {}
-    Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)), close_(other.close_) {}
-    Handle(const Handle&) = delete;
-    Handle& operator=(const Handle&) = delete;
-    Handle& operator=(Handle&& other) noexcept {
-        if (this != &other) {
-            close();
-            id_ = std::exchange(other.id_, H5I_INVALID_HID);
-            close_ = other.close_;
-        }
-        return *this;
-    }
-    ~Handle() {
-        if (id_ >= 0) close_(id_);
-    }
-    hid_t get() const { return id_; }
-    bool valid() const { return id_ >= 0; }
-    /// Closes now and reports the result (closing a file flushes it, which can fail).
-    herr_t close() { return id_ >= 0 ? close_(std::exchange(id_, H5I_INVALID_HID)) : 0; }
-
-private:
-    hid_t id_;
-    Closer close_;
-};
-
-/// Turns off HDF5's printing of its error stack for the lifetime of the object (we
-/// report errors as exceptions instead) and restores the previous handler afterwards.
-class QuietHdf5Errors {
-public:
-    QuietHdf5Errors() {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    }
-    ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-    QuietHdf5Errors(const QuietHdf5Errors&) = delete;
-    QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
-
-private:
-    H5E_auto2_t func_ = nullptr;
-    void* data_ = nullptr;
-};
+using Handle = Hdf5Handle;
 
 /// " (HDF5: <the most specific message on HDF5's error stack>)", e.g. "truncated file:
 /// eof = ...", or "" if the stack is empty; clears the stack.
