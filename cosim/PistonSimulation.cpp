@@ -123,6 +123,24 @@ double PistonSimulation::linerOffset(double crankDeg) const {
     return -case_.engine.pinTdcDepth - (kin_.tdcPosition() - kin_.at(crankDeg).position);
 }
 
+ClearanceRange PistonSimulation::centredClearance(double crankDeg) const {
+    Eigen::VectorXd h;
+    film_.rigidThickness(0.0, 0.0, h);
+    if (clearance_) clearance_->add(linerOffset(crankDeg), h);
+    const lube::FilmGrid& g = film_.grid();
+    ClearanceRange r{std::numeric_limits<double>::infinity(), 0.0, -std::numeric_limits<double>::infinity()};
+    int n = 0;
+    for (int k = 0; k < g.size(); ++k)
+        if (g.kind(k) != lube::NodeKind::Void) {
+            r.min = std::min(r.min, h[k]);
+            r.max = std::max(r.max, h[k]);
+            r.mean += h[k];
+            ++n;
+        }
+    r.mean /= std::max(n, 1);
+    return r;
+}
+
 PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, const Eigen::Vector2d& x,
                                                         const Eigen::VectorXd& y, bool structure) {
     Evaluation ev;
@@ -415,7 +433,16 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     film_.rigidThickness(0.0, 0.0, s.h);
     if (clearance_) {
         clearance_->add(linerOffset(s.crankDeg), s.h);
-        if (cb.progress) cb.progress("film thickness: " + clearance_->summary());
+        if (cb.progress) {
+            cb.progress("film thickness: " + clearance_->summary());
+            std::string line = "centred clearance (min / mean / max over the skirt):";
+            for (const auto& [name, deg] : {std::pair{"TDC", 0.0}, {"mid-stroke", 90.0}, {"BDC", 180.0}}) {
+                const ClearanceRange r = centredClearance(deg);
+                line += fmt::format(" {} {:.1f} / {:.1f} / {:.1f} um{}", name, r.min * 1e6, r.mean * 1e6, r.max * 1e6,
+                                    deg < 180.0 ? ";" : "");
+            }
+            cb.progress(line);
+        }
     }
     s.hRigid = s.h;
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);

@@ -72,6 +72,13 @@ struct RunStatistics {
     Timings timings;
 };
 
+/// The film thickness with the piston centred (no lateral shift, no tilt) and no elastic
+/// deformation — clearance + profile + ovality + bore distortion + thermal growth, i.e. the hot
+/// running clearance when the case names a thermal file — over the skirt's film nodes.
+struct ClearanceRange {
+    double min = 0.0, mean = 0.0, max = 0.0;  ///< m
+};
+
 struct SimulationCallbacks {
     std::function<void(const StepRecord&)> onStep;      ///< every accepted step
     std::function<void(const Snapshot&)> onSnapshot;    ///< final cycle, every output.vtkEveryDeg
@@ -99,6 +106,9 @@ public:
     const ClearanceTerms* clearance() const { return clearance_.get(); }
     /// Liner-frame z of the piston frame's origin at the crank angle.
     double linerOffset(double crankDeg) const;
+    /// The centred, undeformed film thickness at the crank angle's piston position (see
+    /// ClearanceRange; the liner terms depend on where the piston is in the bore).
+    ClearanceRange centredClearance(double crankDeg) const;
 
 private:
     struct State;

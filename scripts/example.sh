@@ -3,7 +3,8 @@
 # paper's engine (examples/engine86/: SI single cylinder, 86 x 86 mm, 50 um clearance, firing
 # at 1000 rpm, fully flooded): reduce the piston (and the liner) from meshes/, run the piston's
 # secondary motion with rigid bodies (HD) and with the flexible piston (EHD) until the cycle is
-# periodic, and plot the comparison (like the seed's Fig. 5). Results in out/engine86/.
+# periodic, compute the thermal state (flexehd thermal) and run HD with it, and plot the
+# comparison (like the seed's Fig. 5). Results in out/engine86/.
 # FLEXEHD_EXAMPLE_LINER=1 also runs the flexible piston + flexible liner case.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -28,8 +29,12 @@ echo "== HD: rigid piston and liner"
 "$flexehd" run "$root/examples/engine86/hd.yaml"
 echo "== EHD: flexible piston"
 "$flexehd" run "$root/examples/engine86/case.yaml"
-dirs=("$out/hd" "$out/ehd")
-labels=(HD EHD)
+echo "== thermal state of piston and liner (templug calibration, thermal expansion)"
+"$flexehd" thermal "$root/examples/engine86/thermal.yaml" | tail -n 4
+echo "== HD with the thermal state: cold clearance 75 um, hot running clearance 20-40 um"
+"$flexehd" run "$root/examples/engine86/thermal_hd.yaml"
+dirs=("$out/hd" "$out/ehd" "$out/thermal_hd")
+labels=(HD EHD "HD hot")
 if [[ "${FLEXEHD_EXAMPLE_LINER:-0}" == 1 ]]; then
   echo "== EHD: flexible piston and liner"
   "$flexehd" run "$root/examples/engine86/ehd_liner.yaml"
@@ -40,6 +45,7 @@ fi
 /usr/bin/python3 "$root/scripts/plot_results.py" "${dirs[0]}" --compare "${dirs[@]:1}" \
   --labels "${labels[@]}" --out "$out/plots"
 echo
-echo "Results: $out/{hd,ehd}/history.csv and summary.json; plots in $out/plots/."
+echo "Results: $out/{hd,ehd,thermal_hd}/history.csv and summary.json; plots in $out/plots/;"
+echo "temperatures and thermal expansion in $out/thermal/ (piston.vtu, liner.vtu)."
 echo "ParaView: open $out/ehd/film.pvd (film grid: pressure, film thickness, contact, shear) and"
 echo "$out/ehd/piston.pvd (apply Warp By Vector on 'displacement' with a large scale factor)."

@@ -76,6 +76,13 @@ nlohmann::json summaryJson(const cosim::EngineCase& c, const cosim::PistonSimula
         d["contact_force_max_n"] = m.contactForceMax;
         d["side_force_max_n"] = m.sideForceMax;
     }
+    // The undeformed film with the piston centred: the hot running clearance with a thermal file.
+    nlohmann::json centred;
+    for (const auto& [name, deg] : {std::pair{"tdc", 0.0}, {"mid_stroke", 90.0}, {"bdc", 180.0}}) {
+        const cosim::ClearanceRange r = sim.centredClearance(deg);
+        centred[name] = {{"min", r.min}, {"mean", r.mean}, {"max", r.max}};
+    }
+    d["centred_clearance_m"] = centred;
     d["cycles"] = st.cycles;
     d["periodic"] = st.periodic;
     d["periodicity_error_m"] = st.periodicityError;

@@ -213,11 +213,18 @@ TEST(CaseFileExample, ReadsWithTheDocumentedValues) {
     EXPECT_GT(p(360.0), p(0.0) * 10.0);  // compression
 }
 
-TEST(CaseFileExample, VariantsDifferOnlyInBodiesAndOutput) {
+TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     const EngineCase ehd = readCaseFile(source("examples/engine86/case.yaml"), noBodyFiles());
     const EngineCase hd = readCaseFile(source("examples/engine86/hd.yaml"), noBodyFiles());
     const EngineCase both = readCaseFile(source("examples/engine86/ehd_liner.yaml"), noBodyFiles());
+    const EngineCase hot = readCaseFile(source("examples/engine86/thermal_hd.yaml"), noBodyFiles());
     EXPECT_EQ(hd.pistonBody.model, BodyModel::Rigid);
+    EXPECT_EQ(hot.pistonBody.model, BodyModel::Rigid);
+    EXPECT_EQ(hot.linerBody.model, BodyModel::Rigid);
+    // The thermal variant: cold clearance 75 µm (docs/thermal.md §7) and the thermal file.
+    EXPECT_EQ(hot.piston.clearance, 75.0e-6);
+    EXPECT_EQ(hot.thermal.file, fs::path(source("out/engine86/thermal/thermal.h5")).lexically_normal().string());
+    EXPECT_TRUE(hd.thermal.file.empty() && ehd.thermal.file.empty() && both.thermal.file.empty());
     EXPECT_EQ(hd.linerBody.model, BodyModel::Rigid);
     EXPECT_EQ(both.pistonBody.model, BodyModel::Flexible);
     EXPECT_EQ(both.linerBody.model, BodyModel::Flexible);
@@ -225,7 +232,7 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesAndOutput) {
     EXPECT_EQ(both.linerBody.interface, "top_seat");
     EXPECT_THAT(both.linerBody.interfaces, ::testing::ElementsAre("top_seat", "bottom_seat"));
     EXPECT_EQ(both.linerBody.file, fs::path(source("out/engine86/liner.h5")).lexically_normal().string());
-    for (const EngineCase* v : {&hd, &both}) {
+    for (const EngineCase* v : {&hd, &both, &hot}) {
         EXPECT_NE(v->output.directory, ehd.output.directory);
         // Everything else equal: compare the parameter structs field by field through memcmp-free
         // checks of the values that drive the physics.
@@ -243,7 +250,7 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesAndOutput) {
         EXPECT_EQ(v->piston.cgZ, ehd.piston.cgZ);
         EXPECT_EQ(v->piston.skirtTop, ehd.piston.skirtTop);
         EXPECT_EQ(v->piston.skirtBottom, ehd.piston.skirtBottom);
-        EXPECT_EQ(v->piston.clearance, ehd.piston.clearance);
+        if (v != &hot) EXPECT_EQ(v->piston.clearance, ehd.piston.clearance);
         EXPECT_EQ(v->piston.skirtHalfAngle, ehd.piston.skirtHalfAngle);
         EXPECT_EQ(v->piston.ovality, ehd.piston.ovality);
         ASSERT_EQ(v->piston.profile.size(), ehd.piston.profile.size());

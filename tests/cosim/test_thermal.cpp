@@ -14,8 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.hpp"
+#include "cosim/CaseFile.hpp"
 #include "cosim/CylindricalSurfaceSampler.hpp"
 #include "cosim/LinerTemperature.hpp"
+#include "cosim/PistonSimulation.hpp"
 #include "cosim/ThermalDisplacementFile.hpp"
 #include "fem/MeshReader.hpp"
 #include "fem/ThermalDeformation.hpp"
@@ -244,4 +246,50 @@ TEST(ThermalCli, OutOfRangeValueAndTemplugOutsideThePiston) {
     EXPECT_THAT(r.err, HasSubstr("piston.calibration"));
     EXPECT_THAT(r.err, HasSubstr("'in_the_air'"));
     EXPECT_THAT(r.err, HasSubstr("outside the mesh"));
+}
+
+// The shipped thermal example (examples/engine86/thermal.yaml on the coarse test meshes) with the
+// cold geometry of examples/engine86/thermal_hd.yaml: the hot running clearance — the film with
+// the piston centred — is positive and in the band docs/thermal.md §7 gives for the example
+// (10–40 µm at the largest skirt diameter, TDC to BDC), and the thermal closure of the mean film
+// lies within the free-expansion bounds α_p ΔT_skirt R − α_l ΔT_bore R_bore built from the
+// example's own measured temperatures (skirt templugs 377–408 K, bore-side thermocouples
+// 370–418 K): an FE field with a wrong sign, factor or reference temperature falls outside.
+TEST(ThermalExample, HotRunningClearanceIsPlausible) {
+    const fs::path dir = scratch();
+    std::ifstream in(kSource + "/examples/engine86/thermal.yaml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto replace = [&](const std::string& from, const std::string& to) {
+        const auto at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    };
+    replace("../../meshes/piston.geo", kSource + "/meshes/piston.geo");
+    replace("../../meshes/liner.geo", kSource + "/meshes/liner.geo");
+    replace("mesh_size: 0.004 ", "mesh_size: 0.0065");  // the coarse test meshes
+    replace("mesh_size: 0.005", "mesh_size: 0.012");
+    const auto r = test::runFlexehd("thermal " + writeCase(dir, text) + " --out " + (dir / "out").string() + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+
+    cosim::EngineCase hot = cosim::readCaseFile(kSource + "/examples/engine86/thermal_hd.yaml");
+    hot.thermal.file = (dir / "out" / "thermal.h5").string();
+    cosim::EngineCase cold = hot;
+    cold.thermal.file.clear();
+    const cosim::PistonSimulation hotSim(hot), coldSim(cold);
+
+    const double R = 0.5 * hot.engine.bore, Tref = 293.15, ap = 20.0e-6, al = 11.0e-6;  // thermal.yaml
+    const double closureMin = (ap * (377.0 - Tref) - al * (418.0 - Tref)) * R;
+    const double closureMax = (ap * (408.0 - Tref) - al * (370.0 - Tref)) * R;
+    for (const double deg : {0.0, 90.0, 180.0}) {
+        const cosim::ClearanceRange h = hotSim.centredClearance(deg), c = coldSim.centredClearance(deg);
+        EXPECT_GE(h.min, 10.0e-6) << deg;
+        EXPECT_LE(h.min, 40.0e-6) << deg;
+        const double closure = c.mean - h.mean;
+        EXPECT_GT(closure, closureMin) << deg;
+        EXPECT_LT(closure, closureMax) << deg;
+        std::printf("crank %5.1f deg: hot min %.1f mean %.1f max %.1f um, cold mean %.1f um, closure %.1f um "
+                    "(free-expansion bounds %.1f ... %.1f)\n",
+                    deg, h.min * 1e6, h.mean * 1e6, h.max * 1e6, c.mean * 1e6, closure * 1e6, closureMin * 1e6,
+                    closureMax * 1e6);
+    }
 }
