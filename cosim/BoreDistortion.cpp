@@ -1,10 +1,13 @@
 #include "cosim/BoreDistortion.hpp"
 
+#include "cosim/VtuPointField.hpp"
+
 #include <Eigen/QR>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <limits>
@@ -239,7 +242,30 @@ LinerFieldTable fourierDistortionTable(const std::vector<FourierTerm>& terms, co
 
 // ---- nodal FE result ----------------------------------------------------------------------
 
-std::vector<BoreNode> readBoreNodes(const std::string& path, double bore) {
+namespace {
+
+/// The nodes of a .vtu result: the point-data array `field` is u (3 components) or u_r (1).
+std::vector<BoreNode> readVtuNodes(const std::string& path, const std::string& field) {
+    const VtuPointField f = readVtuPointField(path, field);
+    if (f.values.rows() != 3 && f.values.rows() != 1)
+        throw std::runtime_error(fmt::format("{}: point-data array '{}' has {} components; expected 3 (u_x, u_y, u_z) "
+                                             "or 1 (u_r)",
+                                             path, field, f.values.rows()));
+    std::vector<BoreNode> all(std::size_t(f.points.cols()));
+    for (Eigen::Index j = 0; j < f.points.cols(); ++j) {
+        BoreNode& n = all[std::size_t(j)];
+        n.x = f.points(0, j), n.y = f.points(1, j), n.z = f.points(2, j);
+        const double r = std::hypot(n.x, n.y);
+        if (f.values.rows() == 1)
+            n.ur = f.values(0, j);
+        else if (r > 0.0)
+            n.ur = (f.values(0, j) * n.x + f.values(1, j) * n.y) / r;  // u · (cos θ, sin θ, 0)
+    }
+    return all;
+}
+
+/// The nodes of a CSV result (header: x, y, z and ux, uy, uz or ur).
+std::vector<BoreNode> readCsvNodes(const std::string& path) {
     const std::string help = "x, y, z (m, liner frame) and ux, uy, uz or ur (m)";
     std::ifstream probe(path);
     if (!probe) throw std::runtime_error(path + ": no such file or not readable");
@@ -260,7 +286,6 @@ std::vector<BoreNode> readBoreNodes(const std::string& path, double bore) {
         throw std::runtime_error(path + ": give either ur or ux, uy, uz, not both");
     std::vector<BoreNode> all;
     all.reserve(t.rows.size());
-    double rMin = std::numeric_limits<double>::infinity(), rMax = 0.0;
     for (const auto& row : t.rows) {
         BoreNode n{get(t, row, "x"), get(t, row, "y"), get(t, row, "z"), 0.0};
         const double r = std::hypot(n.x, n.y);
@@ -269,9 +294,24 @@ std::vector<BoreNode> readBoreNodes(const std::string& path, double bore) {
         } else if (r > 0.0) {
             n.ur = (get(t, row, "ux") * n.x + get(t, row, "uy") * n.y) / r;  // u · (cos θ, sin θ, 0)
         }
-        rMin = std::min(rMin, r);
-        rMax = std::max(rMax, r);
         all.push_back(n);
+    }
+    return all;
+}
+
+}  // namespace
+
+bool isVtuFile(const std::string& path) {
+    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    return ext == ".vtu";
+}
+
+std::vector<BoreNode> readBoreNodes(const std::string& path, double bore, const std::string& field) {
+    const std::vector<BoreNode> all = isVtuFile(path) ? readVtuNodes(path, field) : readCsvNodes(path);
+    double rMin = std::numeric_limits<double>::infinity(), rMax = 0.0;
+    for (const BoreNode& n : all) {
+        rMin = std::min(rMin, std::hypot(n.x, n.y));
+        rMax = std::max(rMax, std::hypot(n.x, n.y));
     }
     const double R = 0.5 * bore;
     if (std::abs(rMin - R) > 0.01 * R)

@@ -8,8 +8,8 @@
 //    at the table's positions z_k; an order missing at a position has A_n = 0 there. Between
 //    positions Δr is linear in z (the field, i.e. A_n cos nφ_n and A_n sin nφ_n, is interpolated,
 //    not amplitude and phase, so the phase never wraps), and constant beyond the first and last.
-//  * Nodal displacements of an external FE result on the bore (x, y, z and u_x, u_y, u_z, or
-//    u_r): the radial component u_r = u_x cos θ + u_y sin θ at each bore node, fitted at every
+//  * Nodal displacements of an external FE result on the bore (CSV or .vtu; x, y, z and u_x, u_y,
+//    u_z, or u_r): the radial component u_r = u_x cos θ + u_y sin θ at each bore node, fitted at every
 //    point of a liner-fixed grid by a moving least-squares quadratic in (z, R θ) over the 24
 //    nearest bore nodes (Wendland weight, support = the 24th node's distance): reproduces
 //    quadratics in (z, Rθ) exactly and is continuous.
@@ -47,11 +47,14 @@ void sortFourierTerms(std::vector<FourierTerm>& terms);
 /// Δr(z, θ) of the (sorted) terms, linear in z between positions, constant beyond (m).
 double fourierDistortion(const std::vector<FourierTerm>& terms, double z, double theta);
 
-/// Reads the nodes of an FE displacement result (CSV with a header): columns `x`, `y`, `z` (m,
-/// liner frame) and either `ux`, `uy`, `uz` or `ur` (m); other columns (node ids) are ignored.
-/// Keeps the bore nodes: those within 1e-3 · bore/2 of the innermost radius, which must lie within
-/// 1 % of bore/2. Errors: std::runtime_error "FILE[:LINE]: reason".
-std::vector<BoreNode> readBoreNodes(const std::string& path, double bore);
+/// Reads the nodes of an FE displacement result: a CSV with a header (columns `x`, `y`, `z` (m,
+/// liner frame) and either `ux`, `uy`, `uz` or `ur` (m); other columns, e.g. node ids, ignored)
+/// or a VTK .vtu file (points in m, liner frame; the point-data array `field`: 3 components u or
+/// 1 component u_r, m). Keeps the bore nodes: those within 1e-3 · bore/2 of the innermost radius,
+/// which must lie within 1 % of bore/2. Errors: std::runtime_error "FILE[:LINE]: reason".
+std::vector<BoreNode> readBoreNodes(const std::string& path, double bore, const std::string& field = "displacement");
+/// True for a path ending in .vtu (any case): read as VTK XML, otherwise as CSV.
+bool isVtuFile(const std::string& path);
 
 /// The distortion tabulated for `grid`'s θ columns. Fourier: rows at the table's positions.
 LinerFieldTable fourierDistortionTable(const std::vector<FourierTerm>& terms, const lube::FilmGrid& grid,

@@ -409,7 +409,8 @@ void readContact(const Section& s, ContactSpec& c) {
 void readLiner(const Section& top, const EngineSpec& engine, LinerSpec& l) {
     const Section s(top.ctx(), top.get("liner"), "liner", {"bore_distortion"});
     if (!s.has("bore_distortion")) return;
-    const Section d(s.ctx(), s.get("bore_distortion"), s.keyPath("bore_distortion"), {"format", "file", "orders"});
+    const Section d(s.ctx(), s.get("bore_distortion"), s.keyPath("bore_distortion"),
+                    {"format", "file", "orders", "field"});
     BoreDistortionSpec& b = l.boreDistortion;
     if (!d.has("format")) d.missing("format", "fourier (orders per axial position) or nodal (an FE result)");
     const bool fourier = choice(d, "format", {"fourier", "nodal"}, 0) == 0;
@@ -419,14 +420,17 @@ void readLiner(const Section& top, const EngineSpec& engine, LinerSpec& l) {
         d.fail("orders", "an inline table needs format: fourier; a nodal FE result is read from a file");
     if (!d.has("file") && !d.has("orders"))
         d.missing("file", fourier ? "the Fourier table (CSV), or an inline table under orders"
-                                  : "the FE result on the bore (CSV: x, y, z, ux, uy, uz or ur)");
+                                  : "the FE result on the bore (CSV: x, y, z, ux, uy, uz or ur; or a .vtu)");
     if (d.has("file")) {
         b.file = resolve(d.ctx(), text(d, "file", "", "a file path")).string();
+        if (d.has("field") && (fourier || !isVtuFile(b.file)))
+            d.fail("field", "names the point-data array of a nodal result in a .vtu file; this table is a CSV");
+        const std::string field = text(d, "field", "displacement", "the point-data array of the .vtu file");
         try {
             if (fourier)
                 b.fourier = readFourierTable(b.file, engine.bore);
             else
-                b.nodes = readBoreNodes(b.file, engine.bore);
+                b.nodes = readBoreNodes(b.file, engine.bore, field);
         } catch (const std::exception& e) {
             d.fail("file", e.what());
         }

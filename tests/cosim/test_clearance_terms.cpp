@@ -8,6 +8,13 @@
 
 #include <fmt/format.h>
 #include <hdf5.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
 
 #include <cmath>
 #include <filesystem>
@@ -339,6 +346,78 @@ TEST(BoreDistortion, NodalFeResultIsFittedOnTheBore) {
                 AllOf(HasSubstr("short.csv"), HasSubstr("cover liner-frame z = -0.05 … 0 m"), HasSubstr("sweeps")));
 }
 
+// The same FE result as a .vtu file (written by VTK's own writer, as an external FE code's
+// export would be, with the nodes as points and no cells needed) gives the same bore nodes as the
+// CSV: u as a 3-component array (float64, and float32 under another name), or u_r as 1 component.
+TEST(BoreDistortion, NodalFeResultFromVtuEqualsTheCsv) {
+    const fs::path dir = scratchDir();
+    const double bore = 0.086, R = 0.5 * bore;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();  // (the second test below keeps VTK's default float32 points)
+    vtkNew<vtkDoubleArray> u, ur;
+    vtkNew<vtkFloatArray> u32;
+    u->SetName("displacement");
+    u->SetNumberOfComponents(3);
+    u32->SetName("U_assembly");
+    u32->SetNumberOfComponents(3);
+    ur->SetName("ur");
+    std::string csv = "x,y,z,ux,uy,uz\n";
+    for (int i = 0; i <= 40; ++i)
+        for (int j = 0; j < 36; ++j)
+            for (double r : {R, R + 0.003}) {
+                const double z = -0.160 + 0.004 * i, th = 2 * kPi * j / 36;
+                const double radial = r == R ? 3e-6 + 4e-6 * std::cos(2 * th) + 1e-4 * z : 1e-4;
+                const double x = r * std::cos(th), y = r * std::sin(th);
+                points->InsertNextPoint(x, y, z);
+                u->InsertNextTuple3(radial * std::cos(th), radial * std::sin(th), 1e-6);
+                u32->InsertNextTuple3(radial * std::cos(th), radial * std::sin(th), 1e-6);
+                ur->InsertNextValue(radial);
+                csv += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", x, y, z,
+                                   radial * std::cos(th), radial * std::sin(th), 1e-6);
+            }
+    vtkNew<vtkUnstructuredGrid> grid;
+    grid->SetPoints(points);
+    grid->GetPointData()->AddArray(u);
+    grid->GetPointData()->AddArray(u32);
+    grid->GetPointData()->AddArray(ur);
+    vtkNew<vtkXMLUnstructuredGridWriter> writer;
+    writer->SetFileName((dir / "fe.vtu").string().c_str());
+    writer->SetInputData(grid);
+    ASSERT_EQ(writer->Write(), 1);
+    writeFile(dir / "fe.csv", csv);
+
+    const auto fromCsv = readBoreNodes((dir / "fe.csv").string(), bore);
+    ASSERT_EQ(fromCsv.size(), 41u * 36u);
+    for (const std::string field : {"displacement", "U_assembly", "ur"}) {
+        const auto fromVtu = readBoreNodes((dir / "fe.vtu").string(), bore, field);
+        ASSERT_EQ(fromVtu.size(), fromCsv.size()) << field;
+        const double tol = field == "U_assembly" ? 1e-6 * 1e-5 : 1e-18;  // float32: 7 digits of ≤ 1e-5 m
+        for (std::size_t k = 0; k < fromCsv.size(); ++k) {
+            EXPECT_EQ(fromVtu[k].x, fromCsv[k].x);
+            EXPECT_EQ(fromVtu[k].z, fromCsv[k].z);
+            EXPECT_NEAR(fromVtu[k].ur, fromCsv[k].ur, tol) << field << " node " << k;
+        }
+    }
+
+    // Errors name the file and what it holds.
+    EXPECT_THAT(errorOf([&] { readBoreNodes((dir / "fe.vtu").string(), bore, "u"); }),
+                AllOf(HasSubstr("fe.vtu: no point-data array 'u'"),
+                      HasSubstr("the file has 'displacement', 'U_assembly', 'ur'")));
+    writeFile(dir / "fake.vtu", "x,y,z,ur\n0.043,0,0,1e-6\n");
+    EXPECT_THAT(errorOf([&] { readBoreNodes((dir / "fake.vtu").string(), bore); }),
+                HasSubstr("fake.vtu: not a VTK XML unstructured grid"));
+    {  // a .vtu cut short after its header
+        std::ifstream in(dir / "fe.vtu", std::ios::binary);
+        std::string head(400, '\0');
+        in.read(head.data(), std::streamsize(head.size()));
+        writeFile(dir / "cut.vtu", head);
+    }
+    EXPECT_THAT(errorOf([&] { readBoreNodes((dir / "cut.vtu").string(), bore); }),
+                HasSubstr("cut.vtu: cannot read the points of the .vtu file"));
+    EXPECT_THAT(errorOf([&] { readBoreNodes((dir / "missing.vtu").string(), bore); }),
+                HasSubstr("missing.vtu: no such file"));
+}
+
 // ============================== thermal.h5 ===================================================
 
 TEST(ThermalFile, UniformPistonAndLinerGrowthChangeHExactly) {
@@ -600,4 +679,42 @@ TEST(CaseFileThermal, BadInputNamesTheKey) {
                 AllOf(StartsWith(file + ": liner.bore_distortion.orders"), HasSubstr("format: fourier")));
     EXPECT_THAT(err("liner:\n  bore_distortion: {format: fourier}\n", false),
                 AllOf(StartsWith(file + ": liner.bore_distortion.file"), HasSubstr("required key missing")));
+}
+
+// liner.bore_distortion {format: nodal, file: X.vtu, field: NAME}: the array is named by `field`
+// (default `displacement`); `field` with a CSV or a Fourier table is refused.
+TEST(CaseFileThermal, NodalVtuFieldKey) {
+    const fs::path dir = scratchDir();
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkDoubleArray> ur;
+    ur->SetName("u_radial");
+    for (int i = 0; i <= 4; ++i)
+        for (int j = 0; j < 12; ++j) {
+            points->InsertNextPoint(0.043 * std::cos(kPi * j / 6), 0.043 * std::sin(kPi * j / 6), -0.04 * i);
+            ur->InsertNextValue(2e-6);
+        }
+    vtkNew<vtkUnstructuredGrid> grid;
+    grid->SetPoints(points);
+    grid->GetPointData()->AddArray(ur);
+    vtkNew<vtkXMLUnstructuredGridWriter> writer;
+    writer->SetFileName((dir / "fe.vtu").string().c_str());
+    writer->SetInputData(grid);
+    ASSERT_EQ(writer->Write(), 1);
+    const EngineCase n =
+        readCaseFile(writeCase(dir, "liner:\n  bore_distortion: {format: nodal, file: fe.vtu, field: u_radial}\n"));
+    EXPECT_EQ(n.liner.boreDistortion.format, BoreDistortionFormat::Nodal);
+    ASSERT_EQ(n.liner.boreDistortion.nodes.size(), 60u);
+    EXPECT_DOUBLE_EQ(n.liner.boreDistortion.nodes[7].ur, 2e-6);
+
+    const std::string file = (dir / "case.yaml").string();
+    EXPECT_THAT(errorOf([&] {
+                    readCaseFile(writeCase(dir, "liner:\n  bore_distortion: {format: nodal, file: fe.vtu}\n"));
+                }),
+                AllOf(StartsWith(file + ": liner.bore_distortion.file"),
+                      HasSubstr("no point-data array 'displacement' (the file has 'u_radial')")));
+    writeFile(dir / "fe.csv", "x,y,z,ur\n0.043,0,0,1e-6\n");
+    EXPECT_THAT(errorOf([&] {
+                    readCaseFile(writeCase(dir, "liner:\n  bore_distortion: {format: nodal, file: fe.csv, field: u}\n"));
+                }),
+                AllOf(StartsWith(file + ": liner.bore_distortion.field"), HasSubstr("this table is a CSV")));
 }
