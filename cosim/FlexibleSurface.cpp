@@ -13,8 +13,8 @@
 namespace flexehd::cosim {
 
 namespace {
-std::vector<int> heldInterfaces(const modal::ReducedBody& body, const std::vector<std::string>& held,
-                                const std::string& what) {
+std::vector<int> heldIndices(const modal::ReducedBody& body, const std::vector<std::string>& held,
+                             const std::string& what) {
     std::vector<int> out;
     std::string names;
     for (std::size_t i = 0; i < body.interfaces.size(); ++i) {
@@ -38,17 +38,9 @@ FlexibleSurface::FlexibleSurface(modal::ReducedBody body, Side side, const std::
                                  const std::vector<std::string>& held, const lube::FilmGrid& grid, double zMin, double zMax)
     : body_(std::move(body)), side_(side), surface_(surface) {
     const std::string what = body_.meshPath.empty() ? std::string("reduced body") : body_.meshPath;
-    // Compliance with the held reference nodes fixed, column by column (once).
-    const modal::ModalSuperposition sup(body_);
-    const std::vector<int> hold = heldInterfaces(body_, held, what);
-    const int m = body_.numModes();
-    compliance_.resize(m, m);
-    Eigen::VectorXd unit = Eigen::VectorXd::Zero(m);
-    for (int i = 0; i < m; ++i) {
-        unit.setZero();
-        unit[i] = 1.0;
-        compliance_.col(i) = sup.quasiStatic(unit, hold);
-    }
+    // Compliance with the held reference nodes fixed, C = N (Nᵀ K N)⁻¹ Nᵀ (once).
+    held_ = heldIndices(body_, held, what);
+    compliance_ = modal::ModalSuperposition(body_).compliance(held_);
     if (side_ == Side::Piston) {
         LoadMapping load(body_.mesh, surface, grid);
         DeformationMapping def(body_.mesh, surface, grid);

@@ -49,6 +49,8 @@ public:
     Eigen::VectorXd displacement(const Eigen::VectorXd& q) const { return body_.shapes * q; }
 
     const modal::ReducedBody& body() const { return body_; }
+    /// Indices (into body().interfaces) of the interfaces held in the response.
+    const std::vector<int>& heldInterfaces() const { return held_; }
     const std::string& surface() const { return surface_; }
     /// Grid nodes (of a piston grid) that lie outside the surface's image: no elastic motion there.
     const std::vector<int>& outsideNodes() const { return outside_; }
@@ -60,6 +62,7 @@ private:
     modal::ReducedBody body_;
     Side side_;
     std::string surface_;
+    std::vector<int> held_;
     Eigen::MatrixXd compliance_;
     std::unique_ptr<ModalMapping> fixed_;
     std::unique_ptr<MovingGridMapping> moving_;

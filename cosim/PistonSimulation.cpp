@@ -54,6 +54,7 @@ struct PistonSimulation::State {
     double dt = 0.0;        // s, the step that reached this state (0: initial)
     Eigen::Vector2d x = Eigen::Vector2d::Zero(), v = Eigen::Vector2d::Zero(), a = Eigen::Vector2d::Zero();
     Eigen::VectorXd h, hRigid, p, y;
+    Eigen::VectorXd w;      // modal velocities ẏ (bodies.response: dynamic; else empty)
 };
 
 struct PistonSimulation::Context {
@@ -62,6 +63,7 @@ struct PistonSimulation::Context {
     double gas = 0.0, offset = 0.0;
     const State* now = nullptr;
     const State* before = nullptr;
+    Eigen::VectorXd hq, hv;  // dynamic response: BDF2 histories a1 yₙ + a2 yₙ₋₁, a1 ẏₙ + a2 ẏₙ₋₁
 };
 
 struct PistonSimulation::Evaluation {
@@ -82,9 +84,6 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
       solver_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::Multigrid)),
       fallback_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::ActiveSet)) {
     const auto t0 = Clock::now();
-    if (c.coupling.response == ElasticResponse::Dynamic)
-        throw std::invalid_argument(c.path + ": bodies.response: 'dynamic' (modal dynamics of the bodies in the "
-                                    "coupling) is not available yet; use quasi_static");
     if (c.contact.compositeModulus > 0.0)
         contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
     if (c.pistonBody.model == BodyModel::Flexible) {
@@ -103,6 +102,12 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
                                                    c.linerBody.interfaces, film_.grid(),
                                                    lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
         ml_ = liner_->modes();
+    }
+    if (c.coupling.response == ElasticResponse::Dynamic) {
+        if (piston_)
+            pistonDynamics_ = std::make_unique<modal::HeldModalDynamics>(piston_->body(), piston_->heldInterfaces());
+        if (liner_)
+            linerDynamics_ = std::make_unique<modal::HeldModalDynamics>(liner_->body(), liner_->heldInterfaces());
     }
     if (ClearanceTerms::wanted(c)) {
         // Liner offsets the grid visits: the extremes of the crank-slider over a revolution.
@@ -229,12 +234,18 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
         if (liner_) liner_->modalForce(ptot, ctx.offset, fl);
         const double tMap = seconds(t0);
         t0 = Clock::now();
-        if (piston_) {  // modal update: q = C f
-            piston_->quasiStatic(fp, q);
+        if (piston_) {  // modal update: q = C f, or the BDF2 step of the modal dynamics
+            if (pistonDynamics_)
+                pistonDynamics_->respond(fp, ctx.hq.head(mp_), ctx.hv.head(mp_), q);
+            else
+                piston_->quasiStatic(fp, q);
             ev.Hy.head(mp_) = q;
         }
         if (liner_) {
-            liner_->quasiStatic(fl, q);
+            if (linerDynamics_)
+                linerDynamics_->respond(fl, ctx.hq.tail(ml_), ctx.hv.tail(ml_), q);
+            else
+                liner_->quasiStatic(fl, q);
             ev.Hy.tail(ml_) = q;
         }
         const double tModal = seconds(t0);
@@ -262,6 +273,14 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
     ctx.now = &s;
     ctx.before = &prev;
     const double dt = ctx.dt;
+    if (pistonDynamics_ || linerDynamics_) {
+        // BDF2 histories of the modal coordinates (the previous state's are unused on the first
+        // step, where a2 = 0).
+        ctx.hq = ctx.a1 * s.y + ctx.a2 * (prev.y.size() == s.y.size() ? prev.y : s.y);
+        ctx.hv = ctx.a1 * s.w + ctx.a2 * (prev.w.size() == s.w.size() ? prev.w : s.w);
+        if (pistonDynamics_) pistonDynamics_->setStep(ctx.a0, dt);
+        if (linerDynamics_) linerDynamics_->setStep(ctx.a0, dt);
+    }
     Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
     Eigen::VectorXd y = s.y;
     const bool flexible = piston_ || liner_;
@@ -347,6 +366,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             out.hRigid = ev.hRigid;
             out.p = ev.p;
             out.y = y;
+            if (pistonDynamics_ || linerDynamics_) out.w = (ctx.a0 * y + ctx.hq) / dt;  // ẏ of BDF2
             return true;
         }
         lastX = x;
@@ -446,6 +466,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     }
     s.hRigid = s.h;
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);
+    if (pistonDynamics_ || linerDynamics_) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
     State prev = s;
     double dtDeg = std::min(T.maxStepDeg, 0.1);
     const double every = case_.output.vtkEveryDeg;

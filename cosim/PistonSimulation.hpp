@@ -10,7 +10,9 @@
 //   * the coupling residual, the film-thickness change max|Δh(H(y)) − Δh(y)| of the modal
 //     coordinates y, is below coupling.tolerance × clearance,
 // with one film solve per iteration: Newton (finite-difference Jacobian, Broyden updates) on the
-// motion and IQN-ILS or Aitken on y in the same loop. The step size is controlled by the local
+// motion and IQN-ILS or Aitken on y in the same loop. The bodies answer the film load
+// quasi-statically, or (bodies.response: dynamic) with their modal inertia and damping,
+// integrated by the same BDF2 as the motion (modal::HeldModalDynamics). The step size is controlled by the local
 // error estimate of the predictor–corrector pair; cycles repeat until periodic.
 
 #include "cosim/CouplingAccelerator.hpp"
@@ -23,6 +25,7 @@
 #include "cosim/StepRecord.hpp"
 #include "lube/GreenwoodTripp.hpp"
 #include "lube/ReynoldsSolver.hpp"
+#include "modal/HeldModalDynamics.hpp"
 
 #include <Eigen/Core>
 
@@ -130,6 +133,8 @@ private:
     std::optional<lube::GreenwoodTripp> contact_;
     std::unique_ptr<FlexibleSurface> piston_, liner_;
     std::unique_ptr<ClearanceTerms> clearance_;  // added to h_rigid at the liner offset
+    // bodies.response: dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
+    std::unique_ptr<modal::HeldModalDynamics> pistonDynamics_, linerDynamics_;
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
     // Elastic Δh of the last y and liner offset evaluated (reused by the Jacobian's evaluations).
     Eigen::VectorXd elasticY_, pistonDh_, linerDh_;

@@ -8,6 +8,21 @@
 
 namespace flexehd::modal {
 
+Eigen::MatrixXd heldBasis(const ReducedBody& body, const std::vector<int>& held) {
+    const Eigen::Index m = body.numModes();
+    // Constraint A q = 0 (held reference motions); q = N r with N an orthonormal null-space basis.
+    Eigen::MatrixXd A(6 * held.size(), m);
+    for (std::size_t i = 0; i < held.size(); ++i) {
+        if (held[i] < 0 || held[i] >= int(body.interfaces.size()))
+            throw std::invalid_argument("held interfaces: interface " + std::to_string(held[i]) + " does not exist");
+        A.middleRows<6>(6 * i) = body.interfaceMotion.middleRows<6>(6 * held[i]);
+    }
+    if (A.rows() == 0) return Eigen::MatrixXd::Identity(m, m);
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A.transpose());
+    const Eigen::Index r = qr.rank();
+    return (qr.householderQ() * Eigen::MatrixXd::Identity(m, m)).rightCols(m - r);
+}
+
 ModalSuperposition::ModalSuperposition(const ReducedBody& body) : body_(body) {}
 
 Eigen::VectorXd ModalSuperposition::displacement(const Eigen::VectorXd& q) const { return body_.shapes * q; }
@@ -31,26 +46,19 @@ Eigen::VectorXd ModalSuperposition::quasiStatic(const Eigen::VectorXd& g, const 
     if (g.size() != m)
         throw std::invalid_argument("quasi-static: " + std::to_string(g.size()) + " modal forces for " +
                                     std::to_string(m) + " modes");
-    // Constraint A q = 0 (held reference motions); q = N y with N an orthonormal null-space basis.
-    Eigen::MatrixXd A(6 * held.size(), m);
-    for (std::size_t i = 0; i < held.size(); ++i) {
-        if (held[i] < 0 || held[i] >= int(body_.interfaces.size()))
-            throw std::invalid_argument("quasi-static: interface " + std::to_string(held[i]) + " does not exist");
-        A.middleRows<6>(6 * i) = body_.interfaceMotion.middleRows<6>(6 * held[i]);
-    }
-    Eigen::MatrixXd N = Eigen::MatrixXd::Identity(m, m);
-    if (A.rows() > 0) {
-        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A.transpose());
-        const Eigen::Index r = qr.rank();
-        N = (qr.householderQ() * Eigen::MatrixXd::Identity(m, m)).rightCols(m - r);
-    }
-    if (N.cols() == 0) return Eigen::VectorXd::Zero(m);  // held interfaces fix every mode
+    return compliance(held) * g;
+}
+
+Eigen::MatrixXd ModalSuperposition::compliance(const std::vector<int>& held) const {
+    const Eigen::Index m = body_.numModes();
+    const Eigen::MatrixXd N = heldBasis(body_, held);
+    if (N.cols() == 0) return Eigen::MatrixXd::Zero(m, m);  // held interfaces fix every mode
     const Eigen::MatrixXd Kn = N.transpose() * body_.stiffnessMatrix * N;
     Eigen::LDLT<Eigen::MatrixXd> ldlt(Kn);
     const double scale = body_.stiffnessMatrix.diagonal().cwiseAbs().maxCoeff();
     if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 1e-10 * scale)
         throw std::runtime_error("quasi-static response: the body can still move rigidly; hold an interface");
-    return N * ldlt.solve(N.transpose() * g);
+    return N * ldlt.solve(N.transpose());
 }
 
 ModalDynamics::ModalDynamics(const ReducedBody& body, double dt) : dt_(dt) {

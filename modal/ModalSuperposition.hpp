@@ -9,6 +9,11 @@
 
 namespace flexehd::modal {
 
+/// Orthonormal basis N (modes × free coordinates) of the modal coordinates that leave the
+/// reference nodes of the `held` interfaces at rest (their six motions A q = 0): q = N r.
+/// Identity when nothing is held. Throws std::invalid_argument for an unknown interface index.
+Eigen::MatrixXd heldBasis(const ReducedBody& body, const std::vector<int>& held);
+
 class ModalSuperposition {
 public:
     explicit ModalSuperposition(const ReducedBody& body);
@@ -23,6 +28,8 @@ public:
     /// (their six motions zero, enforced exactly by eliminating them from q). Throws if
     /// the body can still move rigidly.
     Eigen::VectorXd quasiStatic(const Eigen::VectorXd& modalForce, const std::vector<int>& heldInterfaces) const;
+    /// The quasi-static compliance C = N (Nᵀ K_r N)⁻¹ Nᵀ (modes × modes): quasiStatic(f) = C f.
+    Eigen::MatrixXd compliance(const std::vector<int>& heldInterfaces) const;
 
 private:
     const ReducedBody& body_;

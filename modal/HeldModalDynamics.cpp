@@ -1,0 +1,47 @@
+#include "modal/HeldModalDynamics.hpp"
+
+#include "modal/ModalSuperposition.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace flexehd::modal {
+
+HeldModalDynamics::HeldModalDynamics(const ReducedBody& body, const std::vector<int>& held)
+    : N_(heldBasis(body, held)), M_(body.massMatrix), C_(Eigen::MatrixXd::Zero(body.numModes(), body.numModes())) {
+    const Eigen::Index m = body.numModes();
+    for (Eigen::Index k = 0; k < m; ++k)
+        C_(k, k) = 2.0 * body.dampingRatios(k) * std::sqrt(std::max(body.stiffnessMatrix(k, k), 0.0));
+    Mn_ = N_.transpose() * M_ * N_;
+    Cn_ = N_.transpose() * C_ * N_;
+    Kn_ = N_.transpose() * body.stiffnessMatrix * N_;
+    Eigen::LDLT<Eigen::MatrixXd> k(Kn_);
+    const double scale = body.stiffnessMatrix.diagonal().cwiseAbs().maxCoeff();
+    if (N_.cols() > 0 && (k.info() != Eigen::Success || k.vectorD().minCoeff() <= 1e-10 * scale))
+        throw std::runtime_error("modal dynamics: the body can still move rigidly with its held interfaces; "
+                                 "hold an interface that fixes it");
+}
+
+void HeldModalDynamics::setStep(double a0, double dt) {
+    if (!(dt > 0.0) || !(a0 > 0.0))
+        throw std::invalid_argument("modal dynamics: step " + std::to_string(dt) + " s, a0 " + std::to_string(a0) +
+                                    ": both must be > 0");
+    a0_ = a0;
+    dt_ = dt;
+    const double rate = a0 / dt;
+    if (rate == rate_) return;
+    llt_.compute(rate * rate * Mn_ + rate * Cn_ + Kn_);  // symmetric positive definite
+    if (llt_.info() != Eigen::Success) throw std::runtime_error("modal dynamics: the step matrix is not positive definite");
+    rate_ = rate;
+}
+
+void HeldModalDynamics::respond(const Eigen::VectorXd& f, const Eigen::VectorXd& hq, const Eigen::VectorXd& hv,
+                                Eigen::VectorXd& q) const {
+    if (rate_ < 0.0) throw std::logic_error("modal dynamics: setStep before respond");
+    const double inv = 1.0 / dt_;
+    const Eigen::VectorXd g = f - M_ * (a0_ * inv * inv * hq + inv * hv) - C_ * (inv * hq);
+    q.noalias() = N_ * llt_.solve(N_.transpose() * g);
+}
+
+}  // namespace flexehd::modal
