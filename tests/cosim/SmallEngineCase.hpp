@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace flexehd::test {
 
@@ -35,6 +36,19 @@ inline cosim::EngineCase smallCase() {
     c.grid.axialNodes = 24;
     c.grid.circumferentialNodes = 72;
     c.time.maxCycles = 1;
+    return c;
+}
+
+// The same with the flexible piston of a reduced-body file (skirt surface, pin bore held) on the
+// coarse 12 × 40 grid.
+inline cosim::EngineCase smallFlexibleCase(const std::string& pistonFile) {
+    cosim::EngineCase c = smallCase();
+    c.grid = {12, 40};
+    c.pistonBody.model = cosim::BodyModel::Flexible;
+    c.pistonBody.file = pistonFile;
+    c.pistonBody.surface = "skirt";
+    c.pistonBody.interface = "pin_bore";
+    c.pistonBody.interfaces = {"pin_bore"};
     return c;
 }
 

@@ -30,20 +30,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The small example engine (SmallEngineCase.hpp) with a flexible piston, on a coarse grid.
-EngineCase smallFlexibleCase(const std::string& pistonFile) {
-    EngineCase c = flexehd::test::smallCase();
-    c.grid = {12, 40};
+// The small flexible-piston engine (SmallEngineCase.hpp) with a tight coupling tolerance.
+EngineCase tightlyCoupledCase(const std::string& pistonFile) {
+    EngineCase c = flexehd::test::smallFlexibleCase(pistonFile);
     c.time.maxCycles = 1;
     c.output.vtkEveryDeg = 15.0;
     // A tight coupling tolerance, so that the comparison below is sharp.
     c.coupling.tolerance = 1e-6;
     c.coupling.maxIterations = 60;
-    c.pistonBody.model = BodyModel::Flexible;
-    c.pistonBody.file = pistonFile;
-    c.pistonBody.surface = "skirt";
-    c.pistonBody.interface = "pin_bore";
-    c.pistonBody.interfaces = {"pin_bore"};
     return c;
 }
 
@@ -204,7 +198,7 @@ TEST(CouplingMonolithic, PartitionedIterationMatchesTheMonolithicSolve) {
         "--circumferential-order 4 --out " + file);
     ASSERT_EQ(red.status, 0) << red.err;
 
-    const EngineCase c = smallFlexibleCase(file);
+    const EngineCase c = tightlyCoupledCase(file);
     PistonSimulation sim(c);
     std::vector<StepRecord> steps;
     std::vector<Snapshot> snaps;

@@ -25,14 +25,8 @@ namespace fs = std::filesystem;
 namespace {
 
 EngineCase flexibleCase(const std::string& pistonFile, ElasticResponse response) {
-    EngineCase c = test::smallCase();
-    c.grid = {12, 40};
+    EngineCase c = test::smallFlexibleCase(pistonFile);
     c.output.vtkEveryDeg = 10.0;
-    c.pistonBody.model = BodyModel::Flexible;
-    c.pistonBody.file = pistonFile;
-    c.pistonBody.surface = "skirt";
-    c.pistonBody.interface = "pin_bore";
-    c.pistonBody.interfaces = {"pin_bore"};
     c.coupling.response = response;
     return c;
 }
