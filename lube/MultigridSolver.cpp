@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace flexehd::lube {
 
@@ -174,6 +175,18 @@ inline void forColumns(const Level& L, int j0, int step, Fn&& fn) {
     if (j == nt - 1) fn(j, L.jm(j), L.jp(j));
 }
 
+// forColumns restricted to the columns j0, j0 + step, … below j1.
+template <class Fn>
+inline void forColumnsIn(const Level& L, int j0, int j1, int step, Fn&& fn) {
+    int j = j0;
+    if (j == 0 && j < j1) {
+        fn(0, L.jm(0), L.jp(0));
+        j += step;
+    }
+    for (const int end = std::min(j1, L.nt - 1); j < end; j += step) fn(j, j - 1, j + 1);
+    if (j == L.nt - 1 && j < j1) fn(j, L.jm(j), L.jp(j));
+}
+
 // Smoother direction of a level from its couplings summed over the free nodes: line relaxation
 // along z alone when the axial couplings are at least twice the circumferential ones (skirts,
 // Δz < RΔθ), along θ alone in the opposite case (long bearings, few axial nodes), alternating
@@ -206,6 +219,10 @@ struct MultigridSolver::Hierarchy {
     Vec invDiag;                        // 1/A_kk on the fine Film nodes (0 elsewhere)
     std::vector<char> near;             // fine Film nodes next to a frozen or non-Film node
     std::vector<char> colFree;          // markNear work array (one fine row)
+    // Runs [first, second) of fine columns holding a Film node. The fine outer pass and the line
+    // search visit only these: the other columns (masks spanning whole columns, such as a skirt's
+    // pin-boss relief, a third of its nodes) hold prescribed values that never change.
+    std::vector<std::pair<int, int>> filmRuns;
     void markNear(int i);
 
     void buildGeometry(const FilmGrid& g);
@@ -242,6 +259,7 @@ struct MultigridSolver::Hierarchy {
         double pLower;
         bool bounded;
         double* dir;
+        const std::vector<std::pair<int, int>>* runs;  // Hierarchy::filmRuns
         double alphaMax = std::numeric_limits<double>::infinity(), num = 0.0, den = 0.0;
         void direction(const Level& F, int i);
         void curvature(const Level& F, int i);
@@ -394,6 +412,14 @@ void MultigridSolver::Hierarchy::extractFine(const ReynoldsSystem& sys) {
         const bool f = sys.isFilm(k);
         film[static_cast<std::size_t>(k)] = f;
         invDiag[k] = f ? 1.0 / L.a[static_cast<std::size_t>(5 * k + Stencil<true>::C)] : 0.0;
+    }
+    std::vector<char> colFilm(static_cast<std::size_t>(L.nt), 0);
+    for (int k = 0; k < L.size(); ++k) colFilm[static_cast<std::size_t>(k % L.nt)] |= film[static_cast<std::size_t>(k)];
+    filmRuns.clear();
+    for (int j = 0; j < L.nt; ++j) {
+        if (!colFilm[static_cast<std::size_t>(j)]) continue;
+        if (filmRuns.empty() || filmRuns.back().second != j) filmRuns.emplace_back(j, j + 1);
+        else filmRuns.back().second = j + 1;
     }
     L.invalidateLines();
     galerkinValid = false;
@@ -1203,15 +1229,16 @@ void MultigridSolver::Hierarchy::LineSearch::direction(const Level& F, int i) {
     const double* ff = F.f.data();
     const char* fr = F.free.data();
     double* d = dir;
-    for (int k = i * F.nt, kEnd = k + F.nt; k < kEnd; ++k) {
-        double dk = fr[k] ? fx[k] : 0.0;  // 0 on frozen and non-Film nodes
-        if (bd && dk < 0.0) {
-            if (p[k] + dk < lo) dk = lo - p[k];
-            if (dk < 0.0) aMax = std::min(aMax, (p[k] - lo) / -dk);
+    for (const auto& [j0, j1] : *runs)  // d = 0 elsewhere (set once per solve)
+        for (int k = i * F.nt + j0, kEnd = i * F.nt + j1; k < kEnd; ++k) {
+            double dk = fr[k] ? fx[k] : 0.0;  // 0 on frozen and non-Film nodes
+            if (bd && dk < 0.0) {
+                if (p[k] + dk < lo) dk = lo - p[k];
+                if (dk < 0.0) aMax = std::min(aMax, (p[k] - lo) / -dk);
+            }
+            d[k] = dk;
+            nm += dk * ff[k];
         }
-        d[k] = dk;
-        nm += dk * ff[k];
-    }
     alphaMax = aMax;
     num = nm;
 }
@@ -1223,11 +1250,12 @@ void MultigridSolver::Hierarchy::LineSearch::curvature(const Level& F, int i) {
     const double* d0 = dir + i * nt;
     const double* dp = dir + F.ip(i) * nt;
     double sum = 0.0;
-    forColumns(F, 0, 1, [&](int j, int jm, int jp) {
-        if (d0[j] == 0.0) return;
-        const double* c = F.a + 5 * static_cast<std::size_t>(i * nt + j);
-        sum += d0[j] * (c[Stencil<true>::C] * d0[j] + offDiag<true>(c, dm, d0, dp, j, jm, jp));
-    });
+    for (const auto& [j0, j1] : *runs)
+        forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp) {
+            if (d0[j] == 0.0) return;
+            const double* c = F.a + 5 * static_cast<std::size_t>(i * nt + j);
+            sum += d0[j] * (c[Stencil<true>::C] * d0[j] + offDiag<true>(c, dm, d0, dp, j, jm, jp));
+        });
     den += sum;
 }
 
@@ -1249,12 +1277,28 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
     for (int k = 0; k < n; ++k)
         if (!sys.isFilm(k)) p[k] = g.prescribedPressure(k);
         else if (bounded && p[k] < pLower) p[k] = pLower;
-    H.dir.resize(n);
+    H.dir.assign(n, 0.0);  // stays 0 outside the Film columns
     // Free boundary of the starting point, for the local relaxation of the first iteration.
     for (int k = 0; k < n; ++k) F.free[static_cast<std::size_t>(k)] = H.film[static_cast<std::size_t>(k)] && !(bounded && p[k] <= pLower);
     H.near.resize(static_cast<std::size_t>(n));
     H.colFree.resize(static_cast<std::size_t>(F.nt));
     for (int i = 0; i < F.nz; ++i) H.markNear(i);
+    // Columns without Film nodes, skipped by the passes below: no defect, not free, and their
+    // (constant) share of the pressure scale.
+    double deadScale = 0.0;
+    {
+        int j = 0;
+        for (std::size_t r = 0; r <= H.filmRuns.size(); ++r) {
+            const int jEnd = r < H.filmRuns.size() ? H.filmRuns[r].first : F.nt;
+            for (; j < jEnd; ++j)
+                for (int i = 0; i < F.nz; ++i) {
+                    const int k = i * F.nt + j;
+                    F.f[k] = 0.0;
+                    deadScale = std::max(deadScale, std::abs(p[k] - g.ambientPressure()));
+                }
+            if (r < H.filmRuns.size()) j = H.filmRuns[r].second;
+        }
+    }
     double* __restrict x = p.data();
     double* __restrict dir = H.dir.data();
     const double* __restrict invDiag = H.invDiag.data();
@@ -1279,13 +1323,15 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
         // memory. Locals, not captured references: the lambdas store through double pointers,
         // after which referenced doubles would have to be reloaded.
         const double lo = pLower, step = alpha;
+        const auto& runs = H.filmRuns;
         auto stepRow = [&, lo, step, bounded](int i) {
-            for (int k = i * nt, kEnd = k + nt; k < kEnd; ++k) {
-                if (dir[k] == 0.0) continue;
-                double v = x[k] + step * dir[k];
-                if (bounded && v < lo) v = lo;
-                x[k] = v;
-            }
+            for (const auto& [j0, j1] : runs)
+                for (int k = i * nt + j0, kEnd = i * nt + j1; k < kEnd; ++k) {
+                    if (dir[k] == 0.0) continue;
+                    double v = x[k] + step * dir[k];
+                    if (bounded && v < lo) v = lo;
+                    x[k] = v;
+                }
         };
         const double* __restrict A = F.a;
         // Projected Gauss–Seidel update of the nodes of one colour in row i (all Film nodes, or
@@ -1295,20 +1341,22 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
             double* x0 = x + i * nt;
             const double* xp = x + F.ip(i) * nt;
             const char* sel = (only ? only : film) + i * nt;
-            forColumns(F, (i + colour) % 2, 2, [&](int j, int jm, int jp) {
-                if (!sel[j]) return;
-                const int k = i * nt + j;
-                double v = (b[k] - offDiag<true>(A + 5 * static_cast<std::size_t>(k), xm, x0, xp, j, jm, jp)) * invDiag[k];
-                if (bounded && v < lo) v = lo;
-                x0[j] = v;
-            });
+            const int parity = (i + colour) % 2;
+            for (const auto& [j0, j1] : runs)
+                forColumnsIn(F, j0 + ((j0 + parity) & 1), j1, 2, [&](int j, int jm, int jp) {
+                    if (!sel[j]) return;
+                    const int k = i * nt + j;
+                    double v = (b[k] - offDiag<true>(A + 5 * static_cast<std::size_t>(k), xm, x0, xp, j, jm, jp)) * invDiag[k];
+                    if (bounded && v < lo) v = lo;
+                    x0[j] = v;
+                });
         };
         // The second red–black sweep runs on the nodes next to the free boundary only (H.near: a
         // frozen or non-Film node among the 8 neighbours, from the last truncation) — local
         // relaxation where the coarse-grid correction is weakest (cavitation fronts, mask edges,
         // open ends).
         const char* near = H.near.data();
-        double rmax = 0.0, scale = 0.0;
+        double rmax = 0.0, scale = deadScale;
         double* __restrict ff = F.f.data();
         char* __restrict fr = F.free.data();
         auto defectRow = [&, lo, bounded, pAmb](int i) {
@@ -1316,22 +1364,23 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
             const double* x0 = x + i * nt;
             const double* xp = x + F.ip(i) * nt;
             double rm = 0.0, sc = 0.0;
-            forColumns(F, 0, 1, [&](int j, int jm, int jp) {
-                const int k = i * nt + j;
-                sc = std::max(sc, std::abs(x0[j] - pAmb));
-                if (!film[k]) {
-                    ff[k] = 0.0;
-                    fr[k] = 0;
-                    return;
-                }
-                const double* c = A + 5 * static_cast<std::size_t>(k);
-                const double w = b[k] - c[Stencil<true>::C] * x0[j] - offDiag<true>(c, xm, x0, xp, j, jm, jp);
-                ff[k] = w;
-                double rk = -w * invDiag[k];
-                if (bounded) rk = std::min(x0[j] - lo, rk);
-                rm = std::max(rm, std::abs(rk));
-                fr[k] = !(bounded && x0[j] <= lo);
-            });
+            for (const auto& [j0, j1] : runs)
+                forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp) {
+                    const int k = i * nt + j;
+                    sc = std::max(sc, std::abs(x0[j] - pAmb));
+                    if (!film[k]) {
+                        ff[k] = 0.0;
+                        fr[k] = 0;
+                        return;
+                    }
+                    const double* c = A + 5 * static_cast<std::size_t>(k);
+                    const double w = b[k] - c[Stencil<true>::C] * x0[j] - offDiag<true>(c, xm, x0, xp, j, jm, jp);
+                    ff[k] = w;
+                    double rk = -w * invDiag[k];
+                    if (bounded) rk = std::min(x0[j] - lo, rk);
+                    rm = std::max(rm, std::abs(rk));
+                    fr[k] = !(bounded && x0[j] <= lo);
+                });
             rmax = std::max(rmax, rm);
             scale = std::max(scale, sc);
         };
@@ -1357,7 +1406,7 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
         // 5. One linear V-cycle on the inactive nodes; its correction, projected, is the search
         // direction, with the exact line search α = dᵀ(b − Ap)/dᵀAd (fused into the V-cycle's
         // last pass on z-line levels).
-        Hierarchy::LineSearch ls{x, pLower, bounded, dir};
+        Hierarchy::LineSearch ls{x, pLower, bounded, dir, &H.filmRuns};
         if (F.fusedZ) {
             H.vcycleZT<true>(0, &ls);
         } else {
