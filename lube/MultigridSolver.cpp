@@ -62,10 +62,12 @@ struct Level {
     Vec zm, zw, tm, tw, tl, tu;
     std::vector<double> tAlpha, tGamma, tDen;
     std::vector<char> colOk, rowOk;
-    // Fused z-line levels: columns with at least one free node (the others are skipped by the
-    // line sweeps; their x is kept at 0), by parity; neighbour columns (wrapped or clamped).
-    std::vector<char> colLive;
-    std::vector<int> evenCols, oddCols, jmv, jpv;
+    // Fused z-line levels: the rows colLo … colHi of each column between its first and last free
+    // node (empty: colLo > colHi) — the line sweeps visit only these, x and the line work array q
+    // are kept at 0 outside (masks and cavitated ends of the columns: a third of a skirt's Film
+    // columns) — as per-row lists of the columns in range, by parity (CSR: rowEven[i] …
+    // rowEven[i + 1] index evenIdx); neighbour columns (wrapped or clamped).
+    std::vector<int> colLo, colHi, rowEven, evenIdx, rowOdd, oddIdx, jmv, jpv;
     // Prolongation from the next coarser level: parents of each row / column of this level.
     std::vector<int> pz0, pz1, pt0, pt1;
     std::vector<double> wz0, wz1, wt0, wt1;
@@ -368,7 +370,8 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
         L.colOk.assign(static_cast<std::size_t>(L.nt), 0);
         L.colFrom.assign(static_cast<std::size_t>(L.nt), 0);
         L.colTo.assign(static_cast<std::size_t>(L.nt), L.nz - 1);
-        L.colLive.assign(static_cast<std::size_t>(L.nt), 0);
+        L.colLo.assign(static_cast<std::size_t>(L.nt), L.nz);  // empty ranges
+        L.colHi.assign(static_cast<std::size_t>(L.nt), -1);
         L.jmv.resize(static_cast<std::size_t>(L.nt));
         L.jpv.resize(static_cast<std::size_t>(L.nt));
         for (int j = 0; j < L.nt; ++j) {
@@ -408,13 +411,15 @@ void MultigridSolver::Hierarchy::extractFine(const ReynoldsSystem& sys) {
     L.a = sys.stencil().data();  // couplings to non-Film nodes are 0 there; non-Film rows unused
     film.resize(static_cast<std::size_t>(L.size()));
     invDiag.resize(L.size());
-    for (int k = 0; k < L.size(); ++k) {
-        const bool f = sys.isFilm(k);
-        film[static_cast<std::size_t>(k)] = f;
-        invDiag[k] = f ? 1.0 / L.a[static_cast<std::size_t>(5 * k + Stencil<true>::C)] : 0.0;
-    }
+    const NodeKind* kind = sys.grid().kinds();
     std::vector<char> colFilm(static_cast<std::size_t>(L.nt), 0);
-    for (int k = 0; k < L.size(); ++k) colFilm[static_cast<std::size_t>(k % L.nt)] |= film[static_cast<std::size_t>(k)];
+    for (int i = 0, k = 0; i < L.nz; ++i)
+        for (int j = 0; j < L.nt; ++j, ++k) {
+            const bool f = kind[k] == NodeKind::Film;  // sys.isFilm(k)
+            film[static_cast<std::size_t>(k)] = f;
+            colFilm[sj(j)] |= static_cast<char>(f);
+            invDiag[k] = f ? 1.0 / L.a[static_cast<std::size_t>(5 * k + Stencil<true>::C)] : 0.0;
+        }
     filmRuns.clear();
     for (int j = 0; j < L.nt; ++j) {
         if (!colFilm[static_cast<std::size_t>(j)]) continue;
@@ -742,51 +747,88 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
     double* zm = L.zm.data();
     double* zw = L.zw.data();
     const char* fr = L.free.data();
-    const int* from = L.colFrom.data();
-    const int* to = L.colTo.data();
+    int* from = L.colFrom.data();
+    int* to = L.colTo.data();
+    // Fused levels: the free row range of each stale column; only the rows in range are factored
+    // (the fused sweeps read no factor outside; the rows next to the range are frozen, whose
+    // factors are 0, so the recursions start afresh at its ends). Other levels: all rows.
+    const bool ranged = L.fusedZ;
+    int* lo = L.colLo.data();
+    int* hi = L.colHi.data();
+    for (const std::vector<int>* v : {&down, &up})
+        for (const int j : *v) {
+            // Rows outside the old range were not factored: a top-down factor is valid only up
+            // to the old last free row, a bottom-up one down to the old first (empty range:
+            // lo = nz, hi = −1, nothing valid).
+            from[j] = std::min(from[j], hi[j] + 1);
+            to[j] = std::max(to[j], lo[j] - 1);
+            lo[j] = ranged ? nz : 0;
+            hi[j] = ranged ? -1 : nz - 1;
+        }
+    if (ranged)
+        for (int i = 0; i < nz; ++i) {
+            const char* f = fr + i * nt;
+            for (const std::vector<int>* v : {&down, &up})
+                for (const int j : *v)
+                    if (f[j]) {
+                        lo[j] = std::min(lo[j], i);
+                        hi[j] = i;
+                    }
+        }
     // Row by row over the stale columns (contiguous memory), from the first changed row.
     for (int i = 0; i < nz; ++i)
         for (const int j : down) {
-            if (i < from[j]) continue;
+            if (i < from[j] || i < lo[j] || i > hi[j]) continue;
             const auto sk = static_cast<std::size_t>(i * nt + j);
             if (!fr[sk]) {
                 zm[sk] = zw[sk] = 0.0;
                 continue;
             }
             const double* c = &L.a[St::n * sk];
-            const double m = safeInverse(c[St::C] - (i > 0 ? c[St::S] * zw[sk - static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
+            const double m = safeInverse(c[St::C] - (i > lo[j] ? c[St::S] * zw[sk - static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
             zm[sk] = m;
             zw[sk] = c[St::N] * m;
         }
     for (int i = nz - 1; i >= 0; --i)
         for (const int j : up) {
-            if (i > to[j]) continue;
+            if (i > to[j] || i < lo[j] || i > hi[j]) continue;
             const auto sk = static_cast<std::size_t>(i * nt + j);
             if (!fr[sk]) {
                 zm[sk] = zw[sk] = 0.0;
                 continue;
             }
             const double* c = &L.a[St::n * sk];
-            const double m = safeInverse(c[St::C] - (i + 1 < nz ? c[St::N] * zw[sk + static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
+            const double m = safeInverse(c[St::C] - (i < hi[j] ? c[St::N] * zw[sk + static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
             zm[sk] = m;
             zw[sk] = c[St::S] * m;
         }
-    // Live columns (a free node anywhere in the column) and their lists; a stale column without
-    // free nodes gets x = 0 (the sweeps skip it, and its neighbours read it).
-    char* live = L.colLive.data();
-    for (const int j : down) live[j] = 0;
-    for (const int j : up) live[j] = 0;
-    for (int i = 0; i < nz; ++i) {
-        const char* f = fr + i * nt;
-        for (const int j : down) live[j] |= f[j];
-        for (const int j : up) live[j] |= f[j];
-    }
-    L.evenCols.clear();
-    L.oddCols.clear();
-    for (int j = 0; j < nt; ++j) {
-        if (live[j]) (j % 2 ? L.oddCols : L.evenCols).push_back(j);
-        else if (!L.colOk[static_cast<std::size_t>(j)])
-            for (int i = 0; i < nz; ++i) L.x[i * nt + j] = 0.0;
+    if (ranged) {
+        // x = 0 and q = 0 outside the ranges of the stale columns (the sweeps skip those rows, and
+        // read them as neighbours or as the eliminated row next to a range); per-row lists.
+        double* x = L.x.data();
+        double* q = L.q.data();
+        for (int i = 0; i < nz; ++i)
+            for (const std::vector<int>* v : {&down, &up})
+                for (const int j : *v)
+                    if (i < lo[j] || i > hi[j]) x[i * nt + j] = q[i * nt + j] = 0.0;
+        L.rowEven.assign(static_cast<std::size_t>(nz) + 1, 0);
+        L.rowOdd.assign(static_cast<std::size_t>(nz) + 1, 0);
+        L.evenIdx.clear();
+        L.oddIdx.clear();
+        std::vector<int>& live = staleDown;  // reused: columns with a free row, by parity
+        std::vector<int>& liveOdd = staleUp;
+        live.clear();
+        liveOdd.clear();
+        for (int j = 0; j < nt; ++j)
+            if (lo[j] <= hi[j]) (j % 2 ? liveOdd : live).push_back(j);
+        for (int i = 0; i < nz; ++i) {
+            for (const int j : live)
+                if (lo[j] <= i && i <= hi[j]) L.evenIdx.push_back(j);
+            for (const int j : liveOdd)
+                if (lo[j] <= i && i <= hi[j]) L.oddIdx.push_back(j);
+            L.rowEven[static_cast<std::size_t>(i) + 1] = static_cast<int>(L.evenIdx.size());
+            L.rowOdd[static_cast<std::size_t>(i) + 1] = static_cast<int>(L.oddIdx.size());
+        }
     }
     std::fill(L.colOk.begin(), L.colOk.end(), 1);
     std::fill(L.colFrom.begin(), L.colFrom.end(), nz);
@@ -835,14 +877,20 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     };
     const int* jmv = L.jmv.data();
     const int* jpv = L.jpv.data();
-    const std::vector<int>& evenCols = L.evenCols;
-    const std::vector<int>& oddCols = L.oddCols;
+    // Columns of row i in their free range, by parity (factorZT).
+    struct Cols {
+        const int *b, *e;
+        const int* begin() const { return b; }
+        const int* end() const { return e; }
+    };
+    auto evenCols = [&](int i) { return Cols{L.evenIdx.data() + L.rowEven[sj(i)], L.evenIdx.data() + L.rowEven[sj(i) + 1]}; };
+    auto oddCols = [&](int i) { return Cols{L.oddIdx.data() + L.rowOdd[sj(i)], L.oddIdx.data() + L.rowOdd[sj(i) + 1]}; };
     auto evenElim = [&](int i, bool pre) {
         const double* xm = x + L.im(i) * nt;
         const double* x0 = x + i * nt;
         const double* xp = x + L.ip(i) * nt;
         const int row = i * nt;
-        for (const int j : evenCols) {
+        for (const int j : evenCols(i)) {
             const int k = row + j;
             if (!fr[k]) {
                 R[k] = 0.0;
@@ -857,16 +905,16 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     auto evenBack = [&](int i) {
         const int row = i * nt;
         if (i + 1 < nz)
-            for (const int j : evenCols) x[row + j] = R[row + j] - W[row + j] * x[row + j + nt];
+            for (const int j : evenCols(i)) x[row + j] = R[row + j] - W[row + j] * x[row + j + nt];
         else
-            for (const int j : evenCols) x[row + j] = R[row + j];
+            for (const int j : evenCols(i)) x[row + j] = R[row + j];
     };
     auto oddElim = [&](int i) {
         const double* xm = x + L.im(i) * nt;
         const double* x0 = x + i * nt;
         const double* xp = x + L.ip(i) * nt;
         const int row = i * nt;
-        for (const int j : oddCols) {
+        for (const int j : oddCols(i)) {
             const int k = row + j;
             if (!fr[k]) {
                 R[k] = 0.0;
@@ -880,9 +928,9 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     auto oddBack = [&](int i) {
         const int row = i * nt;
         if (i > 0)
-            for (const int j : oddCols) x[row + j] = R[row + j] - W[row + j] * x[row + j - nt];
+            for (const int j : oddCols(i)) x[row + j] = R[row + j] - W[row + j] * x[row + j - nt];
         else
-            for (const int j : oddCols) x[row + j] = R[row + j];
+            for (const int j : oddCols(i)) x[row + j] = R[row + j];
     };
     auto passB = [&]() {
         for (int i = nz - 1; i >= 0; --i) {
@@ -915,8 +963,8 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             c1[J0] += w1 * a0;
             c1[J1] += w1 * a1;
         };
-        for (const int j : evenCols) node(j);
-        for (const int j : oddCols) node(j);
+        for (const int j : evenCols(i)) node(j);
+        for (const int j : oddCols(i)) node(j);
     };
     // Coarse correction of row i (the columns the post-smoothing reads).
     const double* __restrict cx = C.x.data();
@@ -932,9 +980,9 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             const int J0 = L.pt0[sj], J1 = L.pt1[sj];
             x[k] += w0 * (L.wt0[sj] * c0[J0] + L.wt1[sj] * c0[J1]) + w1 * (L.wt0[sj] * c1[J0] + L.wt1[sj] * c1[J1]);
         };
-        for (const int j : oddCols) node(j);
+        for (const int j : oddCols(i)) node(j);
         if (allColumns)
-            for (const int j : evenCols) node(j);
+            for (const int j : evenCols(i)) node(j);
     };
 
     // Pre-smoothing, residual, restriction.
