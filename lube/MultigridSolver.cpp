@@ -755,6 +755,8 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
     const bool ranged = L.fusedZ;
     int* lo = L.colLo.data();
     int* hi = L.colHi.data();
+    double* x = L.x.data();
+    double* q = L.q.data();
     for (const std::vector<int>* v : {&down, &up})
         for (const int j : *v) {
             // Rows outside the old range were not factored: a top-down factor is valid only up
@@ -762,18 +764,24 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
             // lo = nz, hi = −1, nothing valid).
             from[j] = std::min(from[j], hi[j] + 1);
             to[j] = std::max(to[j], lo[j] - 1);
-            lo[j] = ranged ? nz : 0;
-            hi[j] = ranged ? -1 : nz - 1;
-        }
-    if (ranged)
-        for (int i = 0; i < nz; ++i) {
-            const char* f = fr + i * nt;
-            for (const std::vector<int>* v : {&down, &up})
-                for (const int j : *v)
-                    if (f[j]) {
-                        lo[j] = std::min(lo[j], i);
-                        hi[j] = i;
-                    }
+            if (!ranged) {
+                lo[j] = 0;
+                hi[j] = nz - 1;
+                continue;
+            }
+            // New range (scanned from both ends). The sweeps skip the rows outside, and read
+            // them as neighbours (x) and as the eliminated row next to the range (q): x = 0 on the
+            // rows that leave it (outside the old range it is 0 already), q = 0 next to it.
+            int a = 0, b = nz - 1;
+            while (a < nz && !fr[a * nt + j]) ++a;
+            while (b > a && !fr[b * nt + j]) --b;
+            if (a == nz) b = -1;
+            for (int i = lo[j]; i <= hi[j]; ++i)
+                if (i < a || i > b) x[i * nt + j] = 0.0;
+            if (a > 0 && a < nz) q[(a - 1) * nt + j] = 0.0;
+            if (b >= 0 && b + 1 < nz) q[(b + 1) * nt + j] = 0.0;
+            lo[j] = a;
+            hi[j] = b;
         }
     // Row by row over the stale columns (contiguous memory), from the first changed row.
     for (int i = 0; i < nz; ++i)
@@ -803,14 +811,7 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
             zw[sk] = c[St::S] * m;
         }
     if (ranged) {
-        // x = 0 and q = 0 outside the ranges of the stale columns (the sweeps skip those rows, and
-        // read them as neighbours or as the eliminated row next to a range); per-row lists.
-        double* x = L.x.data();
-        double* q = L.q.data();
-        for (int i = 0; i < nz; ++i)
-            for (const std::vector<int>* v : {&down, &up})
-                for (const int j : *v)
-                    if (i < lo[j] || i > hi[j]) x[i * nt + j] = q[i * nt + j] = 0.0;
+        // Per-row lists of the columns in range.
         L.rowEven.assign(static_cast<std::size_t>(nz) + 1, 0);
         L.rowOdd.assign(static_cast<std::size_t>(nz) + 1, 0);
         L.evenIdx.clear();
