@@ -211,6 +211,12 @@ void chooseLines(Level& L) {
 
 struct MultigridSolver::Hierarchy {
     std::vector<Level> levels;
+    // Level of the grid being solved: 0, or a coarser one for the nested coarse solves of a cold
+    // start (ReynoldsSolver's grid sequencing), which thus share the fine grid's hierarchy and
+    // its memory. Levels below it are not used.
+    std::size_t base = 0;
+    /// Level with the geometry of g, or −1.
+    int find(const FilmGrid& g) const;
     std::vector<char> film;        // Film nodes of the fine grid
     std::vector<char> cachedFree;  // truncation the Galerkin operators were built for
     bool galerkinValid = false;
@@ -388,7 +394,7 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
 // near[k] for fine row i from the free flags of rows i − 1 … i + 1: a Film node with a frozen or
 // non-Film node among its 8 neighbours.
 void MultigridSolver::Hierarchy::markNear(int i) {
-    const Level& F = levels[0];
+    const Level& F = levels[base];
     const int nt = F.nt;
     const char* fm = &F.free[static_cast<std::size_t>(F.im(i) * nt)];
     const char* f0 = &F.free[static_cast<std::size_t>(i * nt)];
@@ -407,8 +413,13 @@ void MultigridSolver::Hierarchy::extractFine(const ReynoldsSystem& sys) {
     static_assert(Stencil<true>::S == ReynoldsSystem::kStencilS && Stencil<true>::W == ReynoldsSystem::kStencilW &&
                   Stencil<true>::C == ReynoldsSystem::kStencilC && Stencil<true>::E == ReynoldsSystem::kStencilE &&
                   Stencil<true>::N == ReynoldsSystem::kStencilN, "fine stencil layout = ReynoldsSystem's");
-    Level& L = levels[0];
+    Level& L = levels[base];
     L.a = sys.stencil().data();  // couplings to non-Film nodes are 0 there; non-Film rows unused
+    L.five = true;
+    for (std::size_t l = base + 1; l < levels.size(); ++l) {  // Galerkin levels (again)
+        levels[l].five = false;
+        levels[l].a = levels[l].own.data();
+    }
     film.resize(static_cast<std::size_t>(L.size()));
     invDiag.resize(L.size());
     const NodeKind* kind = sys.grid().kinds();
@@ -657,7 +668,7 @@ void MultigridSolver::Hierarchy::dirtyParents(std::size_t l, const std::vector<i
 // first time, afterwards only the rows reached by the nodes whose free flag changed (the cavitation
 // front moves by a few cells per iteration, so this is a small fraction of the grid).
 void MultigridSolver::Hierarchy::updateCoarse() {
-    Level& F = levels[0];
+    Level& F = levels[base];
     std::vector<int> changed;
     if (galerkinValid) {
         for (std::size_t k = 0; k < F.free.size(); ++k)
@@ -667,7 +678,7 @@ void MultigridSolver::Hierarchy::updateCoarse() {
     }
     bool full = !galerkinValid;
     Dirty dirty;
-    for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
+    for (std::size_t l = base; l + 1 < levels.size(); ++l) {
         if (!full) {
             dirtyParents(l, changed, dirty);
             full = 4 * dirty.list.size() > static_cast<std::size_t>(levels[l + 1].size());  // rebuild all
@@ -680,7 +691,7 @@ void MultigridSolver::Hierarchy::updateCoarse() {
         galerkin(l, nullptr);
     }
     if (!galerkinValid)  // first truncation of this solve: smoother directions
-        for (std::size_t l = 0; l < levels.size(); ++l) {
+        for (std::size_t l = base; l < levels.size(); ++l) {
             chooseLines(levels[l]);
             levels[l].fusedZ = levels[l].lines == Lines::Z && l + 1 < levels.size();
         }
@@ -1265,7 +1276,24 @@ MultigridSolver::~MultigridSolver() = default;
 MultigridSolver::MultigridSolver(MultigridSolver&&) noexcept = default;
 MultigridSolver& MultigridSolver::operator=(MultigridSolver&&) noexcept = default;
 
-int MultigridSolver::levels() const { return h_ ? static_cast<int>(h_->levels.size()) : 0; }
+int MultigridSolver::levels() const { return h_ ? static_cast<int>(h_->levels.size() - h_->base) : 0; }
+
+int MultigridSolver::Hierarchy::find(const FilmGrid& g) const {
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+        const Level& L = levels[l];
+        if (L.nz == g.nAxial() && L.nt == g.nTheta() && L.periodic == g.periodic() && L.z == g.axial())
+            return static_cast<int>(l);
+    }
+    return -1;
+}
+
+void MultigridSolver::prepare(const FilmGrid& fine) {
+    if (h_ && h_->find(fine) == 0) return;
+    h_ = std::make_unique<Hierarchy>();
+    h_->buildGeometry(fine);
+}
+
+bool MultigridSolver::hasLevel(const FilmGrid& g) const { return h_ && h_->find(g) >= 0; }
 
 // Search direction of fine row i — the V-cycle correction on the free nodes, projected so that
 // p + d ≥ p_cav — with the largest feasible step and dᵀ(b − Ap).
@@ -1312,14 +1340,15 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
                                    const SolverControl& control) {
     const FilmGrid& g = sys.grid();
     const int n = g.size();
-    if (!h_ || h_->levels[0].nz != g.nAxial() || h_->levels[0].nt != g.nTheta() ||
-        h_->levels[0].periodic != g.periodic() || h_->levels[0].z != g.axial()) {
+    const int found = h_ ? h_->find(g) : -1;
+    if (found < 0) {
         h_ = std::make_unique<Hierarchy>();
         h_->buildGeometry(g);
     }
     Hierarchy& H = *h_;
+    H.base = found < 0 ? 0 : static_cast<std::size_t>(found);
     H.extractFine(sys);
-    Level& F = H.levels[0];
+    Level& F = H.levels[H.base];
     const bool bounded = std::isfinite(pLower);
     const double* __restrict b = sys.rhs().data();
     if (p.size() != n) p = sys.initialGuess(pLower);
@@ -1457,9 +1486,9 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
         // last pass on z-line levels).
         Hierarchy::LineSearch ls{x, pLower, bounded, dir, &H.filmRuns};
         if (F.fusedZ) {
-            H.vcycleZT<true>(0, &ls);
+            H.vcycleZT<true>(H.base, &ls);
         } else {
-            H.vcycle(0);
+            H.vcycle(H.base);
             for (int i = 0; i < nz; ++i) ls.direction(F, i);
             for (int i = 0; i < nz; ++i) ls.curvature(F, i);
         }

@@ -55,6 +55,13 @@ public:
     /// Number of grid levels of the last solve (1 = no coarse grid could be built).
     int levels() const;
 
+    /// Builds the grid hierarchy of `fine` (kept if it exists). solve() on a grid of that
+    /// hierarchy — `fine` or one of its coarse levels, which are FilmGrid::coarsened's grids —
+    /// then uses it and its memory instead of building one (nested iteration of a cold start).
+    void prepare(const FilmGrid& fine);
+    /// True if g's geometry is a level of the current hierarchy.
+    bool hasLevel(const FilmGrid& g) const;
+
 private:
     struct Hierarchy;
     std::unique_ptr<Hierarchy> h_;

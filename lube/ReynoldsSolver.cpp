@@ -89,6 +89,9 @@ Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coars
     for (int l = 1; l <= L; ++l)
         states.push_back(inject(l == 1 ? film : states.back(), gridAt(l), gridAt(l - 1),
                                 coarse_[static_cast<std::size_t>(l - 1)].axialMap));
+    // Multigrid: the coarse grids are levels of the fine grid's hierarchy, solved with it (one
+    // hierarchy, one set of work arrays; a separate solver per grid only if they differ).
+    if (options_.solver == SolverKind::Multigrid) multigrid_.prepare(grid_);
     Eigen::VectorXd p;
     try {
         for (int l = L; l >= 1; --l) {
@@ -100,9 +103,10 @@ Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coars
             // coarse discretisation error at 1e-4.
             SolverControl coarseControl = options_.control;
             coarseControl.tolerance = std::max(coarseControl.tolerance, 1e-4);
+            MultigridSolver& mg = multigrid_.hasLevel(g) ? multigrid_ : lev.multigrid;
             const SolveReport rep =
                 options_.solver == SolverKind::Multigrid
-                    ? lev.multigrid.solve(sys, p, options_.cavitationPressure, coarseControl)
+                    ? mg.solve(sys, p, options_.cavitationPressure, coarseControl)
                     : lev.solver.solve(sys, p, options_.cavitationPressure, options_.control);
             coarseIterations += rep.iterations;
             p = prolong(p, g, gridAt(l - 1), coarse_[static_cast<std::size_t>(l - 1)].axialMap);
