@@ -25,11 +25,47 @@ constexpr std::size_t sj(int j) { return static_cast<std::size_t>(j); }
 
 enum class Lines { Z, Theta, Both };
 
-// Per-node work vector on LargeArrayAllocator storage (huge pages for big levels), with the
-// Eigen-like members used here. resize() leaves new doubles uninitialised (assign() zeroes).
-struct Vec : LargeVector<double> {
-    int size() const { return static_cast<int>(LargeVector<double>::size()); }
-    void setZero() { std::fill(begin(), end(), 0.0); }
+// Per-node work vector with the Eigen-like members used here: a slice of the hierarchy's arena
+// (bind: one huge-page block for all the work vectors of all levels, §7 of docs/lube.md), or
+// its own LargeArrayAllocator storage when it must grow beyond its slice. resize() leaves new
+// doubles uninitialised (assign() zeroes) and, beyond the slice, does not keep the contents.
+struct Vec {
+    Vec() = default;
+    Vec(Vec&&) noexcept = default;
+    Vec& operator=(Vec&&) noexcept = default;
+    Vec(const Vec&) = delete;  // p may point into store
+    void bind(double* slice, std::size_t capacity) {
+        p = slice;
+        cap = capacity;
+        n = 0;
+    }
+    void resize(std::size_t m) {
+        if (m > cap) {
+            store.resize(m);
+            p = store.data();
+            cap = m;
+        }
+        n = m;
+    }
+    void assign(std::size_t m, double v) {
+        resize(m);
+        std::fill(p, p + m, v);
+    }
+    void clear() { n = 0; }
+    bool empty() const { return n == 0; }
+    int size() const { return static_cast<int>(n); }
+    double* data() { return p; }
+    const double* data() const { return p; }
+    double* begin() { return p; }
+    double* end() { return p + n; }
+    double& operator[](std::size_t k) { return p[k]; }
+    const double& operator[](std::size_t k) const { return p[k]; }
+    void setZero() { std::fill(p, p + n, 0.0); }
+
+private:
+    double* p = nullptr;
+    std::size_t n = 0, cap = 0;
+    LargeVector<double> store;
 };
 
 // Stencil layouts: coarse levels store 9 entries per node in sidx order; the fine level, whose
@@ -225,6 +261,10 @@ struct MultigridSolver::Hierarchy {
     Eigen::LDLT<Eigen::MatrixXd> ldlt;  // coarsest level
     Vec dir;                            // line-search direction
     Vec invDiag;                        // 1/A_kk on the fine Film nodes (0 elsewhere)
+    // Storage of the per-node work vectors of all levels (Vec::bind): one block, on huge pages,
+    // instead of one mapping per array (a page fault per 4 KiB below 1 MiB, a 2 MiB page per
+    // array above; the levels of a 256×512 grid have 40 such arrays).
+    LargeVector<double> arena;
     std::vector<char> near;             // fine Film nodes next to a frozen or non-Film node
     std::vector<char> colFree;          // markNear work array (one fine row)
     // Runs [first, second) of fine columns holding a Film node. The fine outer pass and the line
@@ -359,10 +399,30 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
             }
         levels.push_back(std::move(C));
     }
+    // Arena slices, each a whole number of cache lines: per level x, f, q, zm, zw and the Galerkin
+    // stencil (9 per node, coarse levels); dir and invDiag for the finest. The θ-line factors and
+    // the residual of unfused levels (rare) get their own storage on first use.
+    auto lines = [](std::size_t m) { return (m + 7) / 8 * 8; };
+    std::size_t total = 2 * lines(static_cast<std::size_t>(levels[0].size()));
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+        const auto n = static_cast<std::size_t>(levels[l].size());
+        total += 5 * lines(n) + (l > 0 ? lines(9 * n) : 0);
+    }
+    arena.resize(total);  // not zero-filled: pages are touched as the arrays are written
+    double* next = arena.data();
+    auto slice = [&](Vec& v, std::size_t m) {
+        v.bind(next, m);
+        next += lines(m);
+    };
+    slice(dir, static_cast<std::size_t>(levels[0].size()));
+    slice(invDiag, static_cast<std::size_t>(levels[0].size()));
     std::size_t maxLine = 0;
-    for (Level& L : levels) {
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+        Level& L = levels[l];
         const auto n = static_cast<std::size_t>(L.size());
-        if (!L.five) {
+        for (Vec* v : {&L.x, &L.f, &L.q, &L.zm, &L.zw}) slice(*v, n);
+        if (l > 0) {
+            slice(L.own, 9 * n);
             L.own.resize(9 * n);  // filled by the first (full) Galerkin product
             L.a = L.own.data();
         }
