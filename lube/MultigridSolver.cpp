@@ -258,6 +258,7 @@ struct MultigridSolver::Hierarchy {
     bool galerkinValid = false;
     std::vector<double> lo, d, up, rhs;  // line-solve work arrays
     std::vector<int> staleDown, staleUp;  // factorZT work lists
+    std::vector<int> rangeLo, rangeHi;    // factorZT work arrays (one per column)
     Eigen::LDLT<Eigen::MatrixXd> ldlt;  // coarsest level
     Vec dir;                            // line-search direction
     Vec invDiag;                        // 1/A_kk on the fine Film nodes (0 elsewhere)
@@ -448,6 +449,8 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
         maxLine = std::max({maxLine, static_cast<std::size_t>(L.nz), static_cast<std::size_t>(L.nt)});
     }
     for (auto* v : {&lo, &d, &up, &rhs}) v->assign(maxLine, 0.0);
+    rangeLo.resize(maxLine);
+    rangeHi.resize(maxLine);
     galerkinValid = false;
 }
 
@@ -828,6 +831,20 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
     int* hi = L.colHi.data();
     double* x = L.x.data();
     double* q = L.q.data();
+    if (ranged) {
+        // First and last free row of every column, row by row (contiguous, branch-free).
+        int* a = rangeLo.data();
+        int* b = rangeHi.data();
+        std::fill_n(a, nt, nz);
+        std::fill_n(b, nt, -1);
+        for (int i = 0; i < nz; ++i) {
+            const char* f = fr + i * nt;
+            for (int j = 0; j < nt; ++j) {
+                a[j] = f[j] && a[j] == nz ? i : a[j];
+                b[j] = f[j] ? i : b[j];
+            }
+        }
+    }
     for (const std::vector<int>* v : {&down, &up})
         for (const int j : *v) {
             // Rows outside the old range were not factored: a top-down factor is valid only up
@@ -843,10 +860,7 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
             // New range (scanned from both ends). The sweeps skip the rows outside, and read
             // them as neighbours (x) and as the eliminated row next to the range (q): x = 0 on the
             // rows that leave it (outside the old range it is 0 already), q = 0 next to it.
-            int a = 0, b = nz - 1;
-            while (a < nz && !fr[a * nt + j]) ++a;
-            while (b > a && !fr[b * nt + j]) --b;
-            if (a == nz) b = -1;
+            const int a = rangeLo[sj(j)], b = rangeHi[sj(j)];
             for (int i = lo[j]; i <= hi[j]; ++i)
                 if (i < a || i > b) x[i * nt + j] = 0.0;
             if (a > 0 && a < nz) q[(a - 1) * nt + j] = 0.0;
@@ -893,14 +907,23 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
         liveOdd.clear();
         for (int j = 0; j < nt; ++j)
             if (lo[j] <= hi[j]) (j % 2 ? liveOdd : live).push_back(j);
-        for (int i = 0; i < nz; ++i) {
-            for (const int j : live)
-                if (lo[j] <= i && i <= hi[j]) L.evenIdx.push_back(j);
-            for (const int j : liveOdd)
-                if (lo[j] <= i && i <= hi[j]) L.oddIdx.push_back(j);
-            L.rowEven[static_cast<std::size_t>(i) + 1] = static_cast<int>(L.evenIdx.size());
-            L.rowOdd[static_cast<std::size_t>(i) + 1] = static_cast<int>(L.oddIdx.size());
-        }
+        // Branch-free: every live column is written, the count advances if it is in range.
+        auto build = [&](const std::vector<int>& cols, std::vector<int>& row, std::vector<int>& idx) {
+            std::size_t total = cols.size();
+            for (const int j : cols) total += static_cast<std::size_t>(hi[j] - lo[j] + 1);
+            idx.resize(total);
+            int* out = idx.data();
+            int cnt = 0;
+            for (int i = 0; i < nz; ++i) {
+                for (const int j : cols) {
+                    out[cnt] = j;
+                    cnt += static_cast<int>((lo[j] <= i) & (i <= hi[j]));
+                }
+                row[static_cast<std::size_t>(i) + 1] = cnt;
+            }
+        };
+        build(live, L.rowEven, L.evenIdx);
+        build(liveOdd, L.rowOdd, L.oddIdx);
     }
     std::fill(L.colOk.begin(), L.colOk.end(), 1);
     std::fill(L.colFrom.begin(), L.colFrom.end(), nz);
