@@ -1447,16 +1447,14 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
     // Columns without Film nodes, skipped by the passes below: no defect, not free, and their
     // (constant) share of the pressure scale.
     double deadScale = 0.0;
-    {
+    for (int i = 0; i < F.nz; ++i) {
         int j = 0;
         for (std::size_t r = 0; r <= H.filmRuns.size(); ++r) {
             const int jEnd = r < H.filmRuns.size() ? H.filmRuns[r].first : F.nt;
-            for (; j < jEnd; ++j)
-                for (int i = 0; i < F.nz; ++i) {
-                    const int k = i * F.nt + j;
-                    F.f[k] = 0.0;
-                    deadScale = std::max(deadScale, std::abs(p[k] - g.ambientPressure()));
-                }
+            for (int k = i * F.nt + j; j < jEnd; ++j, ++k) {
+                F.f[k] = 0.0;
+                deadScale = std::max(deadScale, std::abs(p[k] - g.ambientPressure()));
+            }
             if (r < H.filmRuns.size()) j = H.filmRuns[r].second;
         }
     }
