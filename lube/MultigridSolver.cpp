@@ -1052,11 +1052,15 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             const double r = f[k] - (c[St::C] * x0[j] + offDiag<Five>(c, xm, x0, xp, j, jmv[j], jpv[j]));
             const auto sj = static_cast<std::size_t>(j);
             const int J0 = L.pt0[sj], J1 = L.pt1[sj];
-            const double a0 = L.wt0[sj] * r, a1 = L.wt1[sj] * r;
+            const double wt1 = L.wt1[sj], a0 = L.wt0[sj] * r, a1 = wt1 * r;
+            // Zero weights (a fine row or column on a coarse one: most nodes) skipped; the
+            // tests are uniform along a row and within a column parity.
             c0[J0] += w0 * a0;
-            c0[J1] += w0 * a1;
-            c1[J0] += w1 * a0;
-            c1[J1] += w1 * a1;
+            if (wt1 != 0.0) c0[J1] += w0 * a1;
+            if (w1 != 0.0) {
+                c1[J0] += w1 * a0;
+                if (wt1 != 0.0) c1[J1] += w1 * a1;
+            }
         };
         for (const int j : evenCols(i)) node(j);
         for (const int j : oddCols(i)) node(j);
