@@ -1439,12 +1439,16 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
     const bool bounded = std::isfinite(pLower);
     const double* __restrict b = sys.rhs().data();
     if (p.size() != n) p = sys.initialGuess(pLower);
-    for (int k = 0; k < n; ++k)
-        if (!sys.isFilm(k)) p[k] = g.prescribedPressure(k);
+    // Prescribed values on the non-Film nodes, the bound on the Film nodes, and the free
+    // boundary of the starting point (for the local relaxation of the first iteration).
+    const double* pp = g.prescribedPressures();
+    for (int k = 0; k < n; ++k) {
+        const auto sk = static_cast<std::size_t>(k);
+        if (!H.film[sk]) p[k] = pp[k];
         else if (bounded && p[k] < pLower) p[k] = pLower;
+        F.free[sk] = H.film[sk] && !(bounded && p[k] <= pLower);
+    }
     H.dir.assign(n, 0.0);  // stays 0 outside the Film columns
-    // Free boundary of the starting point, for the local relaxation of the first iteration.
-    for (int k = 0; k < n; ++k) F.free[static_cast<std::size_t>(k)] = H.film[static_cast<std::size_t>(k)] && !(bounded && p[k] <= pLower);
     H.near.resize(static_cast<std::size_t>(n));
     H.colFree.resize(static_cast<std::size_t>(F.nt));
     for (int i = 0; i < F.nz; ++i) H.markNear(i);
