@@ -22,12 +22,14 @@ Eigen::VectorXd prolong(const Eigen::VectorXd& pc, const FilmGrid& coarse, const
         while (I + 2 < axialMap.size() && axialMap[I + 1] <= i) ++I;
         const int i0 = axialMap[I], i1 = axialMap[I + 1];
         const double wz = (fine.z(i) - fine.z(i0)) / (fine.z(i1) - fine.z(i0));
+        const double* c0 = pc.data() + coarse.index(static_cast<int>(I), 0);  // rows I, I + 1
+        const double* c1 = pc.data() + coarse.index(static_cast<int>(I) + 1, 0);
+        double* out = pf.data() + fine.index(i, 0);
         for (int j = 0; j < ntf; ++j) {
-            const int J0 = j / 2, J1 = (j % 2 == 0) ? J0 : (J0 + 1) % ntc;
-            auto at = [&](int II, int J) { return pc[coarse.index(static_cast<int>(II), J)]; };
-            const double lo = 0.5 * (at(static_cast<int>(I), J0) + at(static_cast<int>(I), J1));
-            const double hi = 0.5 * (at(static_cast<int>(I) + 1, J0) + at(static_cast<int>(I) + 1, J1));
-            pf[fine.index(i, j)] = (1 - wz) * lo + wz * hi;
+            const int J0 = j / 2, J1 = (j % 2 == 0) ? J0 : (J0 + 1 == ntc ? 0 : J0 + 1);
+            const double lo = 0.5 * (c0[J0] + c0[J1]);
+            const double hi = 0.5 * (c1[J0] + c1[J1]);
+            out[j] = (1 - wz) * lo + wz * hi;
         }
     }
     return pf;
