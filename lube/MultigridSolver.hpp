@@ -30,8 +30,9 @@
 // projection: a linear multigrid iteration with exact line search.
 // Convergence criterion: ReynoldsSystem::residual ≤ tolerance (docs/lube.md §3); iterations =
 // outer (V-cycle) iterations. Cost per iteration is O(N).
-// Work vectors use LargeArrayAllocator (huge pages for large levels, no zero fill: every array
-// is written before it is read).
+// The work vectors of all levels are slices of one LargeArrayAllocator block per hierarchy (huge
+// pages, no zero fill: every array is written before it is read). A cold solve's nested coarse
+// problems run on the levels of the fine grid's hierarchy (prepare()).
 #include <Eigen/Core>
 #include <memory>
 #include <vector>
