@@ -857,7 +857,7 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
                 hi[j] = nz - 1;
                 continue;
             }
-            // New range (scanned from both ends). The sweeps skip the rows outside, and read
+            // New range (from the scan above). The sweeps skip the rows outside, and read
             // them as neighbours (x) and as the eliminated row next to the range (q): x = 0 on the
             // rows that leave it (outside the old range it is 0 already), q = 0 next to it.
             const int a = rangeLo[sj(j)], b = rangeHi[sj(j)];
