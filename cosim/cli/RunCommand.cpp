@@ -121,9 +121,15 @@ void runCase(const RunArgs& a) {
     auto log = [&](const std::string& s) {
         if (!a.quiet) fmt::print(stderr, "{}\n", s);
     };
-    log(fmt::format("flexehd run {}: piston {}, liner {}, grid {} x {}, {} rpm -> {}", c.path,
+    const bool anyFlexible =
+        c.pistonBody.model == cosim::BodyModel::Flexible || c.linerBody.model == cosim::BodyModel::Flexible;
+    log(fmt::format("flexehd run {}: piston {}, liner {}{}, grid {} x {}, {} rpm -> {}", c.path,
                     c.pistonBody.model == cosim::BodyModel::Flexible ? "flexible" : "rigid",
-                    c.linerBody.model == cosim::BodyModel::Flexible ? "flexible" : "rigid", c.grid.axialNodes,
+                    c.linerBody.model == cosim::BodyModel::Flexible ? "flexible" : "rigid",
+                    !anyFlexible ? ""
+                    : c.coupling.response == cosim::ElasticResponse::Dynamic ? " (modal dynamics)"
+                                                                            : " (quasi-static)",
+                    c.grid.axialNodes,
                     c.grid.circumferentialNodes, c.engine.speedRpm, dir));
     cosim::PistonSimulation sim(c);
     if (sim.piston()) {
