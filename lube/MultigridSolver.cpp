@@ -1566,7 +1566,8 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
             throw std::runtime_error("MultigridSolver: diverged after " +
                                      std::to_string(rep.iterations) + " iterations (residual " +
                                      std::to_string(rep.residual) + ")");
-        if (rep.residual <= control.tolerance) return rep;
+        if (rep.residual <= control.tolerance && rep.iterations >= std::min(control.minIterations, maxIt))
+            return rep;
         if (rep.iterations == maxIt) break;
         // 4. The Galerkin operators follow the truncation.
         H.updateCoarse();

@@ -7,6 +7,9 @@ struct SolverControl {
     double tolerance = 1e-8;
     /// PSOR sweeps or active-set iterations before giving up (std::runtime_error).
     int maxIterations = 200000;
+    /// MultigridSolver only: iterations done even when the start already meets the tolerance
+    /// (the nested coarse solves of a cold start, whose prolonged start is not smoothed).
+    int minIterations = 0;
 };
 
 struct SolveReport {
