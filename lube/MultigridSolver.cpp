@@ -290,7 +290,7 @@ struct MultigridSolver::Hierarchy {
     void updateCoarse();
     void factorCoarsest();
     void factorZ(Level& L);
-    template <bool Five> void factorZT(Level& L);
+    template <bool Five> bool factorZT(Level& L, bool mayDefer = false);
     void factorTheta(Level& L, int i);
     static void thomasSolve(const Level& L, int i, double* r);
     void lineSweepZ(Level& L, bool forward);
@@ -799,8 +799,13 @@ void MultigridSolver::Hierarchy::factorZ(Level& L) {
     else factorZT<false>(L);
 }
 
+// mayDefer (fused levels, from vcycleZT): when every column is refactored over its whole free
+// range (a new hierarchy's or a full Galerkin rebuild's first V-cycle), only the ranges and row
+// lists are set up and true is returned — the caller then computes the factors row by row in its
+// first eliminations (same formulas, same order within each column: the same values), instead
+// of in a pass of its own over the stencil.
 template <bool Five>
-void MultigridSolver::Hierarchy::factorZT(Level& L) {
+bool MultigridSolver::Hierarchy::factorZT(Level& L, bool mayDefer) {
     using St = Stencil<Five>;
     const int nt = L.nt, nz = L.nz;
     if (L.zm.empty()) {
@@ -817,7 +822,7 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
     up.clear();
     for (int j = 0; j < nt; ++j)
         if (!L.colOk[static_cast<std::size_t>(j)]) (reverseOdd && j % 2 == 1 ? up : down).push_back(j);
-    if (down.empty() && up.empty()) return;
+    if (down.empty() && up.empty()) return false;
     double* zm = L.zm.data();
     double* zw = L.zw.data();
     const char* fr = L.free.data();
@@ -868,8 +873,14 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
             lo[j] = a;
             hi[j] = b;
         }
+    // Deferred to the caller when every column is stale over its whole free range.
+    bool defer = mayDefer && ranged && down.size() + up.size() == static_cast<std::size_t>(nt);
+    if (defer) {
+        for (const int j : down) defer &= from[j] <= lo[j];
+        for (const int j : up) defer &= to[j] >= hi[j];
+    }
     // Row by row over the stale columns (contiguous memory), from the first changed row.
-    for (int i = 0; i < nz; ++i)
+    for (int i = 0; i < nz && !defer; ++i)
         for (const int j : down) {
             if (i < from[j] || i < lo[j] || i > hi[j]) continue;
             const auto sk = static_cast<std::size_t>(i * nt + j);
@@ -882,7 +893,7 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
             zm[sk] = m;
             zw[sk] = c[St::N] * m;
         }
-    for (int i = nz - 1; i >= 0; --i)
+    for (int i = nz - 1; i >= 0 && !defer; --i)
         for (const int j : up) {
             if (i > to[j] || i < lo[j] || i > hi[j]) continue;
             const auto sk = static_cast<std::size_t>(i * nt + j);
@@ -928,6 +939,7 @@ void MultigridSolver::Hierarchy::factorZT(Level& L) {
     std::fill(L.colOk.begin(), L.colOk.end(), 1);
     std::fill(L.colFrom.begin(), L.colFrom.end(), nz);
     std::fill(L.colTo.begin(), L.colTo.end(), -1);
+    return defer;
 }
 
 // One V-cycle step on a level smoothed by zebra z-lines (L.lines == Z), with the passes fused:
@@ -950,14 +962,17 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     using St = Stencil<Five>;
     Level& L = levels[l];
     Level& C = levels[l + 1];
-    factorZ(L);
+    // The line factors, unless deferred to the pre-smoothing's eliminations (factorZT).
+    const bool factorInPasses = factorZT<Five>(L, true);
     const int nz = L.nz, nt = L.nt;
     // No two of these overlap (restrict lets the compiler keep loaded values across stores).
     double* __restrict x = L.x.data();
     double* __restrict R = L.q.data();
     const double* __restrict f = L.f.data();
-    const double* __restrict M = L.zm.data();
-    const double* __restrict W = L.zw.data();
+    double* __restrict M = L.zm.data();
+    double* __restrict W = L.zw.data();
+    const int* __restrict colLo = L.colLo.data();
+    const int* __restrict colHi = L.colHi.data();
     const char* __restrict fr = L.free.data();
     const double* __restrict A = L.a;
     const bool allColumns = L.periodic && nt % 2 == 1;  // even columns need the correction too
@@ -980,7 +995,9 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     };
     auto evenCols = [&](int i) { return Cols{L.evenIdx.data() + L.rowEven[sj(i)], L.evenIdx.data() + L.rowEven[sj(i) + 1]}; };
     auto oddCols = [&](int i) { return Cols{L.oddIdx.data() + L.rowOdd[sj(i)], L.oddIdx.data() + L.rowOdd[sj(i) + 1]}; };
-    auto evenElim = [&](int i, bool pre) {
+    // Factor: also the deferred line factors of the row (factorZT's top-down formulas).
+    auto evenElim = [&](auto factorTag, int i, bool pre) {
+        constexpr bool Factor = decltype(factorTag)::value;
         const double* xm = x + L.im(i) * nt;
         const double* x0 = x + i * nt;
         const double* xp = x + L.ip(i) * nt;
@@ -989,9 +1006,15 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             const int k = row + j;
             if (!fr[k]) {
                 R[k] = 0.0;
+                if constexpr (Factor) M[k] = W[k] = 0.0;
                 continue;
             }
             const double* c = A + n5 * static_cast<std::size_t>(k);
+            if constexpr (Factor) {
+                const double m = safeInverse(c[St::C] - (i > colLo[j] ? c[St::S] * W[k - nt] : 0.0), c[St::C]);
+                M[k] = m;
+                W[k] = c[St::N] * m;
+            }
             const double s = i > 0 ? c[St::S] * R[k - nt] : 0.0;
             const double rhs = pre ? f[k] : lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]);
             R[k] = (rhs - s) * M[k];
@@ -1004,7 +1027,10 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         else
             for (const int j : evenCols(i)) x[row + j] = R[row + j];
     };
-    auto oddElim = [&](int i) {
+    // Factor: also the deferred line factors of the row (factorZT's bottom-up formulas; the rows
+    // below are done, pass B runs upwards).
+    auto oddElim = [&](auto factorTag, int i) {
+        constexpr bool Factor = decltype(factorTag)::value;
         const double* xm = x + L.im(i) * nt;
         const double* x0 = x + i * nt;
         const double* xp = x + L.ip(i) * nt;
@@ -1013,9 +1039,15 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             const int k = row + j;
             if (!fr[k]) {
                 R[k] = 0.0;
+                if constexpr (Factor) M[k] = W[k] = 0.0;
                 continue;
             }
             const double* c = A + n5 * static_cast<std::size_t>(k);
+            if constexpr (Factor) {
+                const double m = safeInverse(c[St::C] - (i < colHi[j] ? c[St::N] * W[k + nt] : 0.0), c[St::C]);
+                M[k] = m;
+                W[k] = c[St::S] * m;
+            }
             const double nn = i + 1 < nz ? c[St::N] * R[k + nt] : 0.0;
             R[k] = (lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]) - nn) * M[k];
         }
@@ -1027,12 +1059,12 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         else
             for (const int j : oddCols(i)) x[row + j] = R[row + j];
     };
-    auto passB = [&]() {
+    auto passB = [&](auto factorTag) {
         for (int i = nz - 1; i >= 0; --i) {
             evenBack(i);
-            if (i + 1 < nz) oddElim(i + 1);
+            if (i + 1 < nz) oddElim(factorTag, i + 1);
         }
-        oddElim(0);
+        oddElim(factorTag, 0);
     };
     // Residual of row i, restricted to the coarse right-hand side.
     double* __restrict cf = C.f.data();
@@ -1085,8 +1117,13 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     };
 
     // Pre-smoothing, residual, restriction.
-    for (int i = 0; i < nz; ++i) evenElim(i, true);
-    passB();
+    if (factorInPasses) {
+        for (int i = 0; i < nz; ++i) evenElim(std::true_type{}, i, true);
+        passB(std::true_type{});
+    } else {
+        for (int i = 0; i < nz; ++i) evenElim(std::false_type{}, i, true);
+        passB(std::false_type{});
+    }
     C.f.setZero();
     for (int i = 0; i < nz; ++i) {
         oddBack(i);
@@ -1099,9 +1136,9 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     correctRow(0);
     for (int i = 0; i < nz; ++i) {
         if (i + 1 < nz) correctRow(i + 1);
-        evenElim(i, false);
+        evenElim(std::false_type{}, i, false);
     }
-    passB();
+    passB(std::false_type{});
     if (!ls) {
         for (int i = 0; i < nz; ++i) oddBack(i);
         return;
