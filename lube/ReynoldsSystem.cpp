@@ -122,7 +122,8 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     auto rhoAt = [&](int k) { return Constant ? rho[0] : rho[k]; };
     auto etaAt = [&](int k) { return Constant ? eta[0] : eta[k]; };
     // Face a–b: c_f and the Couette mass flux a → b (face values as faceValue()).
-    auto face = [&](int a, int b, double U, double L, double d, double& c, double& m) {
+    // q (constant ρ, η): ρ L / (12 η d) of the face, so c_f = h_f³ q without a division per face.
+    auto face = [&](int a, int b, double U, double L, double d, double q, double& c, double& m) {
         double hf, rf, ef;
         if (kind[a] == NodeKind::Void) {
             hf = h[b]; rf = rhoAt(b); ef = etaAt(b);
@@ -133,7 +134,8 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
             rf = Constant ? rho[0] : 0.5 * (rho[a] + rho[b]);
             ef = Constant ? eta[0] : 0.5 * (eta[a] + eta[b]);
         }
-        c = rf * hf * hf * hf * L / (12.0 * ef * d);
+        if constexpr (Constant) c = hf * hf * hf * q;
+        else c = rf * hf * hf * hf * L / (12.0 * ef * d);
         m = 0.5 * U * rf * hf * L;
     };
     constexpr NodeKind Film = NodeKind::Film;
@@ -142,16 +144,18 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
         const bool hasDown = i + 1 < nz;
         const double dz = hasDown ? grid.z(i + 1) - grid.z(i) : 0.0;
         const double Lt = grid.axialWidth(i);
+        const double qz = Constant && hasDown ? rho[0] / (12.0 * eta[0] * dz) : 0.0;  // × colL[j]
+        const double qt = Constant ? rho[0] * Lt / (12.0 * eta[0] * arcD) : 0.0;
         for (int j = 0; j < nt; ++j) {
             const int k = row + j;
             const bool kf = kind[k] == Film;
             cDn[sj(j)] = mDn[sj(j)] = 0.0;
             if (hasDown && (kf || kind[k + nt] == Film))
-                face(k, k + nt, Uz, colL[sj(j)], dz, cDn[sj(j)], mDn[sj(j)]);
+                face(k, k + nt, Uz, colL[sj(j)], dz, qz * colL[sj(j)], cDn[sj(j)], mDn[sj(j)]);
             cT[sj(j)] = mT[sj(j)] = 0.0;
             if (j + 1 < nt || periodic) {
                 const int kr = j + 1 < nt ? k + 1 : row;
-                if (kf || kind[kr] == Film) face(k, kr, Ut, Lt, arcD, cT[sj(j)], mT[sj(j)]);
+                if (kf || kind[kr] == Film) face(k, kr, Ut, Lt, arcD, qt, cT[sj(j)], mT[sj(j)]);
             }
         }
         for (int j = 0; j < nt; ++j) {
