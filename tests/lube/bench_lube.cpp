@@ -2,7 +2,8 @@
 // skirt-like film and on a plain journal bearing, at grids nAxial×nTheta from 64×128 up.
 // Not a test: prints a Markdown table (scripts/bench_lube.sh writes it into docs/).
 //   bench_lube [maxAxial=512] [tolerance=1e-8] [repeats=1] [multigrid|omega]
-// Each time is the best of `repeats` cold solves (a fresh ReynoldsSolver each), which filters
+// Each time is the best of `repeats` cold solves (a fresh ReynoldsSolver each; in the full
+// table after one untimed cold solve of each solver, PSOR's being its ω scan), which filters
 // out the noise of a shared machine; the full table also gives the best thread CPU times (not
 // inflated while other processes hold the core) and their ratio. PSOR runs at its automatic ω and at the best ω of a scan
 // (see the full table below). With a fourth argument `multigrid` only the multigrid solver is
@@ -222,7 +223,12 @@ int main(int argc, char** argv) {
             }
             ReynoldsResult as, mg;
             double cAs = 1e300, cMg = 1e300;
+            // One untimed cold solve of each before its timed ones, as PSOR's ω scan is for PSOR:
+            // the first solves of a solver kind in a process pay the allocator's warm-up (fresh
+            // mappings, page faults; docs/lube.md §7), which a co-simulation pays once.
+            run(SolverKind::ActiveSet, 0.0, as);
             const double tAs = best(SolverKind::ActiveSet, 0.0, as, 1e300, cAs);
+            run(SolverKind::Multigrid, 0.0, mg);
             const double tMg = best(SolverKind::Multigrid, 0.0, mg, 1e300, cMg);
             // Errors against the active-set answer (exact to round-off).
             const double pmax = as.pressure.maxCoeff();
