@@ -274,10 +274,10 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
     ctx.before = &prev;
     const double dt = ctx.dt;
     if (pistonDynamics_ || linerDynamics_) {
-        // BDF2 histories of the modal coordinates (the previous state's are unused on the first
-        // step, where a2 = 0).
-        ctx.hq = ctx.a1 * s.y + ctx.a2 * (prev.y.size() == s.y.size() ? prev.y : s.y);
-        ctx.hv = ctx.a1 * s.w + ctx.a2 * (prev.w.size() == s.w.size() ? prev.w : s.w);
+        // BDF2 histories of the modal coordinates (prev starts as a copy of the initial state;
+        // a2 = 0 on the first step).
+        ctx.hq = ctx.a1 * s.y + ctx.a2 * prev.y;
+        ctx.hv = ctx.a1 * s.w + ctx.a2 * prev.w;
         if (pistonDynamics_) pistonDynamics_->setStep(ctx.a0, dt);
         if (linerDynamics_) linerDynamics_->setStep(ctx.a0, dt);
     }

@@ -41,24 +41,30 @@ Eigen::VectorXd ModalSuperposition::modalForce(const Eigen::VectorXd& f) const {
     return body_.shapes.transpose() * f;
 }
 
+Eigen::LDLT<Eigen::MatrixXd> heldStiffness(const ReducedBody& body, const Eigen::MatrixXd& N) {
+    Eigen::LDLT<Eigen::MatrixXd> ldlt(N.transpose() * body.stiffnessMatrix * N);
+    const double scale = body.stiffnessMatrix.diagonal().cwiseAbs().maxCoeff();
+    if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 1e-10 * scale)
+        throw std::runtime_error("the body can still move rigidly with its held interfaces; hold an interface "
+                                 "that fixes it");
+    return ldlt;
+}
+
 Eigen::VectorXd ModalSuperposition::quasiStatic(const Eigen::VectorXd& g, const std::vector<int>& held) const {
     const Eigen::Index m = body_.numModes();
     if (g.size() != m)
         throw std::invalid_argument("quasi-static: " + std::to_string(g.size()) + " modal forces for " +
                                     std::to_string(m) + " modes");
-    return compliance(held) * g;
+    const Eigen::MatrixXd N = heldBasis(body_, held);
+    if (N.cols() == 0) return Eigen::VectorXd::Zero(m);  // held interfaces fix every mode
+    return N * heldStiffness(body_, N).solve(N.transpose() * g);
 }
 
 Eigen::MatrixXd ModalSuperposition::compliance(const std::vector<int>& held) const {
     const Eigen::Index m = body_.numModes();
     const Eigen::MatrixXd N = heldBasis(body_, held);
     if (N.cols() == 0) return Eigen::MatrixXd::Zero(m, m);  // held interfaces fix every mode
-    const Eigen::MatrixXd Kn = N.transpose() * body_.stiffnessMatrix * N;
-    Eigen::LDLT<Eigen::MatrixXd> ldlt(Kn);
-    const double scale = body_.stiffnessMatrix.diagonal().cwiseAbs().maxCoeff();
-    if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 1e-10 * scale)
-        throw std::runtime_error("quasi-static response: the body can still move rigidly; hold an interface");
-    return N * ldlt.solve(N.transpose());
+    return N * heldStiffness(body_, N).solve(N.transpose());
 }
 
 ModalDynamics::ModalDynamics(const ReducedBody& body, double dt) : dt_(dt) {

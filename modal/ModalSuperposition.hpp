@@ -3,6 +3,7 @@
 // modal forces Φᵀ f, and the quasi-static and dynamic modal responses.
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "modal/ReducedBody.hpp"
@@ -13,6 +14,9 @@ namespace flexehd::modal {
 /// reference nodes of the `held` interfaces at rest (their six motions A q = 0): q = N r.
 /// Identity when nothing is held. Throws std::invalid_argument for an unknown interface index.
 Eigen::MatrixXd heldBasis(const ReducedBody& body, const std::vector<int>& held);
+/// The factorized stiffness Nᵀ K_r N on a held basis N (N.cols() > 0). Throws
+/// std::runtime_error if the held body can still move rigidly (a zero-frequency free coordinate).
+Eigen::LDLT<Eigen::MatrixXd> heldStiffness(const ReducedBody& body, const Eigen::MatrixXd& N);
 
 class ModalSuperposition {
 public:
