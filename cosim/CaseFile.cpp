@@ -720,7 +720,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     c.time.periodicityTolerance =
         number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, c.time.periodicityTolerance);
 
-    const Section coupling(ctx, top.get("coupling"), "coupling", {"tolerance", "max_iterations", "acceleration"});
+    const Section coupling(ctx, top.get("coupling"), "coupling", {"tolerance", "max_iterations", "acceleration", "elastic_squeeze"});
     c.coupling.tolerance =
         number(coupling, "tolerance", {"relative tolerance", ""}, Sign::Positive, c.coupling.tolerance);
     if (!(c.coupling.tolerance < 1.0))
@@ -730,6 +730,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     c.coupling.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0
                                   ? CouplingAcceleration::IqnIls
                                   : CouplingAcceleration::Aitken;
+    c.coupling.elasticSqueeze = boolean(coupling, "elastic_squeeze", c.coupling.elasticSqueeze);
 
     const Section output(ctx, top.get("output"), "output", {"directory", "vtk_every_deg", "mode_shapes"});
     {

@@ -109,6 +109,11 @@ struct CouplingSpec {
     int maxIterations = 30;    ///< passes per step, one film solve each (+ 2 for the first pass's Jacobian)
     CouplingAcceleration acceleration = CouplingAcceleration::IqnIls;
     ElasticResponse response = ElasticResponse::QuasiStatic;
+    /// coupling.elastic_squeeze: the squeeze term ∂h/∂t includes the elastic deformation rate
+    /// (GUIDE eq. 1 in full); the step is then solved by semismooth Newton on the motion and the
+    /// modal coordinates together with the film's exact linearisation (docs/coupling.md §3),
+    /// and `acceleration` is not used. Off: ∂h/∂t of the rigid film only.
+    bool elasticSqueeze = false;
 };
 
 struct OutputSpec {

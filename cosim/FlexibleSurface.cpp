@@ -88,6 +88,22 @@ void FlexibleSurface::modalForce(const Eigen::VectorXd& p, double offset, Eigen:
         moving_->modalForce(p, offset, f);
 }
 
+void FlexibleSurface::modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& F) const {
+    if (fixed_)
+        fixed_->modalForces(P, F);
+    else
+        moving_->modalForces(P, offset, F);
+}
+
+void FlexibleSurface::filmChangeShapes(double offset, Eigen::MatrixXd& Psi) const {
+    if (fixed_) {
+        Psi = -fixed_->gridShapes();  // outward skirt displacement closes the gap
+    } else {
+        moving_->modalRadialShapes(offset, Psi);
+        for (int k : voids_) Psi.row(k).setZero();
+    }
+}
+
 void FlexibleSurface::respond(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& q) const {
     Eigen::VectorXd f;
     modalForce(p, offset, f);

@@ -45,6 +45,11 @@ public:
     /// Film-thickness change (m) on the grid for the modal coordinates q at the axial offset
     /// (0 on Void nodes).
     void filmChange(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& dh) const;
+    /// modalForce of k pressure fields at once (grid nodes × k → modes × k).
+    void modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& F) const;
+    /// The film-thickness change per unit modal coordinate at the offset (grid nodes × modes):
+    /// filmChange(e_j) in column j (0 on Void nodes).
+    void filmChangeShapes(double offset, Eigen::MatrixXd& Psi) const;
     /// Nodal displacement of the whole mesh (3 · nodes, m) for q.
     Eigen::VectorXd displacement(const Eigen::VectorXd& q) const { return body_.shapes * q; }
 

@@ -80,6 +80,15 @@ void ModalMapping::modalForce(const Eigen::VectorXd& p, Eigen::VectorXd& out) co
     out.noalias() = B_ * pa;
 }
 
+void ModalMapping::modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) const {
+    if (P.rows() != gridSize_)
+        throw std::invalid_argument("ModalMapping::modalForces: " + std::to_string(P.rows()) +
+                                    " pressures per column for a grid of " + std::to_string(gridSize_) + " nodes");
+    Eigen::MatrixXd pa(static_cast<Eigen::Index>(active_.size()), P.cols());
+    for (std::size_t c = 0; c < active_.size(); ++c) pa.row(static_cast<Eigen::Index>(c)) = P.row(active_[c]);
+    out.noalias() = B_ * pa;
+}
+
 Eigen::VectorXd ModalMapping::radialDisplacement(const Eigen::VectorXd& q) const {
     Eigen::VectorXd out;
     radialDisplacement(q, out);

@@ -42,6 +42,8 @@ public:
     void modalForce(const Eigen::VectorXd& p, Eigen::VectorXd& out) const;
     Eigen::VectorXd radialDisplacement(const Eigen::VectorXd& q) const;
     void radialDisplacement(const Eigen::VectorXd& q, Eigen::VectorXd& out) const;
+    /// Modal forces of k pressure fields at once (grid nodes × k → modes × k; one matrix product).
+    void modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) const;
 
 private:
     int gridSize_ = 0;

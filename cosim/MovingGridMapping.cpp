@@ -360,6 +360,58 @@ void MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset, Eige
                     Eigen::Map<const Eigen::VectorXd>(B.data(), B.size());
 }
 
+void MovingGridMapping::modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& out) const {
+    if (modalLoad_.size() == 0) throw std::logic_error("MovingGridMapping::modalForces: setModes first");
+    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nc = static_cast<int>(columns_.size());
+    if (P.rows() != static_cast<Eigen::Index>(nz) * nt)
+        throw std::invalid_argument("MovingGridMapping: " + std::to_string(P.rows()) + " pressures for a grid of " +
+                                    std::to_string(nz * nt) + " nodes");
+    Transfer T;
+    const Window w = transfer(offset, T);
+    int first = w.rows, last = -1;
+    for (int r = 0; r < w.rows; ++r)
+        if (T.outerIndexPtr()[r + 1] > T.outerIndexPtr()[r]) {
+            first = std::min(first, r);
+            last = r;
+        }
+    out.setZero(modalLoad_.rows(), P.cols());
+    if (last < first) return;
+    // As modalForce, column by column into one (rows · nc) × k block, then one product.
+    using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const int rows = last - first + 1;
+    Eigen::MatrixXd Bs(static_cast<Eigen::Index>(rows) * nc, P.cols());
+    RowMat Pc(nz, nc), B(rows, nc);
+    for (Eigen::Index k = 0; k < P.cols(); ++k) {
+        for (int i = 0; i < nz; ++i)
+            for (int c = 0; c < nc; ++c)
+                Pc(i, c) = P(static_cast<Eigen::Index>(i) * nt + columns_[static_cast<std::size_t>(c)], k);
+        B.noalias() = T.middleRows(first, rows) * Pc;
+        Bs.col(k) = Eigen::Map<const Eigen::VectorXd>(B.data(), B.size());
+    }
+    out.noalias() = modalLoad_.middleCols(static_cast<Eigen::Index>(w.k0 + first) * nc, Bs.rows()) * Bs;
+}
+
+void MovingGridMapping::modalRadialShapes(double offset, Eigen::MatrixXd& ur) const {
+    if (modalShapes_.size() == 0) throw std::logic_error("MovingGridMapping::modalRadialShapes: setModes first");
+    std::vector<std::array<double, 4>> weights;
+    std::vector<int> base;
+    int r0 = 0, r1 = 0;
+    interpolation(offset, weights, base, r0, r1);
+    const int nz = static_cast<int>(z_.size()), nt = nTheta_, nZ = fixed_.nAxial(), nc = static_cast<int>(columns_.size());
+    ur.setZero(static_cast<Eigen::Index>(nz) * nt, modalShapes_.cols());
+    for (int i = 0; i < nz; ++i) {
+        const auto& wgt = weights[static_cast<std::size_t>(i)];
+        for (int a = 0; a < 4; ++a) {
+            const int r = base[static_cast<std::size_t>(i)] + a;
+            const double wa = wgt[static_cast<std::size_t>(a)];
+            if (r < 0 || r >= nZ || wa == 0.0) continue;
+            for (int c = 0; c < nc; ++c)
+                ur.row(static_cast<Eigen::Index>(i) * nt + columns_[static_cast<std::size_t>(c)]) +=
+                    wa * modalShapes_.row(static_cast<Eigen::Index>(r) * nc + c);
+        }
+    }
+}
+
 Eigen::VectorXd MovingGridMapping::modalRadialDisplacement(const Eigen::VectorXd& q, double offset) const {
     Eigen::VectorXd ur;
     modalRadialDisplacement(q, offset, ur);

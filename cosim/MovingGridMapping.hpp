@@ -95,6 +95,11 @@ public:
     /// to round-off (the full Gram matrix instead of the window's: a difference ≈ 0.27³⁰).
     Eigen::VectorXd modalForce(const Eigen::VectorXd& p, double offset) const;
     void modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& out) const;
+    /// Modal forces of k pressure fields at once (grid nodes × k → modes × k; one matrix product).
+    void modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& out) const;
+    /// The radial displacement per unit modal coordinate at offset s (grid nodes × modes): the
+    /// columns of modalRadialDisplacement for the unit vectors, at the cost of one of them per mode.
+    void modalRadialShapes(double offset, Eigen::MatrixXd& ur) const;
     /// Modal forces Φᵀ f of the shear tractions at offset s (requires setModes and options.shear).
     Eigen::VectorXd modalShearForce(const Eigen::VectorXd& tauZ, const Eigen::VectorXd& tauTheta,
                                     double offset) const;

@@ -1,6 +1,7 @@
 #include "cosim/PistonSimulation.hpp"
 
 #include "cosim/ClearanceTerms.hpp"
+#include "cosim/PistonSimulationState.hpp"
 #include "lube/FilmIntegrals.hpp"
 #include "modal/ReducedBodyFile.hpp"
 
@@ -48,33 +49,6 @@ double cycleCrankDeg(double continuousDeg, int cycle) {
 }
 }  // namespace
 
-struct PistonSimulation::State {
-    double crankDeg = 0.0;  // continuous
-    double time = 0.0;
-    double dt = 0.0;        // s, the step that reached this state (0: initial)
-    Eigen::Vector2d x = Eigen::Vector2d::Zero(), v = Eigen::Vector2d::Zero(), a = Eigen::Vector2d::Zero();
-    Eigen::VectorXd h, hRigid, p, y;
-    Eigen::VectorXd w;      // modal velocities ẏ (bodies.response: dynamic; else empty)
-};
-
-struct PistonSimulation::Context {
-    double crankDeg = 0.0, dt = 0.0, a0 = 1.0, a1 = -1.0, a2 = 0.0;
-    CrankState crank;
-    double gas = 0.0, offset = 0.0;
-    const State* now = nullptr;
-    const State* before = nullptr;
-    Eigen::VectorXd hq, hv;  // dynamic response: BDF2 histories a1 yₙ + a2 yₙ₋₁, a1 ẏₙ + a2 ẏₙ₋₁
-};
-
-struct PistonSimulation::Evaluation {
-    Eigen::VectorXd h, hRigid, dhdt, p, pc, Hy;
-    lube::FilmLoads loads;
-    FilmAction action;
-    Eigen::Vector2d vel, acc, residual;
-    Eigen::Vector2d scale;  // magnitude of the largest terms of each equation (N, N·m)
-    int floored = 0;
-};
-
 PistonSimulation::PistonSimulation(const EngineCase& c)
     : case_(c),
       kin_(c.engine.stroke, c.engine.rodLength, c.engine.pinOffset, c.engine.speedRpm),
@@ -119,6 +93,10 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
         }
         clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
     }
+    if (c.coupling.elasticSqueeze && (piston_ || liner_)) {
+        linearization_ = std::make_unique<lube::FilmLinearization>(film_.grid());
+        if (piston_) piston_->filmChangeShapes(0.0, psiPiston_);
+    }
     stats_.timings.setup = seconds(t0);
 }
 
@@ -153,6 +131,7 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     film_.rigidThickness(x[0], x[1], ev.hRigid);
     if (clearance_) clearance_->add(ctx.offset, ev.hRigid);  // distortion, thermal (GUIDE eq. 2)
     ev.h = ev.hRigid;
+    const bool elasticSqueeze = linearization_ != nullptr;
     const double rigidSeconds = seconds(t0);
     if (piston_ || liner_) {
         // Elastic Δh of y at this offset; the Jacobian's evaluations reuse the pass's (y frozen).
@@ -175,6 +154,7 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     // A Newton iterate may push the skirt into the liner: floor h (the asperity pressure, from the
     // unfloored value clamped at λ = −2, pushes it back). Counted in `floored`.
     const double floor = contact_ ? 0.05 * case_.contact.sigma : 0.01 * case_.piston.clearance;
+    ev.hTotal = ev.h;
     ev.pc = Eigen::VectorXd::Zero(g.size());
     for (int k = 0; k < g.size(); ++k) {
         if (g.kind(k) == lube::NodeKind::Void) continue;
@@ -186,10 +166,13 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     }
     const State& n = *ctx.now;
     const State& b = *ctx.before;
-    // Squeeze term from the rigid film thickness only: the elastic deformation is quasi-static
-    // and its rate is left out of ∂h/∂t (docs/coupling.md §3: with it, the partitioned coupling
-    // has a gain ∝ 1/Δt and does not converge).
-    ev.dhdt = (ctx.a0 * ev.hRigid + ctx.a1 * n.hRigid + ctx.a2 * b.hRigid) / ctx.dt;
+    // Squeeze term: BDF2 of the whole (unfloored) film thickness with coupling.elastic_squeeze,
+    // else of the rigid film thickness only (docs/coupling.md §3: with the elastic rate the
+    // partitioned coupling has a gain ∝ 1/Δt and does not converge; it needs the Newton method).
+    if (elasticSqueeze)
+        ev.dhdt = (ctx.a0 * ev.hTotal + ctx.a1 * n.hTotal + ctx.a2 * b.hTotal) / ctx.dt;
+    else
+        ev.dhdt = (ctx.a0 * ev.hRigid + ctx.a1 * n.hRigid + ctx.a2 * b.hRigid) / ctx.dt;
     lube::FilmState fs;
     fs.h = ev.h;
     fs.dhdt = ev.dhdt;
@@ -303,6 +286,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
         failure = fmt::format("{} (after {} film solves in this attempt)", why, iterations);
         return false;
     };
+    double lastMeasure = std::numeric_limits<double>::infinity();
     for (int it = 0; it < maxIt; ++it) {
         try {
             ev = evaluate(ctx, x, y, true);
@@ -326,7 +310,26 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             stats_.timings.mapping += tMap;
             stats_.timings.structure += tMap;
         }
-        if (it == 0) {
+        Eigen::VectorXd dz;  // coupling.elastic_squeeze: the Newton update of (e, β, y)
+        if (linearization_) {
+            // Chord passes: a new Jacobian at the first pass and whenever a pass did not reduce the
+            // residual (in units of its tolerances) at least fivefold.
+            const double measure = std::max({couplingRes / couplingTol,
+                                             std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
+                                             std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach))});
+            const double rate = ctx.a0 / ctx.dt;
+            if ((it == 0 && rate != newtonRate_) || measure > 0.2 * lastMeasure) {
+                newtonRate_ = rate;
+                newtonLu_.compute(coupledJacobian(ctx, x, ev));
+                ++stats_.jacobians;
+            }
+            Eigen::VectorXd F(2 + mp_ + ml_);
+            F.head<2>() = ev.residual;
+            F.tail(mp_ + ml_) = y - ev.Hy;
+            dz = -newtonLu_.solve(F);
+            lastMeasure = measure;
+            if (!dz.allFinite()) return fail("the Newton update of the coupled step is not finite");
+        } else if (it == 0) {
             // Finite-difference Jacobian of the motion residual (modal coordinates frozen).
             const Eigen::Vector2d delta = 1e-5 * tol;
             for (int i = 0; i < 2; ++i) {
@@ -350,7 +353,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
                 jacobian_ += (dr - jacobian_ * dx) * w.transpose() / d2;  // Broyden, scaled
             }
         }
-        const Eigen::Vector2d dx = -jacobian_.partialPivLu().solve(ev.residual);
+        const Eigen::Vector2d dx = dz.size() ? Eigen::Vector2d(dz.head<2>()) : Eigen::Vector2d(-jacobian_.partialPivLu().solve(ev.residual));
         if (!dx.allFinite()) return fail("the Newton update is not finite");
         const bool motionDone = std::abs(dx[0]) <= 1e-5 * tol[0] && std::abs(dx[1]) <= 1e-5 * tol[1] &&
                                 std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + forceFloor) &&
@@ -366,13 +369,16 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             out.hRigid = ev.hRigid;
             out.p = ev.p;
             out.y = y;
+            out.hTotal = ev.hTotal;
             if (pistonDynamics_ || linerDynamics_) out.w = (ctx.a0 * y + ctx.hq) / dt;  // ẏ of BDF2
             return true;
         }
         lastX = x;
         lastR = ev.residual;
         x += dx;
-        if (flexible) {
+        if (dz.size()) {
+            y += dz.tail(mp_ + ml_);
+        } else if (flexible) {
             const auto t0 = Clock::now();
             y = acc.next(y, ev.Hy);  // modal update: IQN-ILS / Aitken
             const double tModal = seconds(t0);
@@ -465,6 +471,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         }
     }
     s.hRigid = s.h;
+    s.hTotal = s.h;  // undeformed bodies at the start
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);
     if (pistonDynamics_ || linerDynamics_) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
     State prev = s;

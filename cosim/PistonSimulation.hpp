@@ -23,11 +23,13 @@
 #include "cosim/PistonDynamics.hpp"
 #include "cosim/SkirtFilm.hpp"
 #include "cosim/StepRecord.hpp"
+#include "lube/FilmLinearization.hpp"
 #include "lube/GreenwoodTripp.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "modal/HeldModalDynamics.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include <functional>
 #include <limits>
@@ -120,6 +122,9 @@ private:
     Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
     bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
                  std::string& failure);
+    /// coupling.elastic_squeeze: the Jacobian of (motion residual, y − H(y)) in (e, β, y) at the
+    /// evaluation (CoupledNewton.cpp, docs/coupling.md §3).
+    Eigen::MatrixXd coupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
     StepRecord record(const State& s, const Evaluation& ev, int cycle, double stepDeg, int iterations) const;
     Snapshot snapshot(const State& s, const Evaluation& ev, int cycle) const;
 
@@ -139,6 +144,13 @@ private:
     // Elastic Δh of the last y and liner offset evaluated (reused by the Jacobian's evaluations).
     Eigen::VectorXd elasticY_, pistonDh_, linerDh_;
     double elasticOffset_ = std::numeric_limits<double>::quiet_NaN();
+    // coupling.elastic_squeeze: the film's linearisation and the film-change shapes Ψ (grid × modes)
+    std::unique_ptr<lube::FilmLinearization> linearization_;
+    Eigen::MatrixXd psiPiston_, psiLiner_;
+    Eigen::MatrixXd normalWeights_;
+    Eigen::PartialPivLU<Eigen::MatrixXd> newtonLu_;  // the last coupled Jacobian, factorized
+    double newtonRate_ = -1.0;                      // its a0/Δt  // 2 × grid: fx and my of a unit pressure per node
+    double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();
     Eigen::Matrix2d jacobian_;
     bool haveJacobian_ = false;
     RunStatistics stats_;

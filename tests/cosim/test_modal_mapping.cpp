@@ -145,6 +145,13 @@ TEST(ModalMapping, RestrictedToFilmNodesEqualsTheFullProducts) {
                 g.size(), eF, eU);
     EXPECT_LE(eF, 1e-13);
     EXPECT_LE(eU, 1e-14);
+    // Many pressure fields at once: the same modal forces.
+    Eigen::MatrixXd P(g.size(), 2), F;
+    P.col(0) = p;
+    P.col(1) = 0.5 * p;
+    restricted.modalForces(P, F);
+    EXPECT_LE((F.col(0) - fRes).norm(), 1e-14 * fRes.norm());
+    EXPECT_LE((F.col(1) - 0.5 * fRes).norm(), 1e-14 * fRes.norm());
     // The full-size operators: zero columns / rows off the active nodes, the same products.
     const Eigen::MatrixXd B = restricted.loadOperator(), G = restricted.gridShapes();
     EXPECT_LE((B * p - fRes).norm(), 1e-13 * fRes.norm());

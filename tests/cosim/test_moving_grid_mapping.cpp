@@ -258,6 +258,20 @@ TEST(MovingGridMapping, ModalProductsRestrictedToFilmColumnsEqualTheFullOnes) {
                 EXPECT_EQ(uRes[k], 0.0) << k;
         }
         worstU = std::max(worstU, diff / uFull.cwiseAbs().maxCoeff());
+        // The many-column forms (the coupled Newton Jacobian's) equal the one-column ones.
+        Eigen::MatrixXd shapes, P(g.size(), 3), F;
+        restricted.modalRadialShapes(offset, shapes);
+        EXPECT_LE((shapes * q - uRes).cwiseAbs().maxCoeff(), 1e-14 * uRes.cwiseAbs().maxCoeff()) << offset;
+        for (int c = 0; c < 3; ++c) {
+            P.col(c) = field(g, Field::Smooth, 3 + c);
+            for (int k = 0; k < g.size(); ++k)
+                if (!film[std::size_t(g.thetaIndex(k))]) P(k, c) = 0.0;
+        }
+        restricted.modalForces(P, offset, F);
+        for (int c = 0; c < 3; ++c) {
+            const Eigen::VectorXd one = restricted.modalForce(Eigen::VectorXd(P.col(c)), offset);
+            EXPECT_LE((F.col(c) - one).norm(), 1e-14 * one.norm()) << offset;
+        }
         // Also against the nodal route of the displacement.
         const Eigen::VectorXd uNodal = full.radialDisplacement(phi * q, offset);
         EXPECT_LE((uFull - uNodal).norm(), 1e-13 * uNodal.norm()) << offset;
