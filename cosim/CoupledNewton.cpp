@@ -31,8 +31,13 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
     const int n = g.size(), m = mp_ + ml_, k = 2 + m;
     auto t0 = Clock::now();
 
-    // δh per unknown: the rigid thickness is linear in (e, β); the modal columns are Ψ.
-    Eigen::MatrixXd Dh(n, k);
+    // δh per unknown: the rigid thickness is linear in (e, β); the modal columns are Ψ (zero on
+    // Void nodes; the piston's are constant and written once). Kept between calls: n × k.
+    Eigen::MatrixXd& Dh = jacobianDh_;
+    if (Dh.rows() != n || Dh.cols() != k) {
+        Dh.resize(n, k);
+        if (piston_) Dh.middleCols(2, mp_) = psiPiston_;
+    }
     {
         const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
         const Eigen::Vector2d d(1e-3 * case_.piston.clearance, 1e-3 * case_.piston.clearance / reach);
@@ -42,23 +47,22 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
             Eigen::Vector2d xi = x;
             xi[i] += d[i];
             film_.rigidThickness(xi[0], xi[1], h1);
-            Dh.col(i) = (h1 - h0) / d[i];
+            for (int r = 0; r < n; ++r) Dh(r, i) = g.kind(r) == lube::NodeKind::Void ? 0.0 : (h1[r] - h0[r]) / d[i];
         }
     }
-    if (piston_) Dh.middleCols(2, mp_) = psiPiston_;
-    if (liner_) {
-        if (!(psiLinerOffset_ == ctx.offset)) {  // once per step (the offset is the step's)
-            liner_->filmChangeShapes(ctx.offset, psiLiner_);
-            psiLinerOffset_ = ctx.offset;
-        }
+    if (liner_ && !(psiLinerOffset_ == ctx.offset)) {  // once per step (the offset is the step's)
+        liner_->filmChangeShapes(ctx.offset, psiLiner_);
         Dh.rightCols(ml_) = psiLiner_;
+        psiLinerOffset_ = ctx.offset;
     }
-    for (int r = 0; r < n; ++r)
-        if (g.kind(r) == lube::NodeKind::Void) Dh.row(r).setZero();
-    const Eigen::MatrixXd Dhdt = (ctx.a0 / ctx.dt) * Dh;  // the rate sees the unfloored thickness
-    Eigen::MatrixXd DhFilm = Dh;                            // the film sees the floored one
-    for (int r = 0; r < n; ++r)
-        if (ev.h[r] != ev.hTotal[r]) DhFilm.row(r).setZero();
+    const double rate = ctx.a0 / ctx.dt;  // δḣ = rate δh: the rate sees the unfloored thickness
+    Eigen::MatrixXd floored;              // the film sees the floored one: no δh where the floor holds
+    if (ev.floored > 0) {
+        floored = Dh;
+        for (int r = 0; r < n; ++r)
+            if (ev.h[r] != ev.hTotal[r]) floored.row(r).setZero();
+    }
+    const Eigen::MatrixXd& DhFilm = ev.floored > 0 ? floored : Dh;
 
     // δp from the film's linearisation at the evaluation's solution.
     lube::FilmState fs;
@@ -72,16 +76,20 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
         eta[r] = lub.viscosity(ev.p[r]);
     }
     linearization_->linearize(fs, rho, eta, ev.p, case_.lubricant.cavitationPressure);
-    const Eigen::MatrixXd dP = linearization_->pressureChange(DhFilm, Dhdt);
-    Eigen::MatrixXd dPc = Eigen::MatrixXd::Zero(n, k);
-    if (contact_) {  // p_c(max(h, −2σ)) of the unfloored h, as evaluate()
+    Eigen::MatrixXd dP = linearization_->pressureChange(DhFilm, Dh, rate);
+    // Asperity pressure p_c(max(h, −2σ)) of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on
+    // the nodes in contact, added into dP (the load is p + p_c); the rigid columns kept apart too.
+    Eigen::Matrix<double, Eigen::Dynamic, 2> dPcRigid = Eigen::MatrixXd::Zero(n, 2);
+    if (contact_) {
         const double sigma = case_.contact.sigma, d = 1e-4 * sigma;
         for (int r = 0; r < n; ++r) {
             const double h = ev.hTotal[r];
             if (g.kind(r) == lube::NodeKind::Void || h <= -2.0 * sigma) continue;
-            const double slope = (contact_->pressure(h + d) - contact_->pressure(std::max(h - d, -2.0 * sigma))) /
-                                 (h + d - std::max(h - d, -2.0 * sigma));
-            if (slope != 0.0) dPc.row(r) = slope * Dh.row(r);
+            const double lo = std::max(h - d, -2.0 * sigma);
+            const double slope = (contact_->pressure(h + d) - contact_->pressure(lo)) / (h + d - lo);
+            if (slope == 0.0) continue;
+            dPcRigid.row(r) = slope * Dh.row(r).head<2>();
+            dP.row(r) += slope * Dh.row(r);
         }
     }
     stats_.timings.film += seconds(t0);
@@ -104,9 +112,9 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
         // A step of 1e-6 clearance in h: the integrals' curvature (friction ∝ 1/h) stays below it.
         const double s = 1e-6 * case_.piston.clearance / size;
         fj.h = fs.h + s * DhFilm.col(j);
-        fj.dhdt = fs.dhdt + s * Dhdt.col(j);
-        pj = ev.p + s * dP.col(j);
-        pcj = ev.pc + s * dPc.col(j);
+        fj.dhdt = fs.dhdt + (s * rate) * Dh.col(j);
+        pcj = ev.pc + s * dPcRigid.col(j);
+        pj = ev.p + s * (dP.col(j) - dPcRigid.col(j));  // dP holds p_c's change too
         io.contactPressure = contact_ ? &pcj : nullptr;
         const lube::FilmLoads loads = lube::integrateFilm(g, fj, lub, pj, io);
         const Eigen::Vector3d F = loads.totalForce();
@@ -123,7 +131,7 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
                 normalWeights_(1, r) = (g.z(g.axialIndex(r)) - io.referencePoint.z()) * fx;
             }
         }
-        const Eigen::MatrixXd dAction = normalWeights_ * (dP.rightCols(m) + dPc.rightCols(m));  // 2 × m
+        const Eigen::MatrixXd dAction = normalWeights_ * dP.rightCols(m);  // 2 × m
         for (int j = 0; j < m; ++j) {
             FilmAction a = ev.action;
             a.fx += dAction(0, j);
@@ -131,28 +139,34 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
             J.block(0, 2 + j, 2, 1) = -(dyn_.force(ctx.crank, ctx.gas, a) - f0);
         }
     }
-    const double rate = ctx.a0 / ctx.dt;
     J.topLeftCorner<2, 2>() += dyn_.mass(ctx.crank) * (rate * rate);
 
     // Modal rows: δ_ij − ∂H/∂z_j, H linear in the mapped pressure (history terms held).
-    const Eigen::MatrixXd dPt = dP + dPc;
-    Eigen::MatrixXd F;
+    Eigen::MatrixXd F, Q;
     Eigen::VectorXd q;
     const Eigen::VectorXd zp = Eigen::VectorXd::Zero(mp_), zl = Eigen::VectorXd::Zero(ml_);
     if (piston_) {
-        piston_->modalForces(dPt, 0.0, F);
-        for (int j = 0; j < k; ++j) {
-            if (pistonDynamics_) pistonDynamics_->respond(F.col(j), zp, zp, q);
-            else piston_->quasiStatic(F.col(j), q);
-            J.block(2, j, mp_, 1) = -q;
+        piston_->modalForces(dP, 0.0, F);
+        if (pistonDynamics_) {
+            for (int j = 0; j < k; ++j) {
+                pistonDynamics_->respond(F.col(j), zp, zp, q);
+                J.block(2, j, mp_, 1) = -q;
+            }
+        } else {
+            piston_->quasiStatic(F, Q);
+            J.middleRows(2, mp_) = -Q;
         }
     }
     if (liner_) {
-        liner_->modalForces(dPt, ctx.offset, F);
-        for (int j = 0; j < k; ++j) {
-            if (linerDynamics_) linerDynamics_->respond(F.col(j), zl, zl, q);
-            else liner_->quasiStatic(F.col(j), q);
-            J.block(2 + mp_, j, ml_, 1) = -q;
+        liner_->modalForces(dP, ctx.offset, F);
+        if (linerDynamics_) {
+            for (int j = 0; j < k; ++j) {
+                linerDynamics_->respond(F.col(j), zl, zl, q);
+                J.block(2 + mp_, j, ml_, 1) = -q;
+            }
+        } else {
+            liner_->quasiStatic(F, Q);
+            J.bottomRows(ml_) = -Q;
         }
     }
     J.bottomRightCorner(m, m).diagonal().array() += 1.0;

@@ -42,6 +42,8 @@ public:
     void modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& f) const;
     /// Quasi-static modal coordinates q = C f for modal forces f (held interfaces fixed).
     void quasiStatic(const Eigen::VectorXd& f, Eigen::VectorXd& q) const { q.noalias() = compliance_ * f; }
+    /// The same for the columns of F (modes × k).
+    void quasiStatic(const Eigen::MatrixXd& F, Eigen::MatrixXd& Q) const { Q.noalias() = compliance_ * F; }
     /// Film-thickness change (m) on the grid for the modal coordinates q at the axial offset
     /// (0 on Void nodes).
     void filmChange(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& dh) const;

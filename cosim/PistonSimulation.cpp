@@ -320,7 +320,12 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             const double rate = ctx.a0 / ctx.dt;
             if ((it == 0 && rate != newtonRate_) || measure > 0.2 * lastMeasure) {
                 newtonRate_ = rate;
-                newtonLu_.compute(coupledJacobian(ctx, x, ev));
+                try {
+                    newtonLu_.compute(coupledJacobian(ctx, x, ev));
+                } catch (const std::runtime_error& e) {
+                    newtonRate_ = -1.0;
+                    return fail(std::string("the film's linearisation for the coupled Newton step failed: ") + e.what());
+                }
                 ++stats_.jacobians;
             }
             Eigen::VectorXd F(2 + mp_ + ml_);

@@ -148,6 +148,7 @@ private:
     std::unique_ptr<lube::FilmLinearization> linearization_;
     Eigen::MatrixXd psiPiston_, psiLiner_;
     Eigen::MatrixXd normalWeights_;
+    Eigen::MatrixXd jacobianDh_;     // ∂h/∂(e, β, y): grid × (2 + modes), kept between Jacobians
     Eigen::PartialPivLU<Eigen::MatrixXd> newtonLu_;  // the last coupled Jacobian, factorized
     double newtonRate_ = -1.0;                      // its a0/Δt  // 2 × grid: fx and my of a unit pressure per node
     double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();

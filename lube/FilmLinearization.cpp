@@ -10,7 +10,7 @@ namespace flexehd::lube {
 
 struct FilmLinearization::Factor {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
-    bool analysed = false;
+    std::vector<int> analysedFree;  // the free set whose pattern llt has analysed
 };
 
 namespace {
@@ -78,21 +78,30 @@ void FilmLinearization::linearize(const FilmState& film, const Eigen::VectorXd& 
         cavitated_ += cav;
     }
 
+    // The free rows, numbered: the linearised system lives on them alone.
+    freeIndex_.clear();
+    std::vector<int> slot(static_cast<std::size_t>(n), -1);
+    for (int k = 0; k < n; ++k)
+        if (free_[static_cast<std::size_t>(k)]) {
+            slot[static_cast<std::size_t>(k)] = int(freeIndex_.size());
+            freeIndex_.push_back(k);
+        }
+    const int nf = int(freeIndex_.size());
+
     // ∂w/∂ḣ: w is affine in ḣ, so one difference with δḣ = 1 m/s is exact.
     {
         FilmState f1 = film;
         if (f1.dhdt.size() != n) f1.dhdt = Eigen::VectorXd::Zero(n);
         f1.dhdt.array() += 1.0;
         const ReynoldsSystem s1(g, f1, rho, eta);
-        dwdhdt_ = sys.rhs() - s1.rhs();
-        for (int k = 0; k < n; ++k)
-            if (!free_[static_cast<std::size_t>(k)]) dwdhdt_[k] = 0.0;
+        dwdhdt_.resize(nf);
+        for (int r = 0; r < nf; ++r) dwdhdt_[r] = sys.rhs()[freeIndex_[r]] - s1.rhs()[freeIndex_[r]];
     }
 
     // ∂w/∂h by colour: row r's entry for node a (colour c) is the change of w_r when colour c
     // is perturbed, divided by δh_a. δh_a = 1e-7 h_a: truncation ~1e-7, round-off ~1e-9 relative.
     std::vector<Eigen::Triplet<double>> trip;
-    trip.reserve(static_cast<std::size_t>(5 * n));
+    trip.reserve(static_cast<std::size_t>(5 * nf));
     FilmState fc = film;
     for (int c = 0; c < colours_; ++c) {
         fc.h = film.h;
@@ -105,49 +114,66 @@ void FilmLinearization::linearize(const FilmState& film, const Eigen::VectorXd& 
         if (!any) continue;
         const ReynoldsSystem sc(g, fc, rho, eta);
         const Eigen::VectorXd wc = sc.matrix() * p - sc.rhs();
-        for (int r = 0; r < n; ++r) {
-            if (!free_[static_cast<std::size_t>(r)]) continue;
+        for (int i = 0; i < nf; ++i) {
+            const int r = freeIndex_[static_cast<std::size_t>(i)];
             auto add = [&](int a) {
                 if (colour_[static_cast<std::size_t>(a)] != c || g.kind(a) == NodeKind::Void) return;
                 const double v = (wc[r] - w[r]) / (fc.h[a] - film.h[a]);
-                if (v != 0.0) trip.emplace_back(r, a, v);
+                if (v != 0.0) trip.emplace_back(i, a, v);
             };
             add(r);
             forEachNeighbour(g, r, add);
         }
     }
-    dwdh_.resize(n, n);
+    dwdh_.resize(nf, n);
     dwdh_.setFromTriplets(trip.begin(), trip.end());
 
-    // A_FF with the held (cavitated) rows and columns decoupled; the pattern stays A's.
-    SparseMatrix M = A;
+    // A_FF: the free rows and columns of A (the held ones are p = p_cav, Fixed and Void are
+    // prescribed: their δp is 0). Its pattern changes with the free set; analysed when it does.
+    trip.clear();
     for (int col = 0; col < n; ++col) {
-        const bool cc = sys.isFilm(col) && !free_[static_cast<std::size_t>(col)];
-        for (SparseMatrix::InnerIterator e(M, col); e; ++e) {
-            const bool rc = sys.isFilm(int(e.row())) && !free_[static_cast<std::size_t>(e.row())];
-            if (e.row() != col && (cc || rc)) e.valueRef() = 0.0;
+        const int cj = slot[static_cast<std::size_t>(col)];
+        if (cj < 0) continue;
+        for (SparseMatrix::InnerIterator e(A, col); e; ++e) {
+            const int ri = slot[static_cast<std::size_t>(e.row())];
+            if (ri >= 0 && ri >= cj) trip.emplace_back(ri, cj, e.value());  // lower triangle
         }
     }
-    if (!factor_->analysed) {
+    SparseMatrix M(nf, nf);
+    M.setFromTriplets(trip.begin(), trip.end());
+    if (factor_->analysedFree != freeIndex_) {
         factor_->llt.analyzePattern(M);
-        factor_->analysed = true;
+        factor_->analysedFree = freeIndex_;
     }
-    factor_->llt.factorize(M);
-    if (factor_->llt.info() != Eigen::Success)
-        throw std::runtime_error("FilmLinearization: Cholesky factorization of the free film rows failed");
+    if (nf > 0) {
+        factor_->llt.factorize(M);
+        if (factor_->llt.info() != Eigen::Success)
+            throw std::runtime_error("FilmLinearization: Cholesky factorization of the free film rows failed");
+    }
 }
 
-Eigen::MatrixXd FilmLinearization::pressureChange(const Eigen::MatrixXd& dh, const Eigen::MatrixXd& dhdt) const {
+Eigen::MatrixXd FilmLinearization::pressureChange(const Eigen::MatrixXd& dh, const Eigen::MatrixXd& dhdt,
+                                                  double dhdtScale) const {
     const int n = grid_->size();
     const Eigen::Index k = dh.size() ? dh.cols() : dhdt.cols();
     if ((dh.size() && dh.rows() != n) || (dhdt.size() && (dhdt.rows() != n || dhdt.cols() != k)) ||
         (dh.size() && dhdt.size() && dh.cols() != dhdt.cols()))
         throw std::invalid_argument("FilmLinearization::pressureChange: columns of " + std::to_string(n) +
                                     " nodes expected, of equal number for δh and δḣ");
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, k);
+    const int nf = int(freeIndex_.size());
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, k);
+    if (nf == 0) return out;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nf, k);
     if (dh.size()) rhs.noalias() -= dwdh_ * dh;
-    if (dhdt.size()) rhs -= dwdhdt_.asDiagonal() * dhdt;
-    return factor_->llt.solve(rhs);
+    if (dhdt.size()) {
+        const Eigen::VectorXd d = dhdtScale * dwdhdt_;
+        for (Eigen::Index c = 0; c < k; ++c)
+            for (int i = 0; i < nf; ++i) rhs(i, c) -= d[i] * dhdt(freeIndex_[static_cast<std::size_t>(i)], c);
+    }
+    const Eigen::MatrixXd dpF = factor_->llt.solve(rhs);
+    for (Eigen::Index c = 0; c < k; ++c)
+        for (int i = 0; i < nf; ++i) out(freeIndex_[static_cast<std::size_t>(i)], c) = dpF(i, c);
+    return out;
 }
 
 }  // namespace flexehd::lube

@@ -11,8 +11,9 @@
 // (Poiseuille h_f³, Couette h_f) is taken by finite differences on a distance-2 colouring of the
 // grid — a node's row depends on h at the node and its four neighbours, so nodes three grid steps
 // apart can be perturbed together: about 8 assemblies per linearisation, not one per node.
-// A_FF is factorized once per linearisation (CHOLMOD, pattern analysed once per grid); any number
-// of (δh, δḣ) columns are then answered by one multi-column solve.
+// A_FF, the free rows and columns only, is factorized once per linearisation (CHOLMOD; its pattern
+// analysed again when the free set changes); any number of (δh, δḣ) columns are then answered by
+// one multi-column solve of the free rows' size.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -37,9 +38,10 @@ public:
     void linearize(const FilmState& film, const Eigen::VectorXd& density, const Eigen::VectorXd& viscosity,
                    const Eigen::VectorXd& p, double pLower);
 
-    /// δp (N × k, Pa) for k columns of thickness changes δh (m) and rate changes δḣ (m/s);
-    /// either may be empty (0 × 0) for none.
-    Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh, const Eigen::MatrixXd& dhdt) const;
+    /// δp (N × k, Pa) for k columns of thickness changes δh (m) and rate changes
+    /// δḣ = dhdtScale · dhdt (m/s); either matrix may be empty (0 × 0) for none.
+    Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh, const Eigen::MatrixXd& dhdt,
+                                   double dhdtScale = 1.0) const;
 
     /// Film nodes held at the bound (cavitated) in the last linearisation.
     int cavitatedNodes() const { return cavitated_; }
@@ -52,9 +54,10 @@ private:
     std::vector<int> colour_;  // per node
     int colours_ = 0;
     std::unique_ptr<Factor> factor_;
-    SparseMatrix dwdh_;        // ∂w/∂h on free rows (zero rows elsewhere)
-    Eigen::VectorXd dwdhdt_;   // diagonal ∂w/∂ḣ on free rows
+    SparseMatrix dwdh_;        // ∂w/∂h: free rows × grid nodes
+    Eigen::VectorXd dwdhdt_;   // diagonal ∂w/∂ḣ of the free rows
     std::vector<char> free_;
+    std::vector<int> freeIndex_;  // the free rows (grid node numbers, ascending)
     int cavitated_ = 0;
 };
 

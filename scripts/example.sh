@@ -5,7 +5,9 @@
 # secondary motion with rigid bodies (HD) and with the flexible piston (EHD) until the cycle is
 # periodic, compute the thermal state (flexehd thermal) and run HD with it, and plot the
 # comparison (like the seed's Fig. 5). Results in out/engine86/.
-# FLEXEHD_EXAMPLE_LINER=1 also runs the flexible piston + flexible liner case.
+# FLEXEHD_EXAMPLE_LINER=1 also runs the flexible piston + flexible liner case;
+# FLEXEHD_EXAMPLE_SQUEEZE=1 also EHD with the elastic deformation rate in the squeeze term
+# (ehd_squeeze.yaml, about 80 s more; docs/coupling.md section 3).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/install_deps.sh"
@@ -40,6 +42,12 @@ if [[ "${FLEXEHD_EXAMPLE_LINER:-0}" == 1 ]]; then
   "$flexehd" run "$root/examples/engine86/ehd_liner.yaml"
   dirs+=("$out/ehd_liner")
   labels+=("EHD+liner")
+fi
+if [[ "${FLEXEHD_EXAMPLE_SQUEEZE:-0}" == 1 ]]; then
+  echo "== EHD: flexible piston, elastic deformation rate in the squeeze term"
+  "$flexehd" run "$root/examples/engine86/ehd_squeeze.yaml"
+  dirs+=("$out/ehd_squeeze")
+  labels+=("EHD elastic squeeze")
 fi
 
 /usr/bin/python3 "$root/scripts/plot_results.py" "${dirs[0]}" --compare "${dirs[@]:1}" \

@@ -74,6 +74,8 @@ double relativeError(const Case& c, Cavitation cav, double* cavitatedFraction) {
     // The two parts separately too: thickness only and rate only.
     const Eigen::MatrixXd both = lin.pressureChange(c.dh, Eigen::MatrixXd()) + lin.pressureChange(Eigen::MatrixXd(), c.dhdt);
     EXPECT_LT((both - dp).cwiseAbs().maxCoeff(), 1e-12 * dp.cwiseAbs().maxCoeff());
+    const Eigen::MatrixXd scaled = lin.pressureChange(c.dh, Eigen::MatrixXd(0.5 * c.dhdt), 2.0);  // δḣ = 2 · dhdt/2
+    EXPECT_LT((scaled - dp).cwiseAbs().maxCoeff(), 1e-12 * dp.cwiseAbs().maxCoeff());
     EXPECT_GT(fd.cwiseAbs().maxCoeff(), 0.0);
     const double err = (dp.col(0) - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff();
     std::printf("relative error %.3g, rate part alone %.3g\n", err, (lin.pressureChange(Eigen::MatrixXd(), c.dhdt).col(0) - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff());
