@@ -69,16 +69,50 @@ private:
 };
 
 // Stencil layouts: coarse levels store 9 entries per node in sidx order; the fine level, whose
-// operator is the 5-point finite-volume one, stores only (S, W, C, E, N) = sidx entries
-// 1, 3, 4, 5, 7 — 40 instead of 72 bytes per node, which matters because the fine-level passes
-// are memory-bound.
+// operator is the symmetric 5-point finite-volume one, is ReynoldsSystem::stencil(): (C, E, N)
+// per node, W and S read from the neighbours' E and N — 24 instead of 72 bytes per node, which
+// matters because the fine-level passes are memory-bound. Entries of a node, whatever the
+// layout: c[St::S] … c[St::N] with c = stencilAt<Five>(…) (a pointer, or a SymRow).
 template <bool Five>
 struct Stencil {
-    static constexpr int n = Five ? 5 : 9;
     static constexpr int S = Five ? 0 : 1, W = Five ? 1 : 3, C = Five ? 2 : 4, E = Five ? 3 : 5,
                          N = Five ? 4 : 7;
 };
-constexpr int kFivePos[9] = {-1, 0, -1, 1, 2, 3, -1, 4, -1};  // sidx → 5-point slot
+
+// The five couplings of a fine node from the symmetric storage: its own C, E, N, the E entry of
+// its west neighbour (ReynoldsSystem::westStencilColumn: the wrap, or the zero E entry of the
+// last column of an open arc) and the N entry of its south neighbour (row i − 1; for i = 0 the
+// last row, whose N entries are 0), so no branch is needed at the edges.
+struct SymRow {
+    const double* c;  // C, E, N of the node
+    const double* w;  // … of the west neighbour
+    const double* s;  // … of the south neighbour
+    double operator[](int e) const {
+        switch (e) {
+            case Stencil<true>::S: return s[ReynoldsSystem::kStencilN];
+            case Stencil<true>::W: return w[ReynoldsSystem::kStencilE];
+            case Stencil<true>::C: return c[ReynoldsSystem::kStencilC];
+            case Stencil<true>::E: return c[ReynoldsSystem::kStencilE];
+            default: return c[ReynoldsSystem::kStencilN];
+        }
+    }
+};
+constexpr std::size_t kSym = ReynoldsSystem::kStencilSize;
+
+// Stencil of node (i, j) of a level with nz × nt nodes and entries A: a SymRow on the fine
+// level (Five), else a pointer to its 9 entries.
+template <bool Five>
+inline auto stencilAt(const double* A, int nz, int nt, int i, int j) {
+    if constexpr (Five) {
+        const auto row = static_cast<std::size_t>(i * nt);
+        return SymRow{A + kSym * (row + sj(j)),
+                      A + kSym * (row + sj(ReynoldsSystem::westStencilColumn(j, nt))),
+                      A + kSym * (static_cast<std::size_t>((i > 0 ? i - 1 : nz - 1) * nt) + sj(j))};
+    } else {
+        (void)nz;
+        return A + 9 * static_cast<std::size_t>(i * nt + j);
+    }
+}
 
 struct Level {
     int nz = 0, nt = 0;
@@ -161,8 +195,11 @@ struct Level {
 
 double Level::coef(std::size_t k, int s) const {
     if (!five) return a[9 * k + static_cast<std::size_t>(s)];
+    constexpr int kFivePos[9] = {-1, Stencil<true>::S, -1, Stencil<true>::W, Stencil<true>::C,
+                                 Stencil<true>::E, -1, Stencil<true>::N, -1};  // sidx → SymRow entry
     const int m = kFivePos[s];
-    return m < 0 ? 0.0 : a[5 * k + static_cast<std::size_t>(m)];
+    const int i = static_cast<int>(k) / nt, j = static_cast<int>(k) % nt;
+    return m < 0 ? 0.0 : stencilAt<true>(a, nz, nt, i, j)[m];
 }
 
 // Σ_{s ≠ diag} a_s x_nb at node (i, j). Five: the 5-point stencil of the fine level (the corner
@@ -170,7 +207,7 @@ double Level::coef(std::size_t k, int s) const {
 template <bool Five = false>
 inline double offDiagonalSum(const Level& L, const double* x, int i, int j) {
     using St = Stencil<Five>;
-    const double* c = &L.a[static_cast<std::size_t>(St::n * (i * L.nt + j))];
+    const auto c = stencilAt<Five>(L.a, L.nz, L.nt, i, j);
     const int jm = L.jm(j), jp = L.jp(j);
     const double* xm = x + L.im(i) * L.nt;
     const double* x0 = x + i * L.nt;
@@ -190,8 +227,8 @@ inline double safeInverse(double pivot, double diag) {
 
 // Off-diagonal part of row k's stencil c applied to x, with the rows i − 1, i, i + 1 of x at
 // xm, x0, xp and the neighbouring columns jm, jp (clamped onto a zero coefficient at open edges).
-template <bool Five>
-inline double offDiag(const double* c, const double* xm, const double* x0, const double* xp, int j,
+template <bool Five, class Cs>
+inline double offDiag(const Cs& c, const double* xm, const double* x0, const double* xp, int j,
                       int jm, int jp) {
     using St = Stencil<Five>;
     double s = c[St::S] * xm[j] + c[St::W] * x0[jm] + c[St::E] * x0[jp] + c[St::N] * xp[j];
@@ -213,16 +250,45 @@ inline void forColumns(const Level& L, int j0, int step, Fn&& fn) {
     if (j == nt - 1) fn(j, L.jm(j), L.jp(j));
 }
 
-// forColumns restricted to the columns j0, j0 + step, … below j1.
+// forColumns restricted to the columns j0, j0 + step, … below j1, on the fine level: also the
+// column of the west coupling's entry, jw = ReynoldsSystem::westStencilColumn(j) (SymRow).
 template <class Fn>
 inline void forColumnsIn(const Level& L, int j0, int j1, int step, Fn&& fn) {
     int j = j0;
     if (j == 0 && j < j1) {
-        fn(0, L.jm(0), L.jp(0));
+        fn(0, L.jm(0), L.jp(0), L.nt - 1);
         j += step;
     }
-    for (const int end = std::min(j1, L.nt - 1); j < end; j += step) fn(j, j - 1, j + 1);
-    if (j == L.nt - 1 && j < j1) fn(j, L.jm(j), L.jp(j));
+    for (const int end = std::min(j1, L.nt - 1); j < end; j += step) fn(j, j - 1, j + 1, j - 1);
+    if (j == L.nt - 1 && j < j1) fn(j, L.jm(j), L.jp(j), j - 1);
+}
+
+// SymRow of fine node (i, j) from the entries of its row (a0) and of its south neighbour's (aS)
+// and jw = ReynoldsSystem::westStencilColumn(j): the row's address arithmetic is done once.
+inline SymRow symAt(const double* a0, const double* aS, int j, int jw) {
+    return SymRow{a0 + kSym * sj(j), a0 + kSym * sj(jw), aS + kSym * sj(j)};
+}
+// Stencils of the nodes of row i of a level (stencilAt with the row's address arithmetic done
+// once): at(j).
+template <bool Five>
+struct RowStencil {
+    const double* a0;  // the row's entries
+    const double* aS;  // the south neighbour row's (Five)
+    int nt;
+    auto at(int j) const {
+        if constexpr (Five) return symAt(a0, aS, j, ReynoldsSystem::westStencilColumn(j, nt));
+        else return a0 + 9 * sj(j);
+    }
+};
+template <bool Five>
+inline RowStencil<Five> rowStencil(const double* A, int nz, int nt, int i) {
+    if constexpr (Five) return {A + kSym * sj(i * nt), A + kSym * sj((i > 0 ? i - 1 : nz - 1) * nt), nt};
+    else return {A + 9 * sj(i * nt), nullptr, nt};
+}
+// Entries of fine row i, and of its south neighbour row (stencilAt).
+inline const double* symRowPtr(const double* A, int nt, int i) { return A + kSym * sj(i * nt); }
+inline const double* symSouthPtr(const double* A, int nz, int nt, int i) {
+    return A + kSym * sj((i > 0 ? i - 1 : nz - 1) * nt);
 }
 
 // Smoother direction of a level from its couplings summed over the free nodes: line relaxation
@@ -233,13 +299,20 @@ inline void forColumnsIn(const Level& L, int j0, int j1, int step, Fn&& fn) {
 // fallback near isotropy.
 void chooseLines(Level& L) {
     double sz = 0.0, st = 0.0;
-    for (int k = 0; k < L.size(); ++k) {
-        if (!L.free[static_cast<std::size_t>(k)]) continue;
-        const auto sk = static_cast<std::size_t>(k);
-        const double corners = L.coef(sk, 0) + L.coef(sk, 2) + L.coef(sk, 6) + L.coef(sk, 8);
-        sz -= L.coef(sk, 1) + L.coef(sk, 7) + 0.5 * corners;  // corners couple both ways
-        st -= L.coef(sk, 3) + L.coef(sk, 5) + 0.5 * corners;
-    }
+    for (int i = 0, k = 0; i < L.nz; ++i)
+        for (int j = 0; j < L.nt; ++j, ++k) {
+            if (!L.free[static_cast<std::size_t>(k)]) continue;
+            if (L.five) {  // no corners
+                const SymRow c = stencilAt<true>(L.a, L.nz, L.nt, i, j);
+                sz -= c[Stencil<true>::S] + c[Stencil<true>::N];
+                st -= c[Stencil<true>::W] + c[Stencil<true>::E];
+                continue;
+            }
+            const double* c = L.a + 9 * static_cast<std::size_t>(k);
+            const double corners = c[0] + c[2] + c[6] + c[8];
+            sz -= c[1] + c[7] + 0.5 * corners;  // corners couple both ways
+            st -= c[3] + c[5] + 0.5 * corners;
+        }
     L.lines = sz >= 2.0 * st ? Lines::Z : st >= 2.0 * sz ? Lines::Theta : Lines::Both;
 }
 
@@ -473,9 +546,7 @@ void MultigridSolver::Hierarchy::markNear(int i) {
 }
 
 void MultigridSolver::Hierarchy::extractFine(const ReynoldsSystem& sys) {
-    static_assert(Stencil<true>::S == ReynoldsSystem::kStencilS && Stencil<true>::W == ReynoldsSystem::kStencilW &&
-                  Stencil<true>::C == ReynoldsSystem::kStencilC && Stencil<true>::E == ReynoldsSystem::kStencilE &&
-                  Stencil<true>::N == ReynoldsSystem::kStencilN, "fine stencil layout = ReynoldsSystem's");
+    static_assert(ReynoldsSystem::kStencilSize == 3, "fine stencil layout = ReynoldsSystem's (SymRow)");
     Level& L = levels[base];
     L.a = sys.stencil().data();  // couplings to non-Film nodes are 0 there; non-Film rows unused
     L.five = true;
@@ -492,7 +563,7 @@ void MultigridSolver::Hierarchy::extractFine(const ReynoldsSystem& sys) {
             const bool f = kind[k] == NodeKind::Film;  // sys.isFilm(k)
             film[static_cast<std::size_t>(k)] = f;
             colFilm[sj(j)] |= static_cast<char>(f);
-            invDiag[k] = f ? 1.0 / L.a[static_cast<std::size_t>(5 * k + Stencil<true>::C)] : 0.0;
+            invDiag[k] = f ? 1.0 / L.a[kSym * static_cast<std::size_t>(k) + ReynoldsSystem::kStencilC] : 0.0;
         }
     filmRuns.clear();
     for (int j = 0; j < L.nt; ++j) {
@@ -550,7 +621,7 @@ void MultigridSolver::Hierarchy::galerkinT(const Level& F, Level& C, const Dirty
     const int ntC = C.nt, nt = F.nt;
     // Nonzero stencil entries as (row offset + 1, column offset + 1): 5 on the fine level.
     static constexpr int kFiveDi[5] = {0, 1, 1, 1, 2}, kFiveDj[5] = {1, 0, 1, 2, 1};
-    constexpr int ns = Five ? 5 : 9;
+    constexpr int ns = Five ? 5 : 9;  // entries S, W, C, E, N (Stencil<true>), or 9
     double* own = C.own.data();
     for (int i = 0; i < F.nz; ++i) {
         const auto si = static_cast<std::size_t>(i);
@@ -581,7 +652,7 @@ void MultigridSolver::Hierarchy::galerkinT(const Level& F, Level& C, const Dirty
             double Y[4][4] = {};
             const int colOf[3] = {F.jm(j), j, F.jp(j)};
             const Level::Rel* tr = &F.tRel[3 * sj];
-            const double* ak = &F.a[static_cast<std::size_t>(ns * k)];
+            const auto ak = stencilAt<Five>(F.a, F.nz, nt, i, j);
             for (int e = 0; e < ns; ++e) {
                 const int di = Five ? kFiveDi[e] : e / 3, dj = Five ? kFiveDj[e] : e % 3;
                 if (!F.free[static_cast<std::size_t>(rowOf[di] + colOf[dj])]) continue;
@@ -656,7 +727,7 @@ void MultigridSolver::Hierarchy::galerkinHalvedT(const Level& F, Level& C, const
             constexpr double Tm[4] = {Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0, 0.0};
             constexpr double T0[4] = {0.0, Odd ? 0.5 : 1.0, Odd ? 0.5 : 0.0, 0.0};
             constexpr double Tp[4] = {0.0, Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0};
-            const double* ak = F.a + static_cast<std::size_t>(St::n) * static_cast<std::size_t>(k);
+            const auto ak = stencilAt<Five>(F.a, F.nz, nt, i, j);
             const int cols[3] = {jm, j, jp};
             double v[3][4] = {};
             for (int di = 0; di < 3; ++di) {
@@ -888,7 +959,7 @@ bool MultigridSolver::Hierarchy::factorZT(Level& L, bool mayDefer) {
                 zm[sk] = zw[sk] = 0.0;
                 continue;
             }
-            const double* c = &L.a[St::n * sk];
+            const auto c = stencilAt<Five>(L.a, nz, nt, i, j);
             const double m = safeInverse(c[St::C] - (i > lo[j] ? c[St::S] * zw[sk - static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
             zm[sk] = m;
             zw[sk] = c[St::N] * m;
@@ -901,7 +972,7 @@ bool MultigridSolver::Hierarchy::factorZT(Level& L, bool mayDefer) {
                 zm[sk] = zw[sk] = 0.0;
                 continue;
             }
-            const double* c = &L.a[St::n * sk];
+            const auto c = stencilAt<Five>(L.a, nz, nt, i, j);
             const double m = safeInverse(c[St::C] - (i < hi[j] ? c[St::N] * zw[sk + static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
             zm[sk] = m;
             zw[sk] = c[St::S] * m;
@@ -977,9 +1048,8 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     const double* __restrict A = L.a;
     const bool allColumns = L.periodic && nt % 2 == 1;  // even columns need the correction too
 
-    const auto n5 = static_cast<std::size_t>(St::n);
     // Right-hand side of line j at row i from the other-coloured columns (and corners).
-    auto lineRhs = [&](const double* c, double fk, const double* xm, const double* x0, const double* xp,
+    auto lineRhs = [&](const auto& c, double fk, const double* xm, const double* x0, const double* xp,
                        int jm, int jp) {
         double r = fk - (c[St::W] * x0[jm] + c[St::E] * x0[jp]);
         if constexpr (!Five) r -= c[0] * xm[jm] + c[2] * xm[jp] + c[6] * xp[jm] + c[8] * xp[jp];
@@ -1002,6 +1072,7 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         const double* x0 = x + i * nt;
         const double* xp = x + L.ip(i) * nt;
         const int row = i * nt;
+        const auto rs = rowStencil<Five>(A, nz, nt, i);
         for (const int j : evenCols(i)) {
             const int k = row + j;
             if (!fr[k]) {
@@ -1009,7 +1080,7 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
                 if constexpr (Factor) M[k] = W[k] = 0.0;
                 continue;
             }
-            const double* c = A + n5 * static_cast<std::size_t>(k);
+            const auto c = rs.at(j);
             if constexpr (Factor) {
                 const double m = safeInverse(c[St::C] - (i > colLo[j] ? c[St::S] * W[k - nt] : 0.0), c[St::C]);
                 M[k] = m;
@@ -1035,6 +1106,7 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         const double* x0 = x + i * nt;
         const double* xp = x + L.ip(i) * nt;
         const int row = i * nt;
+        const auto rs = rowStencil<Five>(A, nz, nt, i);
         for (const int j : oddCols(i)) {
             const int k = row + j;
             if (!fr[k]) {
@@ -1042,7 +1114,7 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
                 if constexpr (Factor) M[k] = W[k] = 0.0;
                 continue;
             }
-            const double* c = A + n5 * static_cast<std::size_t>(k);
+            const auto c = rs.at(j);
             if constexpr (Factor) {
                 const double m = safeInverse(c[St::C] - (i < colHi[j] ? c[St::N] * W[k + nt] : 0.0), c[St::C]);
                 M[k] = m;
@@ -1077,10 +1149,11 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         const double* xm = x + L.im(i) * nt;
         const double* x0 = x + i * nt;
         const double* xp = x + L.ip(i) * nt;
+        const auto rs = rowStencil<Five>(A, nz, nt, i);
         auto node = [&](int j) {
             const int k = i * nt + j;
             if (!fr[k]) return;
-            const double* c = A + n5 * static_cast<std::size_t>(k);
+            const auto c = rs.at(j);
             const double r = f[k] - (c[St::C] * x0[j] + offDiag<Five>(c, xm, x0, xp, j, jmv[j], jpv[j]));
             const auto sj = static_cast<std::size_t>(j);
             const int J0 = L.pt0[sj], J1 = L.pt1[sj];
@@ -1178,7 +1251,7 @@ void MultigridSolver::Hierarchy::lineSweepZT(Level& L, bool forward) {
                     continue;
                 }
                 using St = Stencil<Five>;
-                const double* c = &L.a[static_cast<std::size_t>(St::n * k)];
+                const auto c = stencilAt<Five>(L.a, L.nz, nt, i, j);
                 const int jm = L.jm(j), jp = L.jp(j);
                 double rhs = L.f[k] - (c[St::W] * x0[jm] + c[St::E] * x0[jp]);
                 if constexpr (!Five) rhs -= c[0] * xm[jm] + c[2] * xm[jp] + c[6] * xp[jm] + c[8] * xp[jp];
@@ -1278,7 +1351,7 @@ void MultigridSolver::Hierarchy::lineSweepThetaT(Level& L, bool forward) {
                 continue;
             }
             using St = Stencil<Five>;
-            const double* c = &L.a[static_cast<std::size_t>(St::n * k)];
+            const auto c = stencilAt<Five>(L.a, L.nz, nt, i, j);
             const int jm = L.jm(j), jp = L.jp(j);
             r[j] = L.f[k] - (c[St::S] * xm[j] + c[St::N] * xp[j]);
             if constexpr (!Five) r[j] -= c[0] * xm[jm] + c[2] * xm[jp] + c[6] * xp[jm] + c[8] * xp[jp];
@@ -1328,7 +1401,7 @@ void MultigridSolver::Hierarchy::residualT(Level& L) {
         for (int j = 0; j < L.nt; ++j) {
             const int k = i * L.nt + j;
             L.r[k] = L.free[static_cast<std::size_t>(k)]
-                         ? L.f[k] - L.a[static_cast<std::size_t>(Stencil<Five>::n * k + Stencil<Five>::C)] * x[k] -
+                         ? L.f[k] - stencilAt<Five>(L.a, L.nz, L.nt, i, j)[Stencil<Five>::C] * x[k] -
                                offDiagonalSum<Five>(L, x, i, j)
                          : 0.0;
         }
@@ -1453,11 +1526,13 @@ void MultigridSolver::Hierarchy::LineSearch::curvature(const Level& F, int i) {
     const double* dm = dir + F.im(i) * nt;
     const double* d0 = dir + i * nt;
     const double* dp = dir + F.ip(i) * nt;
+    const double* a0 = symRowPtr(F.a, nt, i);
+    const double* aS = symSouthPtr(F.a, F.nz, nt, i);
     double sum = 0.0;
     for (const auto& [j0, j1] : *runs)
-        forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp) {
+        forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp, int jw) {
             if (d0[j] == 0.0) return;
-            const double* c = F.a + 5 * static_cast<std::size_t>(i * nt + j);
+            const SymRow c = symAt(a0, aS, j, jw);
             sum += d0[j] * (c[Stencil<true>::C] * d0[j] + offDiag<true>(c, dm, d0, dp, j, jm, jp));
         });
     den += sum;
@@ -1549,11 +1624,13 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
             const double* xp = x + F.ip(i) * nt;
             const char* sel = (only ? only : film) + i * nt;
             const int parity = (i + colour) % 2;
+            const double* a0 = symRowPtr(A, nt, i);
+            const double* aS = symSouthPtr(A, nz, nt, i);
             for (const auto& [j0, j1] : runs)
-                forColumnsIn(F, j0 + ((j0 + parity) & 1), j1, 2, [&](int j, int jm, int jp) {
+                forColumnsIn(F, j0 + ((j0 + parity) & 1), j1, 2, [&](int j, int jm, int jp, int jw) {
                     if (!sel[j]) return;
                     const int k = i * nt + j;
-                    double v = (b[k] - offDiag<true>(A + 5 * static_cast<std::size_t>(k), xm, x0, xp, j, jm, jp)) * invDiag[k];
+                    double v = (b[k] - offDiag<true>(symAt(a0, aS, j, jw), xm, x0, xp, j, jm, jp)) * invDiag[k];
                     if (bounded && v < lo) v = lo;
                     x0[j] = v;
                 });
@@ -1571,8 +1648,10 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
             const double* x0 = x + i * nt;
             const double* xp = x + F.ip(i) * nt;
             double rm = 0.0, sc = 0.0;
+            const double* a0 = symRowPtr(A, nt, i);
+            const double* aS = symSouthPtr(A, nz, nt, i);
             for (const auto& [j0, j1] : runs)
-                forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp) {
+                forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp, int jw) {
                     const int k = i * nt + j;
                     sc = std::max(sc, std::abs(x0[j] - pAmb));
                     if (!film[k]) {
@@ -1580,7 +1659,7 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
                         fr[k] = 0;
                         return;
                     }
-                    const double* c = A + 5 * static_cast<std::size_t>(k);
+                    const SymRow c = symAt(a0, aS, j, jw);
                     const double w = b[k] - c[Stencil<true>::C] * x0[j] - offDiag<true>(c, xm, x0, xp, j, jm, jp);
                     ff[k] = w;
                     double rk = -w * invDiag[k];

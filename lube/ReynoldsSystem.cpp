@@ -111,7 +111,7 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     const double* h = film.h.data();
     const bool squeeze = film.dhdt.size() != 0;
     const double* dhdt = squeeze ? film.dhdt.data() : nullptr;
-    st_.resize(static_cast<std::size_t>(5) * static_cast<std::size_t>(n));  // every entry written below
+    st_.resize(static_cast<std::size_t>(3) * static_cast<std::size_t>(n));  // every entry written below
     b_.resize(n);
     double* st = st_.data();
     double* bv = b_.data();
@@ -160,9 +160,9 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
         }
         for (int j = 0; j < nt; ++j) {
             const int k = row + j;
-            double* c = st + 5 * static_cast<std::size_t>(k);
+            double* c = st + 3 * static_cast<std::size_t>(k);
             if (kind[k] != Film) {
-                c[kStencilS] = c[kStencilW] = c[kStencilE] = c[kStencilN] = 0.0;
+                c[kStencilE] = c[kStencilN] = 0.0;
                 c[kStencilC] = 1.0;
                 bv[k] = pp[k];
                 continue;
@@ -203,9 +203,10 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
             }
             if (squeeze) bk -= colL[sj(j)] * Lt * rhoAt(k) * dhdt[k];  // squeeze: ∂(ρh)/∂t V_k (area(k))
             bv[k] = bk;
-            c[kStencilS] = upFilm ? -cu : 0.0;
+            // Only the east and north couplings are stored: the west one is the west neighbour's
+            // east one and the south one the south neighbour's north one (A is symmetric: the
+            // same face value, and 0 from both sides when either node is not Film).
             c[kStencilN] = downFilm ? -cd : 0.0;
-            c[kStencilW] = leftFilm ? -cl : 0.0;
             c[kStencilE] = rightFilm ? -cr : 0.0;
             if (!(c[kStencilC] > 0.0))
                 throw std::invalid_argument("ReynoldsSystem: film node " + std::to_string(k) +
@@ -233,7 +234,7 @@ void ReynoldsSystem::buildMatrix() const {
     for (int i = 0; i < nz; ++i) {
         for (int j = 0; j < nt; ++j) {
             const int k = i * nt + j;
-            const double* c = &st_[5 * static_cast<std::size_t>(k)];
+            const double* c = &st_[3 * static_cast<std::size_t>(k)];
             outer[k] = nnz;
             diag_[k] = c[kStencilC];
             if (!film_(k)) {
@@ -249,12 +250,14 @@ void ReynoldsSystem::buildMatrix() const {
             };
             const bool up = i > 0 && film_(k - nt), down = i + 1 < nz && film_(k + nt);
             const bool l = hasLeft && film_(left), r = hasRight && film_(right);
-            if (up) emit(k - nt, c[kStencilS]);
+            const double cS = up ? st_[3 * static_cast<std::size_t>(k - nt) + kStencilN] : 0.0;
+            const double cW = l ? st_[3 * static_cast<std::size_t>(left) + kStencilE] : 0.0;
+            if (up) emit(k - nt, cS);
             if (periodic && j == nt - 1 && r) emit(right, c[kStencilE]);
-            if (l && left < k) emit(left, c[kStencilW]);
+            if (l && left < k) emit(left, cW);
             emit(k, c[kStencilC]);
             if (r && right > k) emit(right, c[kStencilE]);
-            if (periodic && j == 0 && l) emit(left, c[kStencilW]);
+            if (periodic && j == 0 && l) emit(left, cW);
             if (down) emit(k + nt, c[kStencilN]);
         }
     }
@@ -292,8 +295,10 @@ double ReynoldsSystem::residual(const Eigen::VectorXd& p, double pLower) const {
             // Missing neighbours (open edges) have zero coefficients; clamp their index.
             const int jm = j > 0 ? j - 1 : (periodic ? nt - 1 : 0);
             const int jp = j + 1 < nt ? j + 1 : (periodic ? 0 : nt - 1);
-            const double* c = &st_[5 * static_cast<std::size_t>(k)];
-            const double w = c[kStencilS] * xm[j] + c[kStencilW] * x0[jm] + c[kStencilC] * x0[j] +
+            const double* c = &st_[3 * static_cast<std::size_t>(k)];
+            const double cS = i > 0 ? st_[3 * static_cast<std::size_t>(k - nt) + kStencilN] : 0.0;
+            const double cW = st_[3 * static_cast<std::size_t>(i * nt + westStencilColumn(j, nt)) + kStencilE];
+            const double w = cS * xm[j] + cW * x0[jm] + c[kStencilC] * x0[j] +
                              c[kStencilE] * x0[jp] + c[kStencilN] * xp[j] - b_[k];
             double r = w / c[kStencilC];
             if (bounded) r = std::min(x0[j] - pLower, r);

@@ -120,12 +120,19 @@ public:
     const Eigen::VectorXd& rhs() const { return b_; }
     /// Diagonal of A (built with matrix(), same caveat).
     const Eigen::VectorXd& diagonal() const;
-    /// A as a 5-point stencil, the storage A is assembled in: 5 entries per node k = (i, j),
-    /// kStencilS … kStencilN, the couplings of row k to (i−1, j), (i, j−1), (i, j), (i, j+1),
-    /// (i+1, j) (θ wrapped on a full circumference). Entries towards non-Film nodes (eliminated
-    /// into b) and beyond open edges are 0; non-Film rows are identities (centre 1).
+    /// A as a symmetric 5-point stencil, the storage A is assembled in: 3 entries per node
+    /// k = (i, j), kStencilC, kStencilE, kStencilN, the couplings of row k to (i, j), (i, j+1),
+    /// (i+1, j) (θ wrapped on a full circumference). The other two are their mirrors (A is
+    /// symmetric): the coupling to (i, j−1) is the E entry of node (i, westStencilColumn(j)), the
+    /// one to (i−1, j) the N entry of node (i−1, j) (0 for i = 0). Entries towards non-Film nodes
+    /// (eliminated into b) and beyond open edges are 0 — so the E entry of the last column of an
+    /// open arc, which westStencilColumn(0) names, is 0 —; non-Film rows are identities (centre 1).
+    /// 3 instead of 5 doubles per node: the multigrid passes stream it, memory-bound (§7).
     const LargeVector<double>& stencil() const { return st_; }
-    static constexpr int kStencilS = 0, kStencilW = 1, kStencilC = 2, kStencilE = 3, kStencilN = 4;
+    static constexpr int kStencilC = 0, kStencilE = 1, kStencilN = 2, kStencilSize = 3;
+    /// Column whose E entry is the west coupling of column j: j − 1, or nθ − 1 for j = 0 (the
+    /// periodic wrap, or on an open arc a zero entry).
+    static constexpr int westStencilColumn(int j, int nt) { return j > 0 ? j - 1 : nt - 1; }
     /// True for the rows subject to the cavitation bound (Film nodes).
     bool isFilm(int k) const { return grid_->kind(k) == NodeKind::Film; }
 
@@ -142,7 +149,7 @@ private:
     void buildMatrix() const;
 
     const FilmGrid* grid_;
-    LargeVector<double> st_;     // 5-point stencil, 5 per node
+    LargeVector<double> st_;     // symmetric 5-point stencil, 3 per node (C, E, N)
     Eigen::VectorXd b_;
     mutable SparseMatrix A_;     // built on demand from st_
     mutable Eigen::VectorXd diag_;
