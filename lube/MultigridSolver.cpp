@@ -135,9 +135,11 @@ struct Level {
     // Fused z-line levels: the rows colLo … colHi of each column between its first and last free
     // node (empty: colLo > colHi) — the line sweeps visit only these, x and the line work array q
     // are kept at 0 outside (masks and cavitated ends of the columns: a third of a skirt's Film
-    // columns) — as per-row lists of the columns in range, by parity (CSR: rowEven[i] …
-    // rowEven[i + 1] index evenIdx); neighbour columns (wrapped or clamped).
-    std::vector<int> colLo, colHi, rowEven, evenIdx, rowOdd, oddIdx, jmv, jpv;
+    // columns) — as per-row runs of the columns in range, by parity (CSR: rowEven[i] …
+    // rowEven[i + 1] index evenRuns, pairs [first, end) of columns j = first, first + 2, … < end:
+    // direct strided loops instead of a column index per node); neighbour columns (wrapped or
+    // clamped).
+    std::vector<int> colLo, colHi, rowEven, evenRuns, rowOdd, oddRuns, jmv, jpv;
     // Prolongation from the next coarser level: parents of each row / column of this level.
     std::vector<int> pz0, pz1, pt0, pt1;
     std::vector<double> wz0, wz1, wt0, wt1;
@@ -981,31 +983,34 @@ bool MultigridSolver::Hierarchy::factorZT(Level& L, bool mayDefer) {
         // Per-row lists of the columns in range.
         L.rowEven.assign(static_cast<std::size_t>(nz) + 1, 0);
         L.rowOdd.assign(static_cast<std::size_t>(nz) + 1, 0);
-        L.evenIdx.clear();
-        L.oddIdx.clear();
+        L.evenRuns.clear();
+        L.oddRuns.clear();
         std::vector<int>& live = staleDown;  // reused: columns with a free row, by parity
         std::vector<int>& liveOdd = staleUp;
         live.clear();
         liveOdd.clear();
         for (int j = 0; j < nt; ++j)
             if (lo[j] <= hi[j]) (j % 2 ? liveOdd : live).push_back(j);
-        // Branch-free: every live column is written, the count advances if it is in range.
-        auto build = [&](const std::vector<int>& cols, std::vector<int>& row, std::vector<int>& idx) {
-            std::size_t total = cols.size();
-            for (const int j : cols) total += static_cast<std::size_t>(hi[j] - lo[j] + 1);
-            idx.resize(total);
-            int* out = idx.data();
-            int cnt = 0;
+        // Runs [first, end) of the in-range columns of one parity, column j + 2 continuing a run
+        // that ends at j.
+        auto build = [&](const std::vector<int>& cols, std::vector<int>& row, std::vector<int>& runs) {
             for (int i = 0; i < nz; ++i) {
+                int first = -1, last = 0;
                 for (const int j : cols) {
-                    out[cnt] = j;
-                    cnt += static_cast<int>((lo[j] <= i) & (i <= hi[j]));
+                    if (lo[j] > i || i > hi[j]) continue;
+                    if (first >= 0 && j == last + 2) {
+                        last = j;
+                        continue;
+                    }
+                    if (first >= 0) runs.insert(runs.end(), {first, last + 2});
+                    first = last = j;
                 }
-                row[static_cast<std::size_t>(i) + 1] = cnt;
+                if (first >= 0) runs.insert(runs.end(), {first, last + 2});
+                row[static_cast<std::size_t>(i) + 1] = static_cast<int>(runs.size());
             }
         };
-        build(live, L.rowEven, L.evenIdx);
-        build(liveOdd, L.rowOdd, L.oddIdx);
+        build(live, L.rowEven, L.evenRuns);
+        build(liveOdd, L.rowOdd, L.oddRuns);
     }
     std::fill(L.colOk.begin(), L.colOk.end(), 1);
     std::fill(L.colFrom.begin(), L.colFrom.end(), nz);
@@ -1057,14 +1062,17 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
     };
     const int* jmv = L.jmv.data();
     const int* jpv = L.jpv.data();
-    // Columns of row i in their free range, by parity (factorZT).
-    struct Cols {
-        const int *b, *e;
-        const int* begin() const { return b; }
-        const int* end() const { return e; }
+    // fn(j) for the columns of row i in their free range, by parity (runs of factorZT).
+    auto eachCol = [](const int* runs, const int* rowRuns, int i, auto&& fn) {
+        for (int q = rowRuns[i], qEnd = rowRuns[i + 1]; q < qEnd; q += 2)
+            for (int j = runs[q], end = runs[q + 1]; j < end; j += 2) fn(j);
     };
-    auto evenCols = [&](int i) { return Cols{L.evenIdx.data() + L.rowEven[sj(i)], L.evenIdx.data() + L.rowEven[sj(i) + 1]}; };
-    auto oddCols = [&](int i) { return Cols{L.oddIdx.data() + L.rowOdd[sj(i)], L.oddIdx.data() + L.rowOdd[sj(i) + 1]}; };
+    const int* evenRuns = L.evenRuns.data();
+    const int* rowEven = L.rowEven.data();
+    const int* oddRuns = L.oddRuns.data();
+    const int* rowOdd = L.rowOdd.data();
+    auto eachEven = [&](int i, auto&& fn) { eachCol(evenRuns, rowEven, i, fn); };
+    auto eachOdd = [&](int i, auto&& fn) { eachCol(oddRuns, rowOdd, i, fn); };
     // Factor: also the deferred line factors of the row (factorZT's top-down formulas).
     auto evenElim = [&](auto factorTag, int i, bool pre) {
         constexpr bool Factor = decltype(factorTag)::value;
@@ -1073,12 +1081,12 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         const double* xp = x + L.ip(i) * nt;
         const int row = i * nt;
         const auto rs = rowStencil<Five>(A, nz, nt, i);
-        for (const int j : evenCols(i)) {
+        eachEven(i, [&](const int j) {
             const int k = row + j;
             if (!fr[k]) {
                 R[k] = 0.0;
                 if constexpr (Factor) M[k] = W[k] = 0.0;
-                continue;
+                return;
             }
             const auto c = rs.at(j);
             if constexpr (Factor) {
@@ -1089,14 +1097,14 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             const double s = i > 0 ? c[St::S] * R[k - nt] : 0.0;
             const double rhs = pre ? f[k] : lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]);
             R[k] = (rhs - s) * M[k];
-        }
+        });
     };
     auto evenBack = [&](int i) {
         const int row = i * nt;
         if (i + 1 < nz)
-            for (const int j : evenCols(i)) x[row + j] = R[row + j] - W[row + j] * x[row + j + nt];
+            eachEven(i, [&](const int j) { x[row + j] = R[row + j] - W[row + j] * x[row + j + nt]; });
         else
-            for (const int j : evenCols(i)) x[row + j] = R[row + j];
+            eachEven(i, [&](const int j) { x[row + j] = R[row + j]; });
     };
     // Factor: also the deferred line factors of the row (factorZT's bottom-up formulas; the rows
     // below are done, pass B runs upwards).
@@ -1107,12 +1115,12 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         const double* xp = x + L.ip(i) * nt;
         const int row = i * nt;
         const auto rs = rowStencil<Five>(A, nz, nt, i);
-        for (const int j : oddCols(i)) {
+        eachOdd(i, [&](const int j) {
             const int k = row + j;
             if (!fr[k]) {
                 R[k] = 0.0;
                 if constexpr (Factor) M[k] = W[k] = 0.0;
-                continue;
+                return;
             }
             const auto c = rs.at(j);
             if constexpr (Factor) {
@@ -1122,14 +1130,14 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             }
             const double nn = i + 1 < nz ? c[St::N] * R[k + nt] : 0.0;
             R[k] = (lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]) - nn) * M[k];
-        }
+        });
     };
     auto oddBack = [&](int i) {
         const int row = i * nt;
         if (i > 0)
-            for (const int j : oddCols(i)) x[row + j] = R[row + j] - W[row + j] * x[row + j - nt];
+            eachOdd(i, [&](const int j) { x[row + j] = R[row + j] - W[row + j] * x[row + j - nt]; });
         else
-            for (const int j : oddCols(i)) x[row + j] = R[row + j];
+            eachOdd(i, [&](const int j) { x[row + j] = R[row + j]; });
     };
     auto passB = [&](auto factorTag) {
         for (int i = nz - 1; i >= 0; --i) {
@@ -1167,11 +1175,12 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
                 if (wt1 != 0.0) c1[J1] += w1 * a1;
             }
         };
-        for (const int j : evenCols(i)) node(j);
+        eachEven(i, node);
         // An odd line was solved last, against the final even lines, so its residual is zero
         // (rounding aside) — except at a node left out of its line solve (zero pivot inverse).
-        for (const int j : oddCols(i))
+        eachOdd(i, [&](const int j) {
             if (M[i * nt + j] == 0.0) node(j);
+        });
     };
     // Coarse correction of row i (the columns the post-smoothing reads).
     const double* __restrict cx = C.x.data();
@@ -1187,9 +1196,8 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
             const int J0 = L.pt0[sj], J1 = L.pt1[sj];
             x[k] += w0 * (L.wt0[sj] * c0[J0] + L.wt1[sj] * c0[J1]) + w1 * (L.wt0[sj] * c1[J0] + L.wt1[sj] * c1[J1]);
         };
-        for (const int j : oddCols(i)) node(j);
-        if (allColumns)
-            for (const int j : evenCols(i)) node(j);
+        eachOdd(i, node);
+        if (allColumns) eachEven(i, node);
     };
 
     // Pre-smoothing, residual, restriction.
