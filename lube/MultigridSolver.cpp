@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -301,15 +302,25 @@ inline const double* symSouthPtr(const double* A, int nz, int nt, int i) {
 // fallback near isotropy.
 void chooseLines(Level& L) {
     double sz = 0.0, st = 0.0;
+    if (L.five) {  // no corners; SymRow's entries, the row's addresses computed once
+        constexpr int E = ReynoldsSystem::kStencilE, N = ReynoldsSystem::kStencilN;
+        for (int i = 0, k = 0; i < L.nz; ++i) {
+            const double* a0 = symRowPtr(L.a, L.nt, i);
+            const double* aS = symRowPtr(L.a, L.nt, i > 0 ? i - 1 : L.nz - 1);
+            for (int j = 0; j < L.nt; ++j, ++k) {
+                if (!L.free[static_cast<std::size_t>(k)]) continue;
+                const double* c = a0 + kSym * sj(j);
+                const double* w = a0 + kSym * sj(ReynoldsSystem::westStencilColumn(j, L.nt));
+                sz -= aS[kSym * sj(j) + N] + c[N];
+                st -= w[E] + c[E];
+            }
+        }
+        L.lines = sz >= 2.0 * st ? Lines::Z : st >= 2.0 * sz ? Lines::Theta : Lines::Both;
+        return;
+    }
     for (int i = 0, k = 0; i < L.nz; ++i)
         for (int j = 0; j < L.nt; ++j, ++k) {
             if (!L.free[static_cast<std::size_t>(k)]) continue;
-            if (L.five) {  // no corners
-                const SymRow c = stencilAt<true>(L.a, L.nz, L.nt, i, j);
-                sz -= c[Stencil<true>::S] + c[Stencil<true>::N];
-                st -= c[Stencil<true>::W] + c[Stencil<true>::E];
-                continue;
-            }
             const double* c = L.a + 9 * static_cast<std::size_t>(k);
             const double corners = c[0] + c[2] + c[6] + c[8];
             sz -= c[1] + c[7] + 0.5 * corners;  // corners couple both ways
@@ -710,16 +721,38 @@ void MultigridSolver::Hierarchy::galerkinHalvedT(const Level& F, Level& C, const
             Z[di][q.r[0]] += q.w[0];
             Z[di][q.r[1]] += q.w[1];
         }
+        // Row slots of Y that can be nonzero (a Z row slot with a nonzero weight): [rLo, rHi).
+        // Y is only formed and scattered there — the other slots add exact zeros (on the usual
+        // halved rows, half of a parent's 3 rows), as do the θ slots the column parity excludes.
+        int rLo = 4, rHi = 0;
+        for (int r = 0; r < 4; ++r)
+            if (Z[0][r] != 0.0 || Z[1][r] != 0.0 || Z[2][r] != 0.0) {
+                rLo = std::min(rLo, r);
+                rHi = r + 1;
+            }
+        int sLo[2], sHi[2];  // per parent row a: scatter rows r with oI[a] + r in [rLo, rHi)
+        for (int a = 0; a < nI; ++a) {
+            sLo[a] = std::max(0, rLo - oI[a]);
+            sHi[a] = std::min(3, rHi - oI[a]);
+        }
+        // Usual row shapes, unrolled at compile time: a fine row on a coarse row (one parent,
+        // Y rows 0..2) and a row halfway between two (parents at offsets 0 and 1, Y rows 1..2);
+        // anything else (ends of a graded or odd axis) uses the run-time bounds.
+        const int rowShape = nI == 1 && oI[0] == 0 && rLo == 0 && rHi == 3                    ? 1
+                             : nI == 2 && oI[0] == 0 && oI[1] == 1 && rLo == 1 && rHi == 3 ? 2
+                                                                                             : 0;
         const char* frow[3] = {fr + F.im(i) * nt, fr + i * nt, fr + F.ip(i) * nt};
-        auto node = [&](auto oddTag, int j, int jm, int jp) {
+        auto node = [&](auto oddTag, auto shapeTag, int j, int jm, int jp) {
             constexpr bool Odd = decltype(oddTag)::value;
+            constexpr int Shape = decltype(shapeTag)::value;
             const int k = i * nt + j;
             if (!fr[k]) return;
             const int J0 = j / 2;  // first parent column (Jref)
             const int J1 = Odd ? (J0 + 1 == ntC ? 0 : J0 + 1) : J0;
+            const int nIs = Shape == 1 ? 1 : Shape == 2 ? 2 : nI;
             if constexpr (Partial) {
                 bool any = false;
-                for (int a = 0; a < nI; ++a) {
+                for (int a = 0; a < nIs; ++a) {
                     any |= dirty->flag[static_cast<std::size_t>(PI[a] * ntC + J0)] != 0;
                     if (Odd) any |= dirty->flag[static_cast<std::size_t>(PI[a] * ntC + J1)] != 0;
                 }
@@ -746,26 +779,40 @@ void MultigridSolver::Hierarchy::galerkinHalvedT(const Level& F, Level& C, const
                 }
                 for (int c = 0; c < 4; ++c) v[di][c] = am * Tm[c] + a0 * T0[c] + ap * Tp[c];
             }
-            double Y[4][4] = {};
-            for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 4; ++c) Y[r][c] = Z[0][r] * v[0][c] + Z[1][r] * v[1][c] + Z[2][r] * v[2][c];
-            for (int a = 0; a < nI; ++a) {
-                const double(*Yr)[4] = &Y[oI[a]];
+            // θ slots that can be nonzero: 0..2 (even column), 1..2 (odd column).
+            constexpr int cLo = Odd ? 1 : 0, cHi = 3;
+            const int yLo = Shape == 1 ? 0 : Shape == 2 ? 1 : rLo, yHi = Shape ? 3 : rHi;
+            double Y[4][4];
+            for (int r = yLo; r < yHi; ++r)
+                for (int c = cLo; c < cHi; ++c)
+                    Y[r][c] = Z[0][r] * v[0][c] + Z[1][r] * v[1][c] + Z[2][r] * v[2][c];
+            for (int a = 0; a < nIs; ++a) {
+                const int oIa = Shape == 1 ? 0 : Shape == 2 ? a : oI[a];
+                const int r0 = Shape == 1 ? 0 : Shape == 2 ? 1 - a : sLo[a];
+                const int r1 = Shape == 1 ? 3 : Shape == 2 ? 3 - a : sHi[a];
+                const double(*Yr)[4] = &Y[oIa];
                 for (int b = 0; b < (Odd ? 2 : 1); ++b) {
                     const int J = b ? J1 : J0;
                     const int K = PI[a] * ntC + J;
                     if (Partial && !dirty->flag[static_cast<std::size_t>(K)]) continue;
                     const double w = WZ[a] * (Odd ? 0.5 : 1.0);
                     double* cp = own + 9 * static_cast<std::size_t>(K);
-                    for (int r = 0; r < 3; ++r)
-                        for (int c = 0; c < 3; ++c) cp[3 * r + c] += w * Yr[r][b + c];
+                    // Stencil columns c with b + c in [cLo, cHi).
+                    const int c0 = std::max(0, cLo - b), c1 = std::min(3, cHi - b);
+                    for (int r = r0; r < r1; ++r)
+                        for (int c = c0; c < c1; ++c) cp[3 * r + c] += w * Yr[r][b + c];
                 }
             }
         };
-        forColumns(F, 0, 1, [&](int j, int jm, int jp) {
-            if (j % 2) node(std::true_type{}, j, jm, jp);
-            else node(std::false_type{}, j, jm, jp);
-        });
+        auto sweep = [&](auto shapeTag) {
+            forColumns(F, 0, 1, [&](int j, int jm, int jp) {
+                if (j % 2) node(std::true_type{}, shapeTag, j, jm, jp);
+                else node(std::false_type{}, shapeTag, j, jm, jp);
+            });
+        };
+        if (rowShape == 1) sweep(std::integral_constant<int, 1>{});
+        else if (rowShape == 2) sweep(std::integral_constant<int, 2>{});
+        else sweep(std::integral_constant<int, 0>{});
     }
 }
 
@@ -807,8 +854,16 @@ void MultigridSolver::Hierarchy::updateCoarse() {
     Level& F = levels[base];
     std::vector<int> changed;
     if (galerkinValid) {
-        for (std::size_t k = 0; k < F.free.size(); ++k)
-            if (F.free[k] != cachedFree[k]) changed.push_back(static_cast<int>(k));
+        // Blocks of 64 flags compared at once (the front moves by a few cells: most are equal).
+        const std::size_t n = F.free.size();
+        const char* now = F.free.data();
+        const char* was = cachedFree.data();
+        for (std::size_t k0 = 0; k0 < n; k0 += 64) {
+            const std::size_t k1 = std::min(n, k0 + 64);
+            if (std::memcmp(now + k0, was + k0, k1 - k0) == 0) continue;
+            for (std::size_t k = k0; k < k1; ++k)
+                if (now[k] != was[k]) changed.push_back(static_cast<int>(k));
+        }
         if (changed.empty()) return;
         for (int k : changed) F.invalidateLines(k);
     }
