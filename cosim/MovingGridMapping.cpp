@@ -331,6 +331,16 @@ Eigen::VectorXd MovingGridMapping::modalForce(const Eigen::VectorXd& p, double o
     return out;
 }
 
+std::pair<int, int> MovingGridMapping::overlapRows(const Window& w, const Transfer& T) {
+    int first = w.rows, last = -1;
+    for (int r = 0; r < w.rows; ++r)
+        if (T.outerIndexPtr()[r + 1] > T.outerIndexPtr()[r]) {
+            first = std::min(first, r);
+            last = r;
+        }
+    return {first, last};
+}
+
 void MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& out) const {
     if (modalLoad_.size() == 0) throw std::logic_error("MovingGridMapping::modalForce: setModes first");
     const int nz = static_cast<int>(z_.size()), nt = nTheta_, nc = static_cast<int>(columns_.size());
@@ -340,12 +350,7 @@ void MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset, Eige
     Transfer T;
     const Window w = transfer(offset, T);
     // b = T p on the active columns; Φᵀ A_G M_G⁻¹ b needs only the rows of G the grid overlaps.
-    int first = w.rows, last = -1;
-    for (int r = 0; r < w.rows; ++r)
-        if (T.outerIndexPtr()[r + 1] > T.outerIndexPtr()[r]) {
-            first = std::min(first, r);
-            last = r;
-        }
+    const auto [first, last] = overlapRows(w, T);
     out.setZero(modalLoad_.rows());
     if (last < first) return;
     using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -368,12 +373,7 @@ void MovingGridMapping::modalForces(const Eigen::MatrixXd& P, double offset, Eig
                                     std::to_string(nz * nt) + " nodes");
     Transfer T;
     const Window w = transfer(offset, T);
-    int first = w.rows, last = -1;
-    for (int r = 0; r < w.rows; ++r)
-        if (T.outerIndexPtr()[r + 1] > T.outerIndexPtr()[r]) {
-            first = std::min(first, r);
-            last = r;
-        }
+    const auto [first, last] = overlapRows(w, T);
     out.setZero(modalLoad_.rows(), P.cols());
     if (last < first) return;
     // As modalForce, column by column into one (rows · nc) × k block, then one product.

@@ -34,6 +34,7 @@
 // only for displacements linear in z on each θ column.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -123,6 +124,8 @@ private:
     Window project(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& c) const;
     // The window and T(k, i) = ∫ ψ_k φ_i dz (window rows × moving rows) at offset s.
     Window transfer(double offset, Transfer& T) const;
+    // The first and last window rows T reaches (last < first: none) — the G rows the grid overlaps.
+    static std::pair<int, int> overlapRows(const Window& w, const Transfer& T);
     // c = M⁻¹ T f for one nodal field f of the moving grid (`what` names it in errors).
     void solve(const Window& w, const Transfer& T, const Eigen::VectorXd& f, const char* what,
                Eigen::VectorXd& c) const;

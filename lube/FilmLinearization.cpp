@@ -69,12 +69,12 @@ void FilmLinearization::linearize(const FilmState& film, const Eigen::VectorXd& 
 
     // Free rows: Film nodes off the bound (the active-set rule of ActiveSetSolver).
     const bool bounded = std::isfinite(pLower);
-    free_.assign(static_cast<std::size_t>(n), 0);
+    std::vector<char> free(static_cast<std::size_t>(n), 0);
     cavitated_ = 0;
     for (int k = 0; k < n; ++k) {
         if (!sys.isFilm(k)) continue;
         const bool cav = bounded && w[k] / D[k] > p[k] - pLower;
-        free_[static_cast<std::size_t>(k)] = !cav;
+        free[static_cast<std::size_t>(k)] = !cav;
         cavitated_ += cav;
     }
 
@@ -82,7 +82,7 @@ void FilmLinearization::linearize(const FilmState& film, const Eigen::VectorXd& 
     freeIndex_.clear();
     std::vector<int> slot(static_cast<std::size_t>(n), -1);
     for (int k = 0; k < n; ++k)
-        if (free_[static_cast<std::size_t>(k)]) {
+        if (free[static_cast<std::size_t>(k)]) {
             slot[static_cast<std::size_t>(k)] = int(freeIndex_.size());
             freeIndex_.push_back(k);
         }

@@ -56,7 +56,6 @@ private:
     std::unique_ptr<Factor> factor_;
     SparseMatrix dwdh_;        // ∂w/∂h: free rows × grid nodes
     Eigen::VectorXd dwdhdt_;   // diagonal ∂w/∂ḣ of the free rows
-    std::vector<char> free_;
     std::vector<int> freeIndex_;  // the free rows (grid node numbers, ascending)
     int cavitated_ = 0;
 };

@@ -35,4 +35,13 @@ inline CommandResult runFlexehd(const std::string& args) {
     return r;
 }
 
+/// Reduces the example piston on the coarse mesh (8 modes, skirt static correction, pin bore held)
+/// into `file`: the flexible body of the small coupled tests (SmallEngineCase.hpp). Needs
+/// FLEXEHD_SOURCE_DIR.
+inline CommandResult reduceSmallPiston(const std::string& file) {
+    return runFlexehd("reduce --mesh " + std::string(FLEXEHD_SOURCE_DIR) +
+                      "/meshes/piston.geo --size 0.0065 --E 7.5e10 --nu 0.33 --rho 2700 --interface pin_bore:rbe2@0,0,0 "
+                      "--modes 8 --static-correction skirt --axial-order 2 --circumferential-order 4 --out " + file);
+}
+
 }  // namespace flexehd::test

@@ -27,10 +27,7 @@ TEST(ElasticSqueeze, StepsSolveTheEquationsWithTheElasticRate) {
     const fs::path dir = fs::temp_directory_path() / ("flexehd_squeeze_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string file = (dir / "piston.h5").string();
-    const auto red = flexehd::test::runFlexehd(
-        "reduce --mesh " + std::string(FLEXEHD_SOURCE_DIR) + "/meshes/piston.geo --size 0.0065 --E 7.5e10 --nu 0.33 "
-        "--rho 2700 --interface pin_bore:rbe2@0,0,0 --modes 8 --static-correction skirt --axial-order 2 "
-        "--circumferential-order 4 --out " + file);
+    const auto red = flexehd::test::reduceSmallPiston(file);
     ASSERT_EQ(red.status, 0) << red.err;
 
     EngineCase c = flexehd::test::smallFlexibleCase(file);
