@@ -5,9 +5,6 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace flexehd::lube {
 
@@ -15,30 +12,6 @@ namespace {
 constexpr std::size_t sj(int j) { return static_cast<std::size_t>(j); }
 }  // namespace
 
-namespace detail {
-
-namespace {
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
-constexpr std::size_t kLargeMin = std::size_t{1} << 20;
-}  // namespace
-
-void* allocateLarge(std::size_t bytes) {
-    if (bytes < kLargeMin) return ::operator new(bytes);
-    const std::size_t padded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-    void* p = std::aligned_alloc(kHugePage, padded);
-    if (!p) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    madvise(p, padded, MADV_HUGEPAGE);  // advice only: failure leaves ordinary pages
-#endif
-    return p;
-}
-
-void deallocateLarge(void* p, std::size_t bytes) noexcept {
-    if (bytes < kLargeMin) ::operator delete(p);
-    else std::free(p);
-}
-
-}  // namespace detail
 
 void validateFilmState(const FilmGrid& grid, const FilmState& film) {
     const int n = grid.size();

@@ -20,51 +20,15 @@
 #include <Eigen/SparseCore>
 #include <cstddef>
 #include <limits>
-#include <new>
-#include <utility>
 #include <vector>
 
 #include "lube/FilmGrid.hpp"
 #include "lube/FilmState.hpp"
+#include "lube/LargeArrayAllocator.hpp"
 
 namespace flexehd::lube {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-namespace detail {
-/// Storage of LargeArrayAllocator: blocks of at least 1 MiB are 2 MiB aligned, padded to whole
-/// 2 MiB pages and advised for transparent huge pages (Linux madvise(MADV_HUGEPAGE); a no-op
-/// where THP is off or unsupported); smaller blocks come from operator new.
-void* allocateLarge(std::size_t bytes);
-void deallocateLarge(void* p, std::size_t bytes) noexcept;
-}  // namespace detail
-
-/// Allocator for the per-node arrays of the solvers (stencils, multigrid work vectors). A cold
-/// solve touches ~100 bytes of fresh memory per node; with 4 KiB pages every page costs a page
-/// fault, which on a virtual machine can cost as much as the arithmetic of the whole solve
-/// (docs/lube.md §7), with 2 MiB pages 512× fewer. Elements are default-initialised: resize()
-/// does not zero doubles (assign() does) — fill them before use.
-template <class T>
-struct LargeArrayAllocator {
-    using value_type = T;
-    LargeArrayAllocator() = default;
-    template <class U>
-    LargeArrayAllocator(const LargeArrayAllocator<U>&) noexcept {}
-    T* allocate(std::size_t n) { return static_cast<T*>(detail::allocateLarge(n * sizeof(T))); }
-    void deallocate(T* p, std::size_t n) noexcept { detail::deallocateLarge(p, n * sizeof(T)); }
-    template <class U>
-    void construct(U* p) noexcept {
-        ::new (static_cast<void*>(p)) U;  // default-initialisation: no zero fill
-    }
-    template <class U, class... Args>
-    void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-    }
-    template <class U>
-    bool operator==(const LargeArrayAllocator<U>&) const noexcept { return true; }
-};
-template <class T>
-using LargeVector = std::vector<T, LargeArrayAllocator<T>>;
 
 /// Visits every face of the node-centred control volumes once: visit(a, b, axial, L, d) with b
 /// the neighbour of a in +z (axial == true) or +θ, L the face length (m), d the distance (m).
