@@ -2,6 +2,9 @@
 
 #include <cstdlib>
 #include <mutex>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -93,3 +96,14 @@ std::size_t largeCacheBytes() {
 std::size_t largeCacheLimit() { return kCacheLimit; }
 
 }  // namespace flexehd::lube::detail
+
+namespace flexehd::lube {
+
+void retainFreedHeapMemory() {
+#if defined(__GLIBC__)
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 512 << 20);
+#endif
+}
+
+}  // namespace flexehd::lube

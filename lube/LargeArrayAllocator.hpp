@@ -45,4 +45,13 @@ struct LargeArrayAllocator {
 template <class T>
 using LargeVector = std::vector<T, LargeArrayAllocator<T>>;
 
+/// For programs that run many solves (the flexehd command line, the benchmarks): a process-wide
+/// glibc setting (a no-op elsewhere) that keeps freed blocks of up to 32 MiB in the heap instead
+/// of unmapping them, and does not trim the heap below 512 MiB. Every solve allocates and frees
+/// vectors of megabytes (pressures, right-hand sides, the start of a cold solve, the coupled
+/// Newton method's factorizations); handed back to the system each time, every touch of their
+/// pages is a page fault again (40 % of a co-simulation's run time, docs/coupling.md §4; ~5 % of a
+/// cold 256×512 film solve, docs/lube.md §7). Call once, early in main().
+void retainFreedHeapMemory();
+
 }  // namespace flexehd::lube

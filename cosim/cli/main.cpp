@@ -1,8 +1,5 @@
 // flexehd: flexible-body elastohydrodynamic co-simulation of a piston in its liner.
 #include <exception>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -10,16 +7,13 @@
 #include <spdlog/spdlog.h>
 
 #include "cosim/cli/Commands.hpp"
+#include "lube/LargeArrayAllocator.hpp"
 
 int main(int argc, char** argv) {
-#if defined(__GLIBC__)
-    // Keep freed blocks in the heap: the coupled Newton method (coupling.elastic_squeeze) and the
-    // sparse factorizations allocate and free blocks of megabytes in every pass; handed back to
-    // the system each time, every touch of their pages is a page fault again (measured: 40 % of
-    // the run time on a virtual machine, docs/coupling.md §4).
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 512 << 20);
-#endif
+    // Freed blocks stay in the heap: the coupled Newton method (coupling.elastic_squeeze) and the
+    // sparse factorizations allocate and free blocks of megabytes in every pass (page faults were
+    // 40 % of the run time on a virtual machine, docs/coupling.md §4).
+    flexehd::lube::retainFreedHeapMemory();
     // Progress and diagnostics go to stderr so that stdout stays clean for --json.
     auto logger = spdlog::stderr_color_mt("flexehd");
     spdlog::set_default_logger(logger);

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "lube/FilmIntegrals.hpp"
+#include "lube/LargeArrayAllocator.hpp"
 #include "lube/PsorSolver.hpp"
 #include "lube/ReynoldsSolver.hpp"
 
@@ -78,6 +79,9 @@ Problem skirt(int nz, int nt) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The allocator setting of the flexehd command line (freed blocks stay in the heap), so the
+    // solvers run as they do there.
+    retainFreedHeapMemory();
     const int maxAxial = argc > 1 ? std::atoi(argv[1]) : 512;
     const double tol = argc > 2 ? std::atof(argv[2]) : 1e-8;
     const int repeats = std::max(1, argc > 3 ? std::atoi(argv[3]) : 1);
