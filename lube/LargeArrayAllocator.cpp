@@ -26,14 +26,13 @@ struct BlockCache {
     std::mutex mutex;
     std::vector<std::pair<void*, std::size_t>> blocks;
     std::size_t bytes = 0;
-    ~BlockCache() {
-        for (auto& b : blocks) std::free(b.first);
-    }
 };
 
+// Never destroyed: arrays in static objects may be freed after every function-local static is
+// gone; the blocks still held at exit go back to the system with the process.
 BlockCache& cache() {
-    static BlockCache c;
-    return c;
+    static BlockCache* c = new BlockCache;
+    return *c;
 }
 }  // namespace
 
