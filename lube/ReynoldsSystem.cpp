@@ -131,29 +131,9 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
                 if (kf || kind[kr] == Film) face(k, kr, Ut, Lt, arcD, qt, cT[sj(j)], mT[sj(j)]);
             }
         }
-        const bool interiorRow = i > 0 && hasDown;
         for (int j = 0; j < nt; ++j) {
             const int k = row + j;
             double* c = st + 3 * static_cast<std::size_t>(k);
-            // A Film node whose four neighbours exist and are Film (most nodes): the general
-            // branch below reduced to its arithmetic, in the same order (the same bits).
-            if (interiorRow && j > 0 && j + 1 < nt && kind[k] == Film && kind[k - nt] == Film &&
-                kind[k + nt] == Film && kind[k - 1] == Film && kind[k + 1] == Film) {
-                const double cu = cUp[sj(j)], cl = cT[sj(j - 1)], cd = cDn[sj(j)], cr = cT[sj(j)];
-                double bk = 0.0 + mUp[sj(j)];
-                bk += mT[sj(j - 1)];
-                bk -= mDn[sj(j)];
-                bk -= mT[sj(j)];
-                c[kStencilC] = cu + cl + cd + cr;
-                if (squeeze) bk -= colL[sj(j)] * Lt * rhoAt(k) * dhdt[k];
-                bv[k] = bk;
-                c[kStencilN] = -cd;
-                c[kStencilE] = -cr;
-                if (!(c[kStencilC] > 0.0))
-                    throw std::invalid_argument("ReynoldsSystem: film node " + std::to_string(k) +
-                                                " has no flow path (isolated by Void nodes?)");
-                continue;
-            }
             if (kind[k] != Film) {
                 c[kStencilE] = c[kStencilN] = 0.0;
                 c[kStencilC] = 1.0;
