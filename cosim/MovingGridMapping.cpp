@@ -118,12 +118,16 @@ void MovingGridMapping::solve(const Window& w, const Transfer& T, const Eigen::V
         B.row(r) = (B.row(r) - off * B.row(r + 1)) / diag[static_cast<std::size_t>(r)];
 }
 
+void MovingGridMapping::requirePressures(Eigen::Index count) const {
+    const Eigen::Index n = static_cast<Eigen::Index>(z_.size()) * nTheta_;
+    if (count != n)
+        throw std::invalid_argument("MovingGridMapping: " + std::to_string(count) + " pressures for a grid of " +
+                                    std::to_string(n) + " nodes");
+}
+
 MovingGridMapping::Window MovingGridMapping::project(const Eigen::VectorXd& p, double offset,
                                                      Eigen::VectorXd& c) const {
-    const Eigen::Index n = static_cast<Eigen::Index>(z_.size()) * nTheta_;
-    if (p.size() != n)  // before the offset check, as before
-        throw std::invalid_argument("MovingGridMapping: " + std::to_string(p.size()) + " pressures for a grid of " +
-                                    std::to_string(n) + " nodes");
+    requirePressures(p.size());  // before the offset check
     Transfer T;
     const Window w = transfer(offset, T);
     solve(w, T, p, "pressures", c);
@@ -344,9 +348,7 @@ std::pair<int, int> MovingGridMapping::overlapRows(const Window& w, const Transf
 void MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& out) const {
     if (modalLoad_.size() == 0) throw std::logic_error("MovingGridMapping::modalForce: setModes first");
     const int nz = static_cast<int>(z_.size()), nt = nTheta_, nc = static_cast<int>(columns_.size());
-    if (p.size() != static_cast<Eigen::Index>(nz) * nt)
-        throw std::invalid_argument("MovingGridMapping: " + std::to_string(p.size()) + " pressures for a grid of " +
-                                    std::to_string(nz * nt) + " nodes");
+    requirePressures(p.size());
     Transfer T;
     const Window w = transfer(offset, T);
     // b = T p on the active columns; Φᵀ A_G M_G⁻¹ b needs only the rows of G the grid overlaps.
@@ -368,9 +370,7 @@ void MovingGridMapping::modalForce(const Eigen::VectorXd& p, double offset, Eige
 void MovingGridMapping::modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& out) const {
     if (modalLoad_.size() == 0) throw std::logic_error("MovingGridMapping::modalForces: setModes first");
     const int nz = static_cast<int>(z_.size()), nt = nTheta_, nc = static_cast<int>(columns_.size());
-    if (P.rows() != static_cast<Eigen::Index>(nz) * nt)
-        throw std::invalid_argument("MovingGridMapping: " + std::to_string(P.rows()) + " pressures for a grid of " +
-                                    std::to_string(nz * nt) + " nodes");
+    requirePressures(P.rows());
     Transfer T;
     const Window w = transfer(offset, T);
     const auto [first, last] = overlapRows(w, T);

@@ -120,6 +120,8 @@ private:
         int k0 = 0, rows = 0;
     };
     using Transfer = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+    // Throws std::invalid_argument unless `count` pressures fit the moving grid.
+    void requirePressures(Eigen::Index count) const;
     // c (rows × nθ, row-major, G rows k0..k0+rows−1) = M⁻¹ b for the grid at offset s.
     Window project(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& c) const;
     // The window and T(k, i) = ∫ ψ_k φ_i dz (window rows × moving rows) at offset s.
