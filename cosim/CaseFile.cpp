@@ -400,6 +400,25 @@ void readContact(const Section& s, ContactSpec& c) {
         c.compositeModulus = number(s, "composite_modulus", {"composite modulus E* (0 = contact off)", "Pa"},
                                     Sign::NonNegative, c.compositeModulus);
     }
+
+    // Hard contact below h = 0: the coating as a bonded elastic layer, or the stiffness directly.
+    const bool anyCoating = s.has("coating_thickness") || s.has("coating_youngs_modulus") || s.has("coating_poisson_ratio");
+    if (s.has("hard_contact_stiffness") && anyCoating)
+        s.fail("hard_contact_stiffness",
+               "give either hard_contact_stiffness or the coating_ thickness / youngs_modulus / poisson_ratio keys, "
+               "not both");
+    c.coatingThickness = number(s, "coating_thickness", {"coating thickness", "m"}, Sign::Positive, c.coatingThickness);
+    if (c.coatingThickness > 1e-3)
+        s.fail("coating_thickness",
+               fmt::format("a coating of {:g} m is thicker than 1 mm: check the units (m)", c.coatingThickness));
+    c.coatingModulus =
+        number(s, "coating_youngs_modulus", {"Young's modulus", "Pa"}, Sign::Positive, c.coatingModulus);
+    c.coatingPoisson = number(s, "coating_poisson_ratio", {"Poisson's ratio", ""}, Sign::Any, c.coatingPoisson);
+    if (!(c.coatingPoisson > -1.0 && c.coatingPoisson < 0.5))
+        s.fail("coating_poisson_ratio",
+               fmt::format("expected a Poisson's ratio in (-1, 0.5), got {:g}", c.coatingPoisson));
+    c.hardContactStiffness = number(s, "hard_contact_stiffness", {"contact stiffness", "Pa/m"}, Sign::Positive,
+                                    c.hardContactStiffness);
 }
 
 // ---- liner bore distortion and thermal displacements (issue 7; BoreDistortion, ClearanceTerms) --
@@ -667,7 +686,8 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     const Section contact(
         ctx, top.get("contact"), "contact",
         {"sigma", "beta", "asperity_density", "composite_modulus", "boundary_friction", "piston_youngs_modulus",
-         "piston_poisson_ratio", "liner_youngs_modulus", "liner_poisson_ratio"});
+         "piston_poisson_ratio", "liner_youngs_modulus", "liner_poisson_ratio", "coating_thickness",
+         "coating_youngs_modulus", "coating_poisson_ratio", "hard_contact_stiffness"});
     readContact(contact, c.contact);
 
     {
@@ -720,7 +740,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     c.time.periodicityTolerance =
         number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, c.time.periodicityTolerance);
 
-    const Section coupling(ctx, top.get("coupling"), "coupling", {"tolerance", "max_iterations", "acceleration", "elastic_squeeze"});
+    const Section coupling(ctx, top.get("coupling"), "coupling", {"tolerance", "max_iterations", "method", "acceleration", "elastic_squeeze"});
     c.coupling.tolerance =
         number(coupling, "tolerance", {"relative tolerance", ""}, Sign::Positive, c.coupling.tolerance);
     if (!(c.coupling.tolerance < 1.0))
@@ -730,7 +750,13 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     c.coupling.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0
                                   ? CouplingAcceleration::IqnIls
                                   : CouplingAcceleration::Aitken;
+    c.coupling.method = choice(coupling, "method", {"newton", "partitioned"}, 0) == 0 ? CouplingMethod::Newton
+                                                                                      : CouplingMethod::Partitioned;
     c.coupling.elasticSqueeze = boolean(coupling, "elastic_squeeze", c.coupling.elasticSqueeze);
+    if (c.coupling.elasticSqueeze && c.coupling.method == CouplingMethod::Partitioned)
+        coupling.fail("elastic_squeeze",
+                      "the elastic deformation rate in the squeeze term needs coupling.method: newton (the partitioned "
+                      "iteration's gain grows as 1/time step and does not converge with it; docs/coupling.md section 3)");
 
     const Section output(ctx, top.get("output"), "output", {"directory", "vtk_every_deg", "mode_shapes"});
     {

@@ -1,17 +1,24 @@
-// The Jacobian of one time step's equations in the unknowns z = (e, β, y) when the squeeze term
-// carries the elastic deformation rate (coupling.elastic_squeeze; docs/coupling.md §3):
+// The Jacobian of one time step's equations in the unknowns z = (e, β, y) for the coupled
+// Newton method (coupling.method: newton, the default with flexible bodies; docs/coupling.md §1, §3):
 //
 //   R_x(z) = M(ψ) ẍ(x) − f(ψ, F_g, film action(p, h))      (motion, docs/dynamics.md)
 //   R_y(z) = y − H(p, p_c)                                   (modal response, quasi-static or BDF2)
 //   p = p(h, ḣ): the film's complementarity solution, h = h_rigid(x) + Ψ y,
-//   ḣ = (a0 h + a1 hₙ + a2 hₙ₋₁)/Δt                          (BDF2 of the whole film thickness)
+//   ḣ = (a0 h_s + a1 h_s,n + a2 h_s,n−1)/Δt                  (BDF2 of the squeeze thickness h_s:
+//                                                            the rigid one, or the whole one with
+//                                                            coupling.elastic_squeeze)
 //
 // Column j of the Jacobian follows from δh_j (∂h/∂z_j: the rigid thickness's derivative, or the
-// film-change shape Ψ_j) and δḣ_j = a0/Δt δh_j: δp_j from the film's linearisation with its
+// film-change shape Ψ_j) and δḣ_j = (a0/Δt) δh_s,j: δp_j from the film's linearisation with its
 // cavitated set held (lube::FilmLinearization — a generalized Jacobian of the semismooth
 // equation), δp_c,j = p_c'(h) δh_j, then the film action by a small difference of the (affine in p,
-// smooth in h) film integrals, and the modal response of the mapped δp_j + δp_c,j. The a0/Δt
-// squeeze part, whose gain ∝ 1/Δt defeats the partitioned iteration, is thereby exact.
+// smooth in h) film integrals, and the modal response of the mapped δp_j + δp_c,j.
+//
+// At a linearisation point the Jacobian is affine in the rate r = a0/Δt, up to the motion's
+// M r² and the dynamic response's step matrix S(r):
+//   δp_j = δp_j^h + r δp_j^ḣ,   R_x rows = A_x + r B_x + r² M,   R_y rows = I − S(r)⁻¹ (F^h + r F^ḣ).
+// The parts are kept (CoupledJacobianParts) and the Jacobian is re-formed for a new step size
+// without a new linearisation — a step-size change alone costs a dense refactorization.
 #include "cosim/PistonSimulationState.hpp"
 
 #include "lube/FilmIntegrals.hpp"
@@ -26,9 +33,10 @@ using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
 }  // namespace
 
-Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev) {
+void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev) {
     const lube::FilmGrid& g = film_.grid();
     const int n = g.size(), m = mp_ + ml_, k = 2 + m;
+    const bool elasticRate = case_.coupling.elasticSqueeze;
     auto t0 = Clock::now();
 
     // δh per unknown: the rigid thickness is linear in (e, β); the modal columns are Ψ (zero on
@@ -55,16 +63,19 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
         Dh.rightCols(ml_) = psiLiner_;
         psiLinerOffset_ = ctx.offset;
     }
-    const double rate = ctx.a0 / ctx.dt;  // δḣ = rate δh: the rate sees the unfloored thickness
-    Eigen::MatrixXd floored;              // the film sees the floored one: no δh where the floor holds
+    // The film sees the floored thickness: no δh where the floor holds; the rate sees the
+    // unfloored one (and only its rigid part without coupling.elastic_squeeze).
+    Eigen::MatrixXd floored;
     if (ev.floored > 0) {
         floored = Dh;
         for (int r = 0; r < n; ++r)
             if (ev.h[r] != ev.hTotal[r]) floored.row(r).setZero();
     }
     const Eigen::MatrixXd& DhFilm = ev.floored > 0 ? floored : Dh;
+    const int rateCols = elasticRate ? k : 2;
 
-    // δp from the film's linearisation at the evaluation's solution.
+    // δp from the film's linearisation at the evaluation's solution: the thickness part and the
+    // rate part (per unit rate) apart.
     lube::FilmState fs;
     fs.h = ev.h;
     fs.dhdt = ev.dhdt;
@@ -76,99 +87,108 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx, const Eige
         eta[r] = lub.viscosity(ev.p[r]);
     }
     linearization_->linearize(fs, rho, eta, ev.p, case_.lubricant.cavitationPressure);
-    Eigen::MatrixXd dP = linearization_->pressureChange(DhFilm, Dh, rate);
-    // Asperity pressure p_c(max(h, −2σ)) of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on
-    // the nodes in contact, added into dP (the load is p + p_c); the rigid columns kept apart too.
-    Eigen::Matrix<double, Eigen::Dynamic, 2> dPcRigid = Eigen::MatrixXd::Zero(n, 2);
+    CoupledJacobianParts& P = *newtonParts_;
+    Eigen::MatrixXd dPh = linearization_->pressureChange(DhFilm, Eigen::MatrixXd());
+    const Eigen::MatrixXd dPrate = linearization_->pressureChange(Eigen::MatrixXd(), Dh.leftCols(rateCols), 1.0);
+    // Asperity (and hard-contact) pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on
+    // the nodes in contact, added into dPh (the load is p + p_c).
     if (contact_) {
-        const double sigma = case_.contact.sigma, d = 1e-4 * sigma;
         for (int r = 0; r < n; ++r) {
-            const double h = ev.hTotal[r];
-            if (g.kind(r) == lube::NodeKind::Void || h <= -2.0 * sigma) continue;
-            const double lo = std::max(h - d, -2.0 * sigma);
-            const double slope = (contact_->pressure(h + d) - contact_->pressure(lo)) / (h + d - lo);
+            if (g.kind(r) == lube::NodeKind::Void) continue;
+            const double slope = contactSlope(ev.hTotal[r]);
             if (slope == 0.0) continue;
-            dPcRigid.row(r) = slope * Dh.row(r).head<2>();
-            dP.row(r) += slope * Dh.row(r);
+            dPh.row(r) += slope * Dh.row(r);
         }
     }
     stats_.timings.film += seconds(t0);
     t0 = Clock::now();
 
-    // Motion rows: −∂f/∂z through the film action, plus M (a0/Δt)² on (e, β). The rigid columns
-    // by a difference of the film integrals (affine in p, smooth in h); the modal columns through
-    // the normal force and its moment only (weights of integrateFilm's pressure term), leaving
-    // out the small change of the shear friction — an inexact Newton step, not a different solution.
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, k);
+    // Motion rows: −∂f/∂z through the film action, each column by a small difference of the film
+    // integrals (affine in p, smooth in h), the friction's change included (at high sliding speed
+    // its moment about the pin is a large part of the motion's dependence on the deformation).
+    P.motionH.setZero(2, k);
+    P.motionRate.setZero(2, k);
     lube::FilmIntegralOptions io;
     io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
     io.cavitationPressure = case_.lubricant.cavitationPressure;
     io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
     const Eigen::Vector2d f0 = dyn_.force(ctx.crank, ctx.gas, ev.action);
+    auto motionForce = [&](const lube::FilmState& f, const Eigen::VectorXd& p, const Eigen::VectorXd& pc) {
+        io.contactPressure = contact_ ? &pc : nullptr;
+        const lube::FilmLoads loads = lube::integrateFilm(g, f, lub, p, io);
+        const Eigen::Vector3d F = loads.totalForce();
+        return Eigen::Vector2d(dyn_.force(ctx.crank, ctx.gas, FilmAction{F.x(), F.z(), loads.moment.y()}));
+    };
     lube::FilmState fj = fs;
     Eigen::VectorXd pj, pcj;
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < k; ++j) {
         const double size = Dh.col(j).cwiseAbs().maxCoeff();
+        if (!(size > 0.0)) continue;  // a mode without film-thickness change on the grid
         // A step of 1e-6 clearance in h: the integrals' curvature (friction ∝ 1/h) stays below it.
         const double s = 1e-6 * case_.piston.clearance / size;
         fj.h = fs.h + s * DhFilm.col(j);
-        fj.dhdt = fs.dhdt + (s * rate) * Dh.col(j);
-        pcj = ev.pc + s * dPcRigid.col(j);
-        pj = ev.p + s * (dP.col(j) - dPcRigid.col(j));  // dP holds p_c's change too
-        io.contactPressure = contact_ ? &pcj : nullptr;
-        const lube::FilmLoads loads = lube::integrateFilm(g, fj, lub, pj, io);
-        const Eigen::Vector3d F = loads.totalForce();
-        const Eigen::Vector2d fjv = dyn_.force(ctx.crank, ctx.gas, FilmAction{F.x(), F.z(), loads.moment.y()});
-        J.block(0, j, 2, 1) = -(fjv - f0) / s;
-    }
-    if (m > 0) {
-        if (normalWeights_.cols() != n) {  // fx = Σ −p A cos θ, my = Σ z (−p A cos θ) (pin axis at z = 0)
-            normalWeights_.setZero(2, n);
+        pcj = ev.pc;
+        pj = ev.p + s * dPh.col(j);
+        if (contact_)  // dPh holds p_c's change too: keep it apart
             for (int r = 0; r < n; ++r) {
                 if (g.kind(r) == lube::NodeKind::Void) continue;
-                const double fx = -g.area(r) * std::cos(g.theta(g.thetaIndex(r)));
-                normalWeights_(0, r) = fx;
-                normalWeights_(1, r) = (g.z(g.axialIndex(r)) - io.referencePoint.z()) * fx;
+                const double slope = contactSlope(ev.hTotal[r]);
+                if (slope == 0.0) continue;
+                pcj[r] += s * slope * Dh(r, j);
+                pj[r] -= s * slope * Dh(r, j);
             }
-        }
-        const Eigen::MatrixXd dAction = normalWeights_ * dP.rightCols(m);  // 2 × m
-        for (int j = 0; j < m; ++j) {
-            FilmAction a = ev.action;
-            a.fx += dAction(0, j);
-            a.my += dAction(1, j);
-            J.block(0, 2 + j, 2, 1) = -(dyn_.force(ctx.crank, ctx.gas, a) - f0);
+        P.motionH.col(j) = -(motionForce(fj, pj, pcj) - f0) / s;
+        if (j < rateCols) {
+            fj.h = fs.h;
+            pj = ev.p + s * dPrate.col(j);
+            P.motionRate.col(j) = -(motionForce(fj, pj, ev.pc) - f0) / s;
         }
     }
-    J.topLeftCorner<2, 2>() += dyn_.mass(ctx.crank) * (rate * rate);
 
-    // Modal rows: δ_ij − ∂H/∂z_j, H linear in the mapped pressure (history terms held).
-    Eigen::MatrixXd F, Q;
-    Eigen::VectorXd q;
-    const Eigen::VectorXd zp = Eigen::VectorXd::Zero(mp_), zl = Eigen::VectorXd::Zero(ml_);
+    // Modal rows: the modal forces of the mapped δp (the response is applied when the Jacobian is
+    // formed: it depends on the step size with bodies.response: dynamic).
     if (piston_) {
-        piston_->modalForces(dP, 0.0, F);
-        if (pistonDynamics_) {
-            for (int j = 0; j < k; ++j) {
-                pistonDynamics_->respond(F.col(j), zp, zp, q);
-                J.block(2, j, mp_, 1) = -q;
-            }
-        } else {
-            piston_->quasiStatic(F, Q);
-            J.middleRows(2, mp_) = -Q;
-        }
+        piston_->modalForces(dPh, 0.0, P.pistonH);
+        piston_->modalForces(dPrate, 0.0, P.pistonRate);
     }
     if (liner_) {
-        liner_->modalForces(dP, ctx.offset, F);
-        if (linerDynamics_) {
+        liner_->modalForces(dPh, ctx.offset, P.linerH);
+        liner_->modalForces(dPrate, ctx.offset, P.linerRate);
+    }
+    P.valid = true;
+    const double dtStructure = seconds(t0);
+    stats_.timings.structure += dtStructure;
+    stats_.timings.modal += dtStructure;
+}
+
+Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx) {
+    const auto t0 = Clock::now();
+    const CoupledJacobianParts& P = *newtonParts_;
+    const int m = mp_ + ml_, k = 2 + m;
+    const double rate = ctx.a0 / ctx.dt;
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, k);
+    J.topRows(2) = P.motionH + rate * P.motionRate;
+    J.topLeftCorner<2, 2>() += dyn_.mass(ctx.crank) * (rate * rate);
+    // Modal rows: δ_ij − ∂H/∂z_j, H linear in the mapped pressure (history terms held).
+    auto respond = [&](const Eigen::MatrixXd& Fh, const Eigen::MatrixXd& Fr, const FlexibleSurface& body,
+                       modal::HeldModalDynamics* dynamics, int row, int rows) {
+        Eigen::MatrixXd F = Fh;
+        F.leftCols(Fr.cols()) += rate * Fr;
+        if (dynamics) {
+            const Eigen::VectorXd zero = Eigen::VectorXd::Zero(rows);
+            Eigen::VectorXd q;
             for (int j = 0; j < k; ++j) {
-                linerDynamics_->respond(F.col(j), zl, zl, q);
-                J.block(2 + mp_, j, ml_, 1) = -q;
+                dynamics->respond(F.col(j), zero, zero, q);
+                J.block(row, j, rows, 1) = -q;
             }
         } else {
-            liner_->quasiStatic(F, Q);
-            J.bottomRows(ml_) = -Q;
+            Eigen::MatrixXd Q;
+            body.quasiStatic(F, Q);
+            J.middleRows(row, rows) = -Q;
         }
-    }
+    };
+    if (piston_) respond(P.pistonH, P.pistonRate, *piston_, pistonDynamics_.get(), 2, mp_);
+    if (liner_) respond(P.linerH, P.linerRate, *liner_, linerDynamics_.get(), 2 + mp_, ml_);
     J.bottomRightCorner(m, m).diagonal().array() += 1.0;
     const double dtStructure = seconds(t0);
     stats_.timings.structure += dtStructure;

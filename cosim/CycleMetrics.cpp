@@ -33,6 +33,7 @@ CycleMetrics cycleMetrics(const std::vector<StepRecord>& c, const PistonDynamics
         }
         m.maxPressure = std::max(m.maxPressure, r.maxPressure);
         m.contactForceMax = std::max(m.contactForceMax, std::abs(r.contactForce));
+        m.hardContactForceMax = std::max(m.hardContactForceMax, std::abs(r.hardContactForce));
         m.sideForceMax = std::max(m.sideForceMax, std::abs(r.sideForce));
         iterations += r.couplingIterations;
         m.maxIterations = std::max(m.maxIterations, r.couplingIterations);

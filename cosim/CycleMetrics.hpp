@@ -20,9 +20,10 @@ struct CycleMetrics {
     double slapEnergyDeg = 0.0;       ///< °, crank angle (StepRecord::crankDeg, 0–720) where it peaks
     double lateralMin = 0.0, lateralMax = 0.0;  ///< m
     double tiltMin = 0.0, tiltMax = 0.0;        ///< rad
-    double minFilm = 0.0, minFilmDeg = 0.0;     ///< m; ° (crank angle 0–720)
+    double minFilm = 0.0, minFilmDeg = 0.0;     ///< m (< 0: the surfaces overlap); ° (crank angle 0–720)
     double maxPressure = 0.0;         ///< Pa, gauge
-    double contactForceMax = 0.0;     ///< N, largest |lateral asperity force|
+    double contactForceMax = 0.0;     ///< N, largest |lateral contact force| (asperities + hard contact)
+    double hardContactForceMax = 0.0; ///< N, largest |lateral hard-contact force|
     double sideForceMax = 0.0;        ///< N, largest |rod side force|
     double meanIterations = 0.0;      ///< film solves per step
     int maxIterations = 0;

@@ -62,6 +62,12 @@ struct ContactSpec {
     double asperityDensity = 1e10;    ///< 1/m², η_s (η_s β σ dimensionless, typically 0.03–0.05)
     double compositeModulus = 0.0;    ///< Pa, E* (Hertz: 1/E* = Σ (1−ν²)/E); 0 = contact off
     double boundaryFriction = 0.1;    ///< μ_b, friction coefficient of asperity contact
+    /// Hard contact below h = 0 (lube::ElasticFoundation, docs/lube.md §5): the skirt coating as
+    /// a bonded elastic layer, K = E (1 − ν)/[(1 + ν)(1 − 2ν) t]. Used with asperity contact on.
+    double coatingThickness = 15e-6;      ///< m, skirt coating (resin-bonded solid lubricant)
+    double coatingModulus = 8e9;          ///< Pa, Young's modulus of the coating
+    double coatingPoisson = 0.3;          ///< Poisson's ratio of the coating
+    double hardContactStiffness = 0.0;    ///< Pa/m, K given directly (> 0 overrides the coating)
 };
 
 struct PressureSample {
@@ -100,6 +106,10 @@ struct TimeSpec {
 };
 
 enum class CouplingAcceleration { IqnIls, Aitken };
+/// How a step with flexible bodies is solved (docs/coupling.md §1): Newton on the motion and the
+/// modal coordinates together with the film's exact linearisation, or the partitioned iteration
+/// (Newton on the motion, IQN-ILS / Aitken on the modal coordinates).
+enum class CouplingMethod { Newton, Partitioned };
 
 struct CouplingSpec {
     /// Relative to the clearance: the film-structure coupling has converged when the largest film-
@@ -107,12 +117,13 @@ struct CouplingSpec {
     /// ≤ tolerance × piston.clearance (docs/coupling.md §1).
     double tolerance = 1e-3;
     int maxIterations = 30;    ///< passes per step, one film solve each (+ 2 for the first pass's Jacobian)
-    CouplingAcceleration acceleration = CouplingAcceleration::IqnIls;
+    CouplingAcceleration acceleration = CouplingAcceleration::IqnIls;  ///< of the partitioned method
+    CouplingMethod method = CouplingMethod::Newton;
     ElasticResponse response = ElasticResponse::QuasiStatic;
     /// coupling.elastic_squeeze: the squeeze term ∂h/∂t includes the elastic deformation rate
     /// (GUIDE eq. 1 in full); the step is then solved by semismooth Newton on the motion and the
-    /// modal coordinates together with the film's exact linearisation (docs/coupling.md §3),
-    /// and `acceleration` is not used. Off: ∂h/∂t of the rigid film only.
+    /// modal coordinates together with the film's exact linearisation (docs/coupling.md §3);
+    /// needs method Newton. Off: ∂h/∂t of the rigid film only.
     bool elasticSqueeze = false;
 };
 

@@ -32,6 +32,7 @@ const std::vector<Column>& table() {
         {"film_force_n", &StepRecord::filmForce, nullptr},
         {"film_moment_n_m", &StepRecord::filmMoment, nullptr},
         {"contact_force_n", &StepRecord::contactForce, nullptr},
+        {"hard_contact_force_n", &StepRecord::hardContactForce, nullptr},
         {"friction_force_n", &StepRecord::frictionForce, nullptr},
         {"friction_power_w", &StepRecord::frictionPower, nullptr},
         {"min_film_m", &StepRecord::minFilm, nullptr},

@@ -34,6 +34,14 @@ lube::ReynoldsOptions makeOptions(const LubricantSpec& l, lube::SolverKind kind)
     return o;
 }
 
+// The smallest film thickness over the nodes that carry film (m; < 0: the surfaces overlap).
+double minimumGap(const lube::FilmGrid& g, const Eigen::VectorXd& h) {
+    double m = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < g.size(); ++k)
+        if (g.kind(k) != lube::NodeKind::Void) m = std::min(m, h[k]);
+    return m;
+}
+
 double wrap720(double deg) {
     double w = std::fmod(deg, 720.0);
     return w < 0.0 ? w + 720.0 : w;
@@ -58,8 +66,13 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
       solver_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::Multigrid)),
       fallback_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::ActiveSet)) {
     const auto t0 = Clock::now();
-    if (c.contact.compositeModulus > 0.0)
+    if (c.contact.compositeModulus > 0.0) {
         contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
+        foundation_.emplace(c.contact.hardContactStiffness > 0.0
+                                ? c.contact.hardContactStiffness
+                                : lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
+                                                                          c.contact.coatingThickness));
+    }
     if (c.pistonBody.model == BodyModel::Flexible) {
         piston_ = std::make_unique<FlexibleSurface>(modal::readReducedBody(c.pistonBody.file),
                                                     FlexibleSurface::Side::Piston, c.pistonBody.surface,
@@ -93,14 +106,25 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
         }
         clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
     }
-    if (c.coupling.elasticSqueeze && (piston_ || liner_)) {
+    if (c.coupling.method == CouplingMethod::Newton && (piston_ || liner_)) {
         linearization_ = std::make_unique<lube::FilmLinearization>(film_.grid());
+        newtonParts_ = std::make_unique<CoupledJacobianParts>();
         if (piston_) piston_->filmChangeShapes(0.0, psiPiston_);
     }
     stats_.timings.setup = seconds(t0);
 }
 
 PistonSimulation::~PistonSimulation() = default;
+
+void PistonSimulation::contactPressure(double h, double& asperity, double& hard) const {
+    asperity = contact_->pressure(std::max(h, 0.0));
+    hard = foundation_->pressure(h);
+}
+
+double PistonSimulation::contactSlope(double h) const {
+    if (h < 0.0) return foundation_->pressureSlope(h);
+    return contact_->pressureSlope(h);
+}
 
 double PistonSimulation::linerOffset(double crankDeg) const {
     return -case_.engine.pinTdcDepth - (kin_.tdcPosition() - kin_.at(crankDeg).position);
@@ -124,6 +148,18 @@ ClearanceRange PistonSimulation::centredClearance(double crankDeg) const {
     return r;
 }
 
+// Good Broyden update of the kept inverse Jacobian H for the update s and the residual change
+// dF it caused, in the norm of the film-thickness change of s (Sherman–Morrison):
+//   J₊ = J + (dF − J s) wᵀ/(wᵀ s),  w = D⁻² s  ⇔  H₊ = H + (s − H dF)(wᵀ H)/(wᵀ H dF).
+void PistonSimulation::broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF) {
+    const Eigen::VectorXd w = s.cwiseProduct(unknownScale_).cwiseProduct(unknownScale_);
+    const Eigen::VectorXd HdF = newtonInverse_ * dF;
+    const double denom = w.dot(HdF);
+    if (!(std::abs(denom) > 1e-12 * w.norm() * HdF.norm())) return;  // update undefined: keep H
+    const Eigen::RowVectorXd wH = w.transpose() * newtonInverse_;
+    newtonInverse_.noalias() += (s - HdF) * (wH / denom);
+}
+
 PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, const Eigen::Vector2d& x,
                                                         const Eigen::VectorXd& y, bool structure) {
     Evaluation ev;
@@ -131,7 +167,7 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     film_.rigidThickness(x[0], x[1], ev.hRigid);
     if (clearance_) clearance_->add(ctx.offset, ev.hRigid);  // distortion, thermal (GUIDE eq. 2)
     ev.h = ev.hRigid;
-    const bool elasticSqueeze = linearization_ != nullptr;
+    const bool elasticSqueeze = case_.coupling.elasticSqueeze;
     const double rigidSeconds = seconds(t0);
     if (piston_ || liner_) {
         // Elastic Δh of y at this offset; the Jacobian's evaluations reuse the pass's (y frozen).
@@ -151,14 +187,28 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     stats_.timings.film += rigidSeconds;
     t0 = Clock::now();
     const lube::FilmGrid& g = film_.grid();
-    // A Newton iterate may push the skirt into the liner: floor h (the asperity pressure, from the
-    // unfloored value clamped at λ = −2, pushes it back). Counted in `floored`.
+    // Where the surfaces touch or overlap, the contact pressure of the unfloored h (asperities,
+    // and the coating's hard contact below h = 0) carries the load; the Reynolds equation sees h
+    // floored at a fluid film of 0.05σ (0.01 c_r without contact). Counted in `floored`; the
+    // outputs show the unfloored thickness (ev.hTotal, ev.minGap).
     const double floor = contact_ ? 0.05 * case_.contact.sigma : 0.01 * case_.piston.clearance;
     ev.hTotal = ev.h;
     ev.pc = Eigen::VectorXd::Zero(g.size());
+    ev.pcHard = Eigen::VectorXd::Zero(g.size());
+    ev.minGap = std::numeric_limits<double>::infinity();
+    ev.hardForce = 0.0;
     for (int k = 0; k < g.size(); ++k) {
         if (g.kind(k) == lube::NodeKind::Void) continue;
-        if (contact_) ev.pc[k] = contact_->pressure(std::max(ev.h[k], -2.0 * case_.contact.sigma));
+        ev.minGap = std::min(ev.minGap, ev.h[k]);
+        if (contact_) {
+            double asperity = 0.0, hard = 0.0;
+            contactPressure(ev.h[k], asperity, hard);
+            ev.pc[k] = asperity + hard;
+            if (hard > 0.0) {
+                ev.pcHard[k] = hard;
+                ev.hardForce -= hard * g.area(k) * std::cos(g.theta(g.thetaIndex(k)));
+            }
+        }
         if (ev.h[k] < floor) {
             ev.h[k] = floor;
             ++ev.floored;
@@ -286,7 +336,12 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
         failure = fmt::format("{} (after {} film solves in this attempt)", why, iterations);
         return false;
     };
-    double lastMeasure = std::numeric_limits<double>::infinity();
+    // coupling.method newton: the last accepted iterate (its measure, unknowns and residual)
+    double acceptedMeasure = std::numeric_limits<double>::infinity();
+    Eigen::Vector2d acceptedX = x;
+    Eigen::VectorXd acceptedY = y, acceptedF;
+    int backtracks = 0;
+    bool freshJacobian = false, regularize = false;
     for (int it = 0; it < maxIt; ++it) {
         try {
             ev = evaluate(ctx, x, y, true);
@@ -310,30 +365,104 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             stats_.timings.mapping += tMap;
             stats_.timings.structure += tMap;
         }
-        Eigen::VectorXd dz;  // coupling.elastic_squeeze: the Newton update of (e, β, y)
+        Eigen::VectorXd dz;  // coupling.method newton: the update of (e, β, y)
         if (linearization_) {
-            // Chord passes: a new Jacobian at the first pass and whenever a pass did not reduce the
-            // residual (in units of its tolerances) at least fivefold.
+            // The residual in units of its tolerances (≤ 1: converged).
             const double measure = std::max({couplingRes / couplingTol,
                                              std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
                                              std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach))});
+            Eigen::VectorXd F(2 + mp_ + ml_);
+            F.head<2>() = ev.residual;
+            F.tail(mp_ + ml_) = y - ev.Hy;
+            // Backtracking: a pass that made the measure worse than at the last accepted iterate
+            // halves the update from there (the film and contact laws are strongly nonlinear where
+            // the cavitated or contact set changes; the kept Jacobian may not describe them).
+            if (acceptedMeasure < std::numeric_limits<double>::infinity() && measure > acceptedMeasure &&
+                backtracks < 8) {
+                ++backtracks;
+                x = acceptedX + 0.5 * (x - acceptedX);
+                y = acceptedY + 0.5 * (y - acceptedY);
+                continue;
+            }
             const double rate = ctx.a0 / ctx.dt;
-            if ((it == 0 && rate != newtonRate_) || measure > 0.2 * lastMeasure) {
-                newtonRate_ = rate;
+            // A new linearisation when a pass did not halve the measure (or had to backtrack with a
+            // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
+            // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
+            if (backtracks > 0 && freshJacobian) regularize = true;  // see below
+            const bool relinearize = !newtonParts_->valid || measure > 0.5 * acceptedMeasure || backtracks > 0;
+            if (relinearize) {
                 try {
-                    newtonLu_.compute(coupledJacobian(ctx, x, ev));
+                    linearizeCoupled(ctx, x, ev);
                 } catch (const std::runtime_error& e) {
-                    newtonRate_ = -1.0;
+                    newtonParts_->valid = false;
                     return fail(std::string("the film's linearisation for the coupled Newton step failed: ") + e.what());
                 }
                 ++stats_.jacobians;
             }
-            Eigen::VectorXd F(2 + mp_ + ml_);
-            F.head<2>() = ev.residual;
-            F.tail(mp_ + ml_) = y - ev.Hy;
-            dz = -newtonLu_.solve(F);
-            lastMeasure = measure;
+            if (relinearize || rate != newtonRate_) {
+                Eigen::MatrixXd& J = newtonJacobian_;
+                J = coupledJacobian(ctx);
+                // The (e, β) columns by differences of full evaluations (film solve and modal
+                // response): a rigid motion moves the cavitation boundary, whose effect the held-set
+                // linearisation misses — at high sliding and squeeze speeds enough to stall Newton.
+                const double fdScale = 1e-5;  // of the clearance (tilt: of the clearance over the reach)
+                for (int i = 0; i < 2; ++i) {
+                    Eigen::Vector2d xp = x;
+                    xp[i] += fdScale * tol[i];
+                    Evaluation e2;
+                    try {
+                        e2 = evaluate(ctx, xp, y, true);
+                    } catch (const std::runtime_error&) {
+                        return fail("a film solve of the Jacobian's difference columns failed");
+                    }
+                    ++iterations;
+                    J(0, i) = (e2.residual[0] - ev.residual[0]) / (fdScale * tol[i]);
+                    J(1, i) = (e2.residual[1] - ev.residual[1]) / (fdScale * tol[i]);
+                    J.col(i).tail(mp_ + ml_) = (ev.Hy - e2.Hy) / (fdScale * tol[i]);
+                }
+                newtonInverse_ = J.partialPivLu().inverse();
+                newtonRate_ = rate;
+                // Unknowns in units of the film-thickness change they cause, for the Broyden norm.
+                unknownScale_ = jacobianDh_.colwise().lpNorm<Eigen::Infinity>().transpose();
+                for (Eigen::Index j = 0; j < unknownScale_.size(); ++j)
+                    unknownScale_[j] = unknownScale_[j] > 0.0 ? unknownScale_[j] : 1.0;
+            } else if (acceptedF.size()) {
+                Eigen::VectorXd step(2 + mp_ + ml_);
+                step.head<2>() = x - acceptedX;
+                step.tail(mp_ + ml_) = y - acceptedY;
+                broydenUpdate(step, F - acceptedF);
+            }
+            freshJacobian = relinearize;
+            backtracks = 0;
+            acceptedMeasure = measure;
+            acceptedX = x;
+            acceptedY = y;
+            acceptedF = F;
+            // After a failed line search with a fresh Jacobian the step is nearly singular: some
+            // combination of motion and modes changes the residual by less than its tolerance per
+            // clearance of film change (a soft elastic mode against a film of nearly equal and
+            // opposite stiffness, quasi-static). Then the Levenberg–Marquardt step in units of the
+            // tolerances (residual) and of the clearance (film-thickness change of each unknown),
+            // dz = −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, leaves such directions alone.
+            if (regularize) {
+                const int kk = 2 + mp_ + ml_;
+                Eigen::VectorXd dzScale = case_.piston.clearance * unknownScale_.cwiseInverse();
+                Eigen::VectorXd rScale(kk);
+                rScale[0] = 1e-4 * (ev.scale[0] + forceFloor);
+                rScale[1] = 1e-4 * (ev.scale[1] + forceFloor * reach);
+                for (int j = 2; j < kk; ++j) rScale[j] = couplingTol / unknownScale_[j];
+                const Eigen::MatrixXd Js = rScale.cwiseInverse().asDiagonal() * newtonJacobian_ * dzScale.asDiagonal();
+                Eigen::MatrixXd N = Js.transpose() * Js;
+                N.diagonal().array() += 1.0;
+                dz = -(dzScale.asDiagonal() * N.llt().solve(Js.transpose() * F.cwiseQuotient(rScale)));
+            } else {
+                dz = -newtonInverse_ * F;
+            }
             if (!dz.allFinite()) return fail("the Newton update of the coupled step is not finite");
+            // Damped step: no update moves the film thickness anywhere by more than a quarter of the
+            // clearance (the film and contact laws are far from linear over such a distance).
+            const double largest = dz.cwiseAbs().dot(unknownScale_);  // ≥ max |Δh|
+            if (largest > 0.25 * case_.piston.clearance) dz *= 0.25 * case_.piston.clearance / largest;
         } else if (it == 0) {
             // Finite-difference Jacobian of the motion residual (modal coordinates frozen).
             const Eigen::Vector2d delta = 1e-5 * tol;
@@ -412,9 +541,10 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
     r.filmForce = ev.loads.pressureForce.x() + ev.loads.shearForce.x() + ev.loads.boundaryFrictionForce.x();
     r.filmMoment = ev.loads.moment.y();
     r.contactForce = ev.loads.contactForce.x();
+    r.hardContactForce = ev.hardForce;
     r.frictionForce = ev.loads.frictionForce().z();
     r.frictionPower = -r.frictionForce * k.velocity;
-    r.minFilm = ev.loads.minFilm;
+    r.minFilm = ev.minGap;  // unfloored: < 0 where the surfaces overlap
     r.maxPressure = ev.p.size() ? ev.p.maxCoeff() : 0.0;
     r.couplingIterations = iterations;
     r.stepDeg = stepDeg;
@@ -433,7 +563,7 @@ Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cy
     sn.lateral = s.x[0];
     sn.tilt = s.x[1];
     sn.pressure = ev.p;
-    sn.filmThickness = ev.h;
+    sn.filmThickness = ev.hTotal;  // unfloored: < 0 where the surfaces overlap
     sn.contactPressure = ev.pc;
     sn.cavitation = Eigen::VectorXd::Zero(g.size());
     sn.shearStress = Eigen::VectorXd::Zero(g.size());
@@ -542,7 +672,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
                         "clearances of the case.",
                         T.minStepDeg, wrap720(s.crankDeg), cycle,
                         ok ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure,
-                        s.x[0] * 1e6, s.x[1] * 1e3, s.h.minCoeff() * 1e6));
+                        s.x[0] * 1e6, s.x[1] * 1e3, minimumGap(film_.grid(), s.hTotal) * 1e6));
                 }
                 continue;
             }

@@ -24,6 +24,7 @@
 #include "cosim/SkirtFilm.hpp"
 #include "cosim/StepRecord.hpp"
 #include "lube/FilmLinearization.hpp"
+#include "lube/ElasticFoundation.hpp"
 #include "lube/GreenwoodTripp.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "modal/HeldModalDynamics.hpp"
@@ -122,9 +123,18 @@ private:
     Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
     bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
                  std::string& failure);
-    /// coupling.elastic_squeeze: the Jacobian of (motion residual, y − H(y)) in (e, β, y) at the
-    /// evaluation (CoupledNewton.cpp, docs/coupling.md §3).
-    Eigen::MatrixXd coupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
+    struct CoupledJacobianParts;
+    /// coupling.method newton: linearises (motion residual, y − H(y)) in (e, β, y) at the
+    /// evaluation into the parts of CoupledJacobianParts (CoupledNewton.cpp, docs/coupling.md §1, §3)
+    void linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
+    void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
+    /// The Jacobian at the context's step size from the last linearisation's parts.
+    Eigen::MatrixXd coupledJacobian(const Context& ctx);
+    /// Contact pressure at the film thickness h (unfloored): Greenwood–Tripp asperity pressure of
+    /// max(h, 0), and the hard contact of the coating below h = 0 (docs/lube.md §5).
+    void contactPressure(double h, double& asperity, double& hard) const;
+    /// ∂(asperity + hard)/∂h (Pa/m).
+    double contactSlope(double h) const;
     StepRecord record(const State& s, const Evaluation& ev, int cycle, double stepDeg, int iterations) const;
     Snapshot snapshot(const State& s, const Evaluation& ev, int cycle) const;
 
@@ -136,6 +146,7 @@ private:
     lube::ReynoldsSolver solver_;
     lube::ReynoldsSolver fallback_;  // active set on a sparse factorization, if multigrid fails
     std::optional<lube::GreenwoodTripp> contact_;
+    std::optional<lube::ElasticFoundation> foundation_;  // hard contact below h = 0 (with contact_)
     std::unique_ptr<FlexibleSurface> piston_, liner_;
     std::unique_ptr<ClearanceTerms> clearance_;  // added to h_rigid at the liner offset
     // bodies.response: dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
@@ -144,13 +155,15 @@ private:
     // Elastic Δh of the last y and liner offset evaluated (reused by the Jacobian's evaluations).
     Eigen::VectorXd elasticY_, pistonDh_, linerDh_;
     double elasticOffset_ = std::numeric_limits<double>::quiet_NaN();
-    // coupling.elastic_squeeze: the film's linearisation and the film-change shapes Ψ (grid × modes)
+    // coupling.method newton: the film's linearisation and the film-change shapes Ψ (grid × modes)
     std::unique_ptr<lube::FilmLinearization> linearization_;
     Eigen::MatrixXd psiPiston_, psiLiner_;
-    Eigen::MatrixXd normalWeights_;
     Eigen::MatrixXd jacobianDh_;     // ∂h/∂(e, β, y): grid × (2 + modes), kept between Jacobians
-    Eigen::PartialPivLU<Eigen::MatrixXd> newtonLu_;  // the last coupled Jacobian, factorized
-    double newtonRate_ = -1.0;                      // its a0/Δt  // 2 × grid: fx and my of a unit pressure per node
+    std::unique_ptr<CoupledJacobianParts> newtonParts_;  // the last linearisation
+    Eigen::MatrixXd newtonJacobian_; // the coupled Jacobian as formed (before Broyden updates)
+    Eigen::MatrixXd newtonInverse_;  // inverse of the coupled Jacobian (Broyden-updated within a step)
+    Eigen::VectorXd unknownScale_;   // m of film-thickness change per unit of each unknown
+    double newtonRate_ = -1.0;       // the a0/Δt it was formed for
     double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();
     Eigen::Matrix2d jacobian_;
     bool haveJacobian_ = false;

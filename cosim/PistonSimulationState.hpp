@@ -28,12 +28,26 @@ struct PistonSimulation::Context {
 
 struct PistonSimulation::Evaluation {
     Eigen::VectorXd h, hRigid, dhdt, p, pc, Hy;
+    Eigen::VectorXd pcHard;  // the hard-contact part of pc (Pa)
+    double hardForce = 0.0;  // N, lateral (x) force of the hard contact on the piston
+    double minGap = 0.0;     // m, smallest unfloored film thickness (< 0: interference)
     Eigen::VectorXd hTotal;  // h before the floor (h < hTotal where the floor holds)
     lube::FilmLoads loads;
     FilmAction action;
     Eigen::Vector2d vel, acc, residual;
     Eigen::Vector2d scale;  // magnitude of the largest terms of each equation (N, N·m)
     int floored = 0;
+};
+
+// The coupled Newton method's Jacobian at one linearisation, affine in the rate r = a0/Δt
+// (CoupledNewton.cpp): motion rows motionH + r motionRate (+ M r²), modal rows
+// I − response(forcesH + r forcesRate) per body (the rate parts have 2 columns without
+// coupling.elastic_squeeze, 2 + modes with it).
+struct PistonSimulation::CoupledJacobianParts {
+    bool valid = false;
+    Eigen::MatrixXd motionH, motionRate;    // 2 × (2 + modes)
+    Eigen::MatrixXd pistonH, pistonRate;    // piston modes × columns
+    Eigen::MatrixXd linerH, linerRate;      // liner modes × columns
 };
 
 }  // namespace flexehd::cosim

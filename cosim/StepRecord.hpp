@@ -18,10 +18,11 @@ struct StepRecord {
     double sideForce = 0.0;         ///< N, lateral force of the connecting rod on the pin
     double filmForce = 0.0;         ///< N, lateral force of the film without asperity contact (pressure + friction)
     double filmMoment = 0.0;        ///< N·m, moment of film pressure, contact and friction about the pin
-    double contactForce = 0.0;      ///< N, lateral asperity-contact force
+    double contactForce = 0.0;      ///< N, lateral contact force (asperities + hard contact)
+    double hardContactForce = 0.0;  ///< N, its hard-contact part (coating, film thickness < 0)
     double frictionForce = 0.0;     ///< N, axial friction force (hydrodynamic shear + boundary)
     double frictionPower = 0.0;     ///< W, −F_friction,z · ż (power lost, ≥ 0 on average)
-    double minFilm = 0.0;           ///< m
+    double minFilm = 0.0;           ///< m, smallest film thickness (gap); < 0 where the surfaces overlap
     double maxPressure = 0.0;       ///< Pa, gauge
     int couplingIterations = 0;     ///< film solves in this step (coupling + Newton)
     double stepDeg = 0.0;           ///< °, crank-angle step that reached this point

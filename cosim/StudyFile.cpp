@@ -31,7 +31,7 @@ const std::vector<std::string> kReduceOptions = {"mesh", "order", "size", "E", "
 const std::vector<std::string> kSummaryKeys = {
     "status", "message", "name", "cycle", "friction_power_mean_w", "friction_energy_per_cycle_j", "fmep_pa",
     "slap_kinetic_energy_max_j", "slap_kinetic_energy_max_crank_deg", "lateral_min_m", "lateral_max_m",
-    "tilt_min_rad", "tilt_max_rad", "min_film_m", "min_film_crank_deg", "max_pressure_pa", "contact_force_max_n",
+    "tilt_min_rad", "tilt_max_rad", "min_film_m", "min_film_crank_deg", "max_pressure_pa", "contact_force_max_n", "hard_contact_force_max_n",
     "side_force_max_n", "cycles", "periodic", "periodicity_error_m", "periodicity_tolerance_m",
     "iterations.steps", "iterations.rejected_steps", "iterations.film_solves", "iterations.jacobians",
     "iterations.fallback_film_solves", "iterations.film_solves_per_step_mean", "iterations.film_solves_per_step_max",

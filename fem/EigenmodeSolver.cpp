@@ -21,7 +21,9 @@ class CholmodShiftInvert {
 public:
     using Scalar = double;
     CholmodShiftInvert(const SparseMatrix& K, const SparseMatrix& M, const StaticSolver* factorOfK)
-        : K_(K), M_(M), external_(factorOfK) {}
+        : K_(K), M_(M), external_(factorOfK) {
+        llt_.cholmod().print = 0;  // failures are reported by set_shift's message, not by CHOLMOD
+    }
     Eigen::Index rows() const { return K_.rows(); }
     Eigen::Index cols() const { return K_.cols(); }
     void set_shift(double sigma) {

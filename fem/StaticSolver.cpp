@@ -9,6 +9,8 @@ namespace flexehd::fem {
 
 struct StaticSolver::Impl {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> llt;
+    // CHOLMOD prints nothing itself: a failed factorization is reported by the message below.
+    Impl() { llt.cholmod().print = 0; }
 };
 
 StaticSolver::StaticSolver(const SparseMatrix& upper) : impl_(std::make_unique<Impl>()) {

@@ -11,6 +11,8 @@ namespace flexehd::lube {
 struct FilmLinearization::Factor {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
     std::vector<int> analysedFree;  // the free set whose pattern llt has analysed
+    // CHOLMOD prints nothing itself: a failed factorization is reported by linearize's exception.
+    Factor() { llt.cholmod().print = 0; }
 };
 
 namespace {
@@ -148,7 +150,10 @@ void FilmLinearization::linearize(const FilmState& film, const Eigen::VectorXd& 
     if (nf > 0) {
         factor_->llt.factorize(M);
         if (factor_->llt.info() != Eigen::Success)
-            throw std::runtime_error("FilmLinearization: Cholesky factorization of the free film rows failed");
+            throw std::runtime_error(
+                "the linearised film equations on the " + std::to_string(nf) +
+                " uncavitated nodes are numerically not positive definite (film thickness ratios across the grid "
+                "too large for double precision, e.g. nodes at the floor of a fluid film next to open ones)");
     }
 }
 

@@ -74,6 +74,7 @@ nlohmann::json summaryJson(const cosim::EngineCase& c, const cosim::PistonSimula
         d["min_film_crank_deg"] = m.minFilmDeg;
         d["max_pressure_pa"] = m.maxPressure;
         d["contact_force_max_n"] = m.contactForceMax;
+        d["hard_contact_force_max_n"] = m.hardContactForceMax;
         d["side_force_max_n"] = m.sideForceMax;
     }
     // The undeformed film with the piston centred: the hot running clearance with a thermal file.

@@ -362,6 +362,8 @@ TEST(CaseFileErrors, ValidSmallCaseReadsWithDefaults) {
     EXPECT_EQ(c.time.maxStepDeg, defaults.time.maxStepDeg);
     EXPECT_EQ(c.time.tiltTolerance, defaults.time.tiltTolerance);
     EXPECT_EQ(c.coupling.maxIterations, defaults.coupling.maxIterations);
+    EXPECT_EQ(c.coupling.method, cosim::CouplingMethod::Newton);
+    EXPECT_EQ(c.contact.coatingThickness, defaults.contact.coatingThickness);
     ASSERT_EQ(c.cylinderPressure.size(), 5u);
     EXPECT_EQ(c.cylinderPressure[2].crankDeg, 360.0);
     EXPECT_EQ(c.cylinderPressure[2].pressure, 4.0e6);
@@ -479,6 +481,16 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
         AllOf(StartsWith(file + ": contact.composite_modulus"), HasSubstr("not both")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {piston_youngs_modulus: 7.5e10}"),
                 AllOf(StartsWith(file + ": contact.piston_poisson_ratio"), HasSubstr("required key missing")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {hard_contact_stiffness: 1e14, coating_thickness: 1e-5}"),
+                AllOf(StartsWith(file + ": contact.hard_contact_stiffness"), HasSubstr("not both")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {coating_thickness: 0.015}"),
+                AllOf(StartsWith(file + ": contact.coating_thickness"), HasSubstr("check the units")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {coating_poisson_ratio: 0.5}"),
+                AllOf(StartsWith(file + ": contact.coating_poisson_ratio"), HasSubstr("(-1, 0.5)")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncoupling: {method: monolithic}"),
+                AllOf(StartsWith(file + ": coupling.method"), HasSubstr("newton, partitioned")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncoupling: {method: partitioned, elastic_squeeze: true}"),
+                AllOf(StartsWith(file + ": coupling.elastic_squeeze"), HasSubstr("coupling.method: newton")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation_pressure: 2e5}"),
                 AllOf(StartsWith(file + ": lubricant.cavitation_pressure")));
     EXPECT_THAT(caseError(dir, "speed_rpm: 1000", "speed_rpm: 1000\n  pin_tdc_depth: 0.005"),
