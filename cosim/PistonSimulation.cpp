@@ -337,11 +337,11 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
         return false;
     };
     // coupling.method newton: the last accepted iterate (its measure, unknowns and residual)
-    double acceptedMeasure = std::numeric_limits<double>::infinity();
+    double acceptedMeasure = std::numeric_limits<double>::infinity(), acceptedMerit = acceptedMeasure;
     Eigen::Vector2d acceptedX = x;
     Eigen::VectorXd acceptedY = y, acceptedF;
     int backtracks = 0;
-    bool freshJacobian = false, regularize = false;
+    bool freshJacobian = false, regularize = false, revisit = false;
     for (int it = 0; it < maxIt; ++it) {
         try {
             ev = evaluate(ctx, x, y, true);
@@ -374,22 +374,43 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             Eigen::VectorXd F(2 + mp_ + ml_);
             F.head<2>() = ev.residual;
             F.tail(mp_ + ml_) = y - ev.Hy;
-            // Backtracking: a pass that made the measure worse than at the last accepted iterate
-            // halves the update from there (the film and contact laws are strongly nonlinear where
-            // the cavitated or contact set changes; the kept Jacobian may not describe them).
-            if (acceptedMeasure < std::numeric_limits<double>::infinity() && measure > acceptedMeasure &&
-                backtracks < 8) {
-                ++backtracks;
-                x = acceptedX + 0.5 * (x - acceptedX);
-                y = acceptedY + 0.5 * (y - acceptedY);
-                continue;
+            // Line search: a pass whose merit is worse than at the last accepted iterate goes back
+            // there — to linearise anew when the Jacobian was a kept one, else to halve the update
+            // (at most 5 times; the film and contact laws are strongly nonlinear where the
+            // cavitated or contact set changes). The merit of the line search: ½‖F‖² in units of the tolerances (motion rows: their
+            // residual tolerance; modal rows: the coupling tolerance over the largest film change
+            // of a unit of the mode). A Newton direction of an exact Jacobian descends on it.
+            auto merit = [&](const Eigen::VectorXd& r) {
+                if (unknownScale_.size() != r.size()) return std::numeric_limits<double>::infinity();
+                double m2 = std::pow(r[0] / (1e-4 * (ev.scale[0] + forceFloor)), 2) +
+                            std::pow(r[1] / (1e-4 * (ev.scale[1] + forceFloor * reach)), 2);
+                for (Eigen::Index j = 2; j < r.size(); ++j) m2 += std::pow(r[j] * unknownScale_[j] / couplingTol, 2);
+                return 0.5 * m2;
+            };
+            if (acceptedMerit < std::numeric_limits<double>::infinity() && merit(F) > acceptedMerit) {
+                if (!freshJacobian && !revisit) {
+                    // The kept Jacobian led astray: back to the accepted iterate, linearised anew.
+                    x = acceptedX;
+                    y = acceptedY;
+                    newtonParts_->valid = false;
+                    revisit = true;
+                    continue;
+                }
+                if (backtracks < 5) {
+                    ++backtracks;
+                    x = acceptedX + 0.5 * (x - acceptedX);
+                    y = acceptedY + 0.5 * (y - acceptedY);
+                    continue;
+                }
             }
+            revisit = false;
             const double rate = ctx.a0 / ctx.dt;
             // A new linearisation when a pass did not halve the measure (or had to backtrack with a
             // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
             // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
             if (backtracks > 0 && freshJacobian) regularize = true;  // see below
             const bool relinearize = !newtonParts_->valid || measure > 0.5 * acceptedMeasure || backtracks > 0;
+            if (!newtonParts_->valid) acceptedMeasure = std::numeric_limits<double>::infinity();
             if (relinearize) {
                 try {
                     linearizeCoupled(ctx, x, ev);
@@ -435,6 +456,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             freshJacobian = relinearize;
             backtracks = 0;
             acceptedMeasure = measure;
+            acceptedMerit = merit(F);
             acceptedX = x;
             acceptedY = y;
             acceptedF = F;
