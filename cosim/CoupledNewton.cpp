@@ -23,8 +23,13 @@
 
 #include "lube/FilmIntegrals.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 namespace flexehd::cosim {
 
@@ -194,6 +199,61 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx) {
     stats_.timings.structure += dtStructure;
     stats_.timings.modal += dtStructure;
     return J;
+}
+
+bool PistonSimulation::formCoupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                                           const Evaluation& ev, const Eigen::Vector2d& tol, int& filmSolves) {
+    Eigen::MatrixXd& J = newtonJacobian_;
+    J = coupledJacobian(ctx);
+    // The (e, β) columns by differences of full evaluations (film solve and modal response): a
+    // rigid motion moves the cavitation boundary, whose effect the held-set linearisation misses —
+    // at high sliding and squeeze speeds enough to stall Newton (docs/coupling.md §1).
+    const double fdScale = 1e-5;  // of the clearance (tilt: of the clearance over the reach)
+    for (int i = 0; i < 2; ++i) {
+        Eigen::Vector2d xp = x;
+        xp[i] += fdScale * tol[i];
+        Evaluation e2;
+        try {
+            e2 = evaluate(ctx, xp, y, true);
+        } catch (const std::runtime_error&) {
+            return false;
+        }
+        ++filmSolves;
+        J.block<2, 1>(0, i) = (e2.residual - ev.residual) / (fdScale * tol[i]);
+        J.col(i).tail(mp_ + ml_) = (ev.Hy - e2.Hy) / (fdScale * tol[i]);
+    }
+    newtonInverse_ = J.partialPivLu().inverse();
+    // Unknowns in units of the film-thickness change they cause (Broyden norm, merit, damping).
+    unknownScale_ = jacobianDh_.colwise().lpNorm<Eigen::Infinity>().transpose();
+    for (Eigen::Index j = 0; j < unknownScale_.size(); ++j)
+        unknownScale_[j] = unknownScale_[j] > 0.0 ? unknownScale_[j] : 1.0;
+    return true;
+}
+
+Eigen::VectorXd PistonSimulation::residualScale(const Evaluation& ev, double forceFloor, double reach,
+                                                double couplingTol) const {
+    const int k = 2 + mp_ + ml_;
+    Eigen::VectorXd r = Eigen::VectorXd::Ones(k);
+    r[0] = 1e-4 * (ev.scale[0] + forceFloor);
+    r[1] = 1e-4 * (ev.scale[1] + forceFloor * reach);
+    if (unknownScale_.size() == k)
+        for (int j = 2; j < k; ++j) r[j] = couplingTol / unknownScale_[j];
+    else
+        r.tail(k - 2).setConstant(std::numeric_limits<double>::quiet_NaN());  // no Jacobian yet
+    return r;
+}
+
+double PistonSimulation::coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) {
+    if (!residualScale.allFinite()) return std::numeric_limits<double>::infinity();
+    return 0.5 * F.cwiseQuotient(residualScale).squaredNorm();
+}
+
+Eigen::VectorXd PistonSimulation::levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& rScale) const {
+    const Eigen::VectorXd dzScale = case_.piston.clearance * unknownScale_.cwiseInverse();
+    const Eigen::MatrixXd Js = rScale.cwiseInverse().asDiagonal() * newtonJacobian_ * dzScale.asDiagonal();
+    Eigen::MatrixXd N = Js.transpose() * Js;
+    N.diagonal().array() += 1.0;
+    return -(dzScale.asDiagonal() * N.llt().solve(Js.transpose() * F.cwiseQuotient(rScale)));
 }
 
 }  // namespace flexehd::cosim

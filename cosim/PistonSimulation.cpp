@@ -374,20 +374,12 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             Eigen::VectorXd F(2 + mp_ + ml_);
             F.head<2>() = ev.residual;
             F.tail(mp_ + ml_) = y - ev.Hy;
-            // Line search: a pass whose merit is worse than at the last accepted iterate goes back
-            // there — to linearise anew when the Jacobian was a kept one, else to halve the update
-            // (at most 5 times; the film and contact laws are strongly nonlinear where the
-            // cavitated or contact set changes). The merit of the line search: ½‖F‖² in units of the tolerances (motion rows: their
-            // residual tolerance; modal rows: the coupling tolerance over the largest film change
-            // of a unit of the mode). A Newton direction of an exact Jacobian descends on it.
-            auto merit = [&](const Eigen::VectorXd& r) {
-                if (unknownScale_.size() != r.size()) return std::numeric_limits<double>::infinity();
-                double m2 = std::pow(r[0] / (1e-4 * (ev.scale[0] + forceFloor)), 2) +
-                            std::pow(r[1] / (1e-4 * (ev.scale[1] + forceFloor * reach)), 2);
-                for (Eigen::Index j = 2; j < r.size(); ++j) m2 += std::pow(r[j] * unknownScale_[j] / couplingTol, 2);
-                return 0.5 * m2;
-            };
-            if (acceptedMerit < std::numeric_limits<double>::infinity() && merit(F) > acceptedMerit) {
+            // Line search: a pass whose merit (coupledMerit) is worse than at the last accepted
+            // iterate goes back there — to linearise anew when the Jacobian was a kept one, else to
+            // halve the update (at most 5 times; the film and contact laws are strongly nonlinear
+            // where the cavitated or contact set changes).
+            Eigen::VectorXd rScale = residualScale(ev, forceFloor, reach, couplingTol);
+            if (acceptedMerit < std::numeric_limits<double>::infinity() && coupledMerit(F, rScale) > acceptedMerit) {
                 if (!freshJacobian && !revisit) {
                     // The kept Jacobian led astray: back to the accepted iterate, linearised anew.
                     x = acceptedX;
@@ -421,32 +413,9 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
                 ++stats_.jacobians;
             }
             if (relinearize || rate != newtonRate_) {
-                Eigen::MatrixXd& J = newtonJacobian_;
-                J = coupledJacobian(ctx);
-                // The (e, β) columns by differences of full evaluations (film solve and modal
-                // response): a rigid motion moves the cavitation boundary, whose effect the held-set
-                // linearisation misses — at high sliding and squeeze speeds enough to stall Newton.
-                const double fdScale = 1e-5;  // of the clearance (tilt: of the clearance over the reach)
-                for (int i = 0; i < 2; ++i) {
-                    Eigen::Vector2d xp = x;
-                    xp[i] += fdScale * tol[i];
-                    Evaluation e2;
-                    try {
-                        e2 = evaluate(ctx, xp, y, true);
-                    } catch (const std::runtime_error&) {
-                        return fail("a film solve of the Jacobian's difference columns failed");
-                    }
-                    ++iterations;
-                    J(0, i) = (e2.residual[0] - ev.residual[0]) / (fdScale * tol[i]);
-                    J(1, i) = (e2.residual[1] - ev.residual[1]) / (fdScale * tol[i]);
-                    J.col(i).tail(mp_ + ml_) = (ev.Hy - e2.Hy) / (fdScale * tol[i]);
-                }
-                newtonInverse_ = J.partialPivLu().inverse();
+                if (!formCoupledJacobian(ctx, x, y, ev, tol, iterations))
+                    return fail("a film solve of the Jacobian's difference columns failed");
                 newtonRate_ = rate;
-                // Unknowns in units of the film-thickness change they cause, for the Broyden norm.
-                unknownScale_ = jacobianDh_.colwise().lpNorm<Eigen::Infinity>().transpose();
-                for (Eigen::Index j = 0; j < unknownScale_.size(); ++j)
-                    unknownScale_[j] = unknownScale_[j] > 0.0 ? unknownScale_[j] : 1.0;
             } else if (acceptedF.size()) {
                 Eigen::VectorXd step(2 + mp_ + ml_);
                 step.head<2>() = x - acceptedX;
@@ -455,8 +424,9 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             }
             freshJacobian = relinearize;
             backtracks = 0;
+            rScale = residualScale(ev, forceFloor, reach, couplingTol);  // the Jacobian's unknown scales
             acceptedMeasure = measure;
-            acceptedMerit = merit(F);
+            acceptedMerit = coupledMerit(F, rScale);
             acceptedX = x;
             acceptedY = y;
             acceptedF = F;
@@ -467,16 +437,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
             // tolerances (residual) and of the clearance (film-thickness change of each unknown),
             // dz = −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, leaves such directions alone.
             if (regularize) {
-                const int kk = 2 + mp_ + ml_;
-                Eigen::VectorXd dzScale = case_.piston.clearance * unknownScale_.cwiseInverse();
-                Eigen::VectorXd rScale(kk);
-                rScale[0] = 1e-4 * (ev.scale[0] + forceFloor);
-                rScale[1] = 1e-4 * (ev.scale[1] + forceFloor * reach);
-                for (int j = 2; j < kk; ++j) rScale[j] = couplingTol / unknownScale_[j];
-                const Eigen::MatrixXd Js = rScale.cwiseInverse().asDiagonal() * newtonJacobian_ * dzScale.asDiagonal();
-                Eigen::MatrixXd N = Js.transpose() * Js;
-                N.diagonal().array() += 1.0;
-                dz = -(dzScale.asDiagonal() * N.llt().solve(Js.transpose() * F.cwiseQuotient(rScale)));
+                dz = levenbergMarquardtStep(F, rScale);
             } else {
                 dz = -newtonInverse_ * F;
             }

@@ -128,6 +128,17 @@ private:
     /// evaluation into the parts of CoupledJacobianParts (CoupledNewton.cpp, docs/coupling.md §1, §3)
     void linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
     void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
+    /// Forms the coupled Jacobian at the context's step size (its (e, β) columns by differences of
+    /// two full evaluations, counted in filmSolves) and its inverse; false if a film solve failed.
+    bool formCoupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                             const Evaluation& ev, const Eigen::Vector2d& tol, int& filmSolves);
+    /// The tolerance of each residual row: motion rows 1e-4 (scale + force floor), modal rows the
+    /// coupling tolerance over the largest film change of a unit of the mode.
+    Eigen::VectorXd residualScale(const Evaluation& ev, double forceFloor, double reach, double couplingTol) const;
+    /// The line search's merit ½‖F / residualScale‖² (∞ before the first Jacobian).
+    static double coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale);
+    /// −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, residual in tolerance units, unknowns in clearances of film change.
+    Eigen::VectorXd levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) const;
     /// The Jacobian at the context's step size from the last linearisation's parts.
     Eigen::MatrixXd coupledJacobian(const Context& ctx);
     /// Contact pressure at the film thickness h (unfloored): Greenwood–Tripp asperity pressure of
