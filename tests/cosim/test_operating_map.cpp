@@ -18,11 +18,14 @@
 //    whole contact force.
 #include "cosim/CycleMetrics.hpp"
 #include "cosim/PistonSimulation.hpp"
+#include "CliRunner.hpp"
 #include "SmallEngineCase.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <unistd.h>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -109,4 +112,38 @@ TEST(OperatingMap, RigidRunsConvergeWithPhysicalTrends) {
         EXPECT_GT(full.firingSlap, part.firingSlap) << speeds[i] << " rpm";
     }
     EXPECT_GE(gasDriven, 2);  // the check above must have run
+}
+
+// The same map with the small flexible piston (SmallEngineCase's coarse 12 × 40 grid, 8 modes,
+// coupling.method newton): every point must run its cycle; friction work per cycle rises with
+// speed at each load. Disabled while the coupled step stalls at 4000 rpm and above (part load,
+// the expansion stroke; docs/coupling.md §1 "Where it still fails"): this is its acceptance test.
+TEST(OperatingMap, DISABLED_FlexiblePistonRunsConverge) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("flexehd_map_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string file = (dir / "piston.h5").string();
+    const auto red = test::reduceSmallPiston(file);
+    ASSERT_EQ(red.status, 0) << red.err;
+    const std::vector<double> speeds{1000, 4000, 7000};
+    for (const Load load : {Load::Part, Load::Full}) {
+        double previous = 0.0;
+        for (const double rpm : speeds) {
+            EngineCase c = mapCase(rpm, load);
+            c.grid = {12, 40};
+            c.pistonBody = test::smallFlexibleCase(file).pistonBody;
+            PistonSimulation sim(c);
+            std::vector<StepRecord> steps;
+            try {
+                steps = sim.run();
+            } catch (const std::exception& e) {
+                FAIL() << (load == Load::Part ? "part" : "full") << " load at " << rpm << " rpm: " << e.what();
+            }
+            const double volume = 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
+            const CycleMetrics m = cycleMetrics(steps, sim.dynamics(), volume);
+            EXPECT_GT(m.frictionEnergy, previous) << rpm << " rpm";
+            previous = m.frictionEnergy;
+        }
+    }
+    std::filesystem::remove_all(dir);
 }
