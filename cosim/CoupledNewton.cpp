@@ -8,15 +8,17 @@
 //                                                            the rigid one, or the whole one with
 //                                                            coupling.elastic_squeeze)
 //
-// Column j of the Jacobian follows from δh_j (∂h/∂z_j: the rigid thickness's derivative, or the
-// film-change shape Ψ_j) and δḣ_j = (a0/Δt) δh_s,j: δp_j from the film's linearisation with its
-// cavitated set held (lube::FilmLinearization — a generalized Jacobian of the semismooth
-// equation), δp_c,j = p_c'(h) δh_j, then the film action by a small difference of the (affine in p,
-// smooth in h) film integrals, and the modal response of the mapped δp_j + δp_c,j.
+// The modal column j follows from the film-change shape Ψ_j and, with the elastic rate,
+// δḣ_j = (a0/Δt) Ψ_j: δp_j from the film's linearisation with its cavitated set held
+// (lube::FilmLinearization — a generalized Jacobian of the semismooth equation),
+// δp_c,j = p_c'(h) Ψ_j, then the film action by a small difference of the (affine in p, smooth in
+// h) film integrals, and the modal response of the mapped δp_j + δp_c,j. The (e, β) columns are
+// differences of two full evaluations (formCoupledJacobian): a rigid motion moves the cavitation
+// boundary, which the held set misses.
 //
-// At a linearisation point the Jacobian is affine in the rate r = a0/Δt, up to the motion's
-// M r² and the dynamic response's step matrix S(r):
-//   δp_j = δp_j^h + r δp_j^ḣ,   R_x rows = A_x + r B_x + r² M,   R_y rows = I − S(r)⁻¹ (F^h + r F^ḣ).
+// At a linearisation point the modal columns are affine in the rate r = a0/Δt, up to the dynamic
+// response's step matrix S(r):
+//   δp_j = δp_j^h + r δp_j^ḣ,   R_x rows = A_x + r B_x,   R_y rows = I − S(r)⁻¹ (F^h + r F^ḣ).
 // The parts are kept (CoupledJacobianParts) and the Jacobian is re-formed for a new step size
 // without a new linearisation — a step-size change alone costs a dense refactorization.
 #include "cosim/PistonSimulationState.hpp"
@@ -68,16 +70,17 @@ void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2
         Dh.rightCols(ml_) = psiLiner_;
         psiLinerOffset_ = ctx.offset;
     }
-    // The film sees the floored thickness: no δh where the floor holds; the rate sees the
-    // unfloored one (and only its rigid part without coupling.elastic_squeeze).
-    Eigen::MatrixXd floored;
+    // The parts hold the modal columns only: formCoupledJacobian takes the (e, β) columns by
+    // differences of full evaluations. The film sees the floored thickness (no δh where the floor
+    // holds); the rate sees the unfloored one, and the modes only with coupling.elastic_squeeze.
+    const Eigen::MatrixXd Psi = Dh.rightCols(m);
+    Eigen::MatrixXd flooredPsi;
     if (ev.floored > 0) {
-        floored = Dh;
+        flooredPsi = Psi;
         for (int r = 0; r < n; ++r)
-            if (ev.h[r] != ev.hTotal[r]) floored.row(r).setZero();
+            if (ev.h[r] != ev.hTotal[r]) flooredPsi.row(r).setZero();
     }
-    const Eigen::MatrixXd& DhFilm = ev.floored > 0 ? floored : Dh;
-    const int rateCols = elasticRate ? k : 2;
+    const Eigen::MatrixXd& PsiFilm = ev.floored > 0 ? flooredPsi : Psi;
 
     // δp from the film's linearisation at the evaluation's solution: the thickness part and the
     // rate part (per unit rate) apart.
@@ -93,26 +96,24 @@ void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2
     }
     linearization_->linearize(fs, rho, eta, ev.p, case_.lubricant.cavitationPressure);
     CoupledJacobianParts& P = *newtonParts_;
-    Eigen::MatrixXd dPh = linearization_->pressureChange(DhFilm, Eigen::MatrixXd());
-    const Eigen::MatrixXd dPrate = linearization_->pressureChange(Eigen::MatrixXd(), Dh.leftCols(rateCols), 1.0);
-    // Asperity (and hard-contact) pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on
-    // the nodes in contact, added into dPh (the load is p + p_c).
-    if (contact_) {
-        for (int r = 0; r < n; ++r) {
-            if (g.kind(r) == lube::NodeKind::Void) continue;
-            const double slope = contactSlope(ev.hTotal[r]);
-            if (slope == 0.0) continue;
-            dPh.row(r) += slope * Dh.row(r);
-        }
-    }
+    const Eigen::MatrixXd dPh = linearization_->pressureChange(PsiFilm, Eigen::MatrixXd());
+    const Eigen::MatrixXd dPrate =
+        elasticRate ? linearization_->pressureChange(Eigen::MatrixXd(), Psi, 1.0) : Eigen::MatrixXd(n, 0);
+    // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
+    // (the load is p + p_c); its slope once per node.
+    Eigen::VectorXd slope = Eigen::VectorXd::Zero(n);
+    if (contact_)
+        for (int r = 0; r < n; ++r)
+            if (g.kind(r) != lube::NodeKind::Void) slope[r] = contactSlope(ev.hTotal[r]);
+    const Eigen::MatrixXd dPc = slope.asDiagonal() * Psi;
     stats_.timings.film += seconds(t0);
     t0 = Clock::now();
 
-    // Motion rows: −∂f/∂z through the film action, each column by a small difference of the film
+    // Motion rows: −∂f/∂y through the film action, each column by a small difference of the film
     // integrals (affine in p, smooth in h), the friction's change included (at high sliding speed
     // its moment about the pin is a large part of the motion's dependence on the deformation).
-    P.motionH.setZero(2, k);
-    P.motionRate.setZero(2, k);
+    P.motionH.setZero(2, m);
+    P.motionRate.setZero(2, dPrate.cols());
     lube::FilmIntegralOptions io;
     io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
     io.cavitationPressure = case_.lubricant.cavitationPressure;
@@ -126,39 +127,32 @@ void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2
     };
     lube::FilmState fj = fs;
     Eigen::VectorXd pj, pcj;
-    for (int j = 0; j < k; ++j) {
-        const double size = Dh.col(j).cwiseAbs().maxCoeff();
+    for (int j = 0; j < m; ++j) {
+        const double size = Psi.col(j).cwiseAbs().maxCoeff();
         if (!(size > 0.0)) continue;  // a mode without film-thickness change on the grid
         // A step of 1e-6 clearance in h: the integrals' curvature (friction ∝ 1/h) stays below it.
         const double s = 1e-6 * case_.piston.clearance / size;
-        fj.h = fs.h + s * DhFilm.col(j);
-        pcj = ev.pc;
+        fj.h = fs.h + s * PsiFilm.col(j);
+        pcj = ev.pc + s * dPc.col(j);
         pj = ev.p + s * dPh.col(j);
-        if (contact_)  // dPh holds p_c's change too: keep it apart
-            for (int r = 0; r < n; ++r) {
-                if (g.kind(r) == lube::NodeKind::Void) continue;
-                const double slope = contactSlope(ev.hTotal[r]);
-                if (slope == 0.0) continue;
-                pcj[r] += s * slope * Dh(r, j);
-                pj[r] -= s * slope * Dh(r, j);
-            }
         P.motionH.col(j) = -(motionForce(fj, pj, pcj) - f0) / s;
-        if (j < rateCols) {
+        if (elasticRate) {
             fj.h = fs.h;
             pj = ev.p + s * dPrate.col(j);
             P.motionRate.col(j) = -(motionForce(fj, pj, ev.pc) - f0) / s;
         }
     }
 
-    // Modal rows: the modal forces of the mapped δp (the response is applied when the Jacobian is
-    // formed: it depends on the step size with bodies.response: dynamic).
+    // Modal rows: the modal forces of the mapped δp + δp_c (the response is applied when the
+    // Jacobian is formed: it depends on the step size with bodies.response: dynamic).
+    const Eigen::MatrixXd dLoad = dPh + dPc;
     if (piston_) {
-        piston_->modalForces(dPh, 0.0, P.pistonH);
-        piston_->modalForces(dPrate, 0.0, P.pistonRate);
+        piston_->modalForces(dLoad, 0.0, P.pistonH);
+        if (elasticRate) piston_->modalForces(dPrate, 0.0, P.pistonRate);
     }
     if (liner_) {
-        liner_->modalForces(dPh, ctx.offset, P.linerH);
-        liner_->modalForces(dPrate, ctx.offset, P.linerRate);
+        liner_->modalForces(dLoad, ctx.offset, P.linerH);
+        if (elasticRate) liner_->modalForces(dPrate, ctx.offset, P.linerRate);
     }
     P.valid = true;
     const double dtStructure = seconds(t0);
@@ -171,25 +165,26 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx) {
     const CoupledJacobianParts& P = *newtonParts_;
     const int m = mp_ + ml_, k = 2 + m;
     const double rate = ctx.a0 / ctx.dt;
+    const bool elasticRate = case_.coupling.elasticSqueeze;
+    // The modal columns; the (e, β) columns are formCoupledJacobian's.
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, k);
-    J.topRows(2) = P.motionH + rate * P.motionRate;
-    J.topLeftCorner<2, 2>() += dyn_.mass(ctx.crank) * (rate * rate);
-    // Modal rows: δ_ij − ∂H/∂z_j, H linear in the mapped pressure (history terms held).
+    J.topRightCorner(2, m) = elasticRate ? Eigen::MatrixXd(P.motionH + rate * P.motionRate) : P.motionH;
+    // Modal rows: δ_ij − ∂H/∂y_j, H linear in the mapped pressure (history terms held).
     auto respond = [&](const Eigen::MatrixXd& Fh, const Eigen::MatrixXd& Fr, const FlexibleSurface& body,
                        modal::HeldModalDynamics* dynamics, int row, int rows) {
         Eigen::MatrixXd F = Fh;
-        F.leftCols(Fr.cols()) += rate * Fr;
+        if (elasticRate) F += rate * Fr;
         if (dynamics) {
             const Eigen::VectorXd zero = Eigen::VectorXd::Zero(rows);
             Eigen::VectorXd q;
-            for (int j = 0; j < k; ++j) {
+            for (int j = 0; j < m; ++j) {
                 dynamics->respond(F.col(j), zero, zero, q);
-                J.block(row, j, rows, 1) = -q;
+                J.block(row, 2 + j, rows, 1) = -q;
             }
         } else {
             Eigen::MatrixXd Q;
             body.quasiStatic(F, Q);
-            J.middleRows(row, rows) = -Q;
+            J.block(row, 2, rows, m) = -Q;
         }
     };
     if (piston_) respond(P.pistonH, P.pistonRate, *piston_, pistonDynamics_.get(), 2, mp_);

@@ -39,15 +39,15 @@ struct PistonSimulation::Evaluation {
     int floored = 0;
 };
 
-// The coupled Newton method's Jacobian at one linearisation, affine in the rate r = a0/Δt
-// (CoupledNewton.cpp): motion rows motionH + r motionRate (+ M r²), modal rows
-// I − response(forcesH + r forcesRate) per body (the rate parts have 2 columns without
-// coupling.elastic_squeeze, 2 + modes with it).
+// The modal columns of the coupled Newton method's Jacobian at one linearisation, affine in the
+// rate r = a0/Δt (CoupledNewton.cpp): motion rows motionH + r motionRate, modal rows
+// I − response(forcesH + r forcesRate) per body; the rate parts are empty without
+// coupling.elastic_squeeze.
 struct PistonSimulation::CoupledJacobianParts {
     bool valid = false;
-    Eigen::MatrixXd motionH, motionRate;    // 2 × (2 + modes)
-    Eigen::MatrixXd pistonH, pistonRate;    // piston modes × columns
-    Eigen::MatrixXd linerH, linerRate;      // liner modes × columns
+    Eigen::MatrixXd motionH, motionRate;    // 2 × modes
+    Eigen::MatrixXd pistonH, pistonRate;    // piston modes × modes
+    Eigen::MatrixXd linerH, linerRate;      // liner modes × modes
 };
 
 }  // namespace flexehd::cosim

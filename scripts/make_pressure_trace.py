@@ -155,6 +155,9 @@ def main():
                     help="Pa, absolute intake manifold pressure (default 0.7e5: part load; 1.0e5: full load)")
     ap.add_argument("--motored", action="store_true", help="no combustion (compression and expansion only)")
     args = ap.parse_args()
+    if not (1e4 <= args.intake_pressure <= 5e5):
+        ap.error("--intake-pressure: expected an absolute pressure between 1e4 and 5e5 Pa, got %g"
+                 % args.intake_pressure)
     P_INTAKE = args.intake_pressure
     if args.motored:
         ETA = 0.0
