@@ -1,0 +1,129 @@
+#include "lube/FilmLoadGradient.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "lube/ReynoldsSystem.hpp"
+
+namespace flexehd::lube {
+
+namespace {
+
+// One node's force sensitivity f (N per unit) applied at r: the six load rows.
+void add(FilmLoadGradient::Rows& G, int col, const Eigen::Vector3d& f, const Eigen::Vector3d& lever) {
+    G.col(col).head<3>() += f;
+    G.col(col).tail<3>() += lever.cross(f);
+}
+
+// The weights of the 3-point derivative of FilmIntegrals.cpp on the stencil (m, 0, p).
+struct Stencil {
+    int m, o, p;
+    double wm, wo, wp;
+};
+
+Stencil axialStencil(const FilmGrid& g, int i, int j) {
+    const int nz = g.nAxial();
+    const int k = g.index(i, j);
+    if (i == 0) {
+        const double d = g.z(1) - g.z(0);
+        return {k, k, g.index(1, j), 0.0, -1.0 / d, 1.0 / d};
+    }
+    if (i == nz - 1) {
+        const double d = g.z(i) - g.z(i - 1);
+        return {g.index(i - 1, j), k, k, -1.0 / d, 1.0 / d, 0.0};
+    }
+    const double dm = g.z(i) - g.z(i - 1), dp = g.z(i + 1) - g.z(i), s = dm + dp;
+    return {g.index(i - 1, j), k, g.index(i + 1, j), -(dp / dm) / s, (dp / dm - dm / dp) / s, (dm / dp) / s};
+}
+
+Stencil circumferentialStencil(const FilmGrid& g, int i, int j) {
+    const int nt = g.nTheta();
+    const int k = g.index(i, j);
+    const double ds = g.radius() * g.dTheta();
+    if (g.periodic())
+        return {g.index(i, (j + nt - 1) % nt), k, g.index(i, (j + 1) % nt), -0.5 / ds, 0.0, 0.5 / ds};
+    if (j == 0) return {k, k, g.index(i, 1), 0.0, -1.0 / ds, 1.0 / ds};
+    if (j == nt - 1) return {g.index(i, j - 1), k, k, -1.0 / ds, 1.0 / ds, 0.0};
+    return {g.index(i, j - 1), k, g.index(i, j + 1), -0.5 / ds, 0.0, 0.5 / ds};
+}
+
+}  // namespace
+
+Eigen::MatrixXd FilmLoadGradient::change(const Eigen::MatrixXd& dp, const Eigen::MatrixXd& dh,
+                                         const Eigen::MatrixXd& dpc) const {
+    const Eigen::Index cols = std::max({dp.cols(), dh.cols(), dpc.cols()});
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(6, cols);
+    if (dp.cols()) out.noalias() += pressure * dp;
+    if (dh.cols()) out.noalias() += thickness * dh;
+    if (dpc.cols()) out.noalias() += contactPressure * dpc;
+    return out;
+}
+
+FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, const Lubricant& lub,
+                                  const Eigen::VectorXd& p, const FilmIntegralOptions& opt) {
+    validateFilmState(g, film);
+    const int n = g.size(), nz = g.nAxial(), nt = g.nTheta();
+    if (p.size() != n)
+        throw std::invalid_argument("filmLoadGradient: pressure has " + std::to_string(p.size()) +
+                                    " values, grid has " + std::to_string(n));
+    if (opt.filmFraction && opt.filmFraction->size() != n)
+        throw std::invalid_argument("filmLoadGradient: film fraction has " +
+                                    std::to_string(opt.filmFraction->size()) + " values, grid has " +
+                                    std::to_string(n));
+    const double R = g.radius(), pAmb = g.ambientPressure();
+    const double dVz = film.outer.axial - film.inner.axial;
+    const double dVt = film.outer.circumferential - film.inner.circumferential;
+    const double dV = std::hypot(dVz, dVt);
+    FilmLoadGradient G;
+    G.pressure.setZero(6, n);
+    G.thickness.setZero(6, n);
+    G.contactPressure.setZero(6, n);
+    for (int i = 0; i < nz; ++i) {
+        for (int j = 0; j < nt; ++j) {
+            const int k = g.index(i, j);
+            if (g.kind(k) == NodeKind::Void) continue;
+            const double A = g.area(k);
+            const double th = g.theta(j), c = std::cos(th), s = std::sin(th);
+            const Eigen::Vector3d er(c, s, 0.0), et(-s, c, 0.0), ez(0.0, 0.0, 1.0);
+            const Eigen::Vector3d lever = Eigen::Vector3d(R * c, R * s, g.z(i)) - opt.referencePoint;
+            const double h = film.h[k];
+            const Stencil sz = axialStencil(g, i, j), st = circumferentialStencil(g, i, j);
+            const double dpdz = sz.wm * p[sz.m] + sz.wo * p[sz.o] + sz.wp * p[sz.p];
+            const double dpdy = st.wm * p[st.m] + st.wo * p[st.o] + st.wp * p[st.p];
+            const double phi = opt.filmFraction ? (*opt.filmFraction)[k] : 1.0;
+            const double pk = p[k] - pAmb;
+            const double eta = lub.viscosity(pk);
+            // Shear τ = φη(p)U/h − (h/2)∇p (FilmIntegrals.hpp); the viscosity's slope by a central
+            // difference (zero for a constant viscosity).
+            const double dp = 1e-6 * std::max(std::abs(pk), 1e5);
+            const double detaDp = (lub.viscosity(pk + dp) - lub.viscosity(pk - dp)) / (2.0 * dp);
+            // ∂/∂p_k: the pressure force, and the Couette shear through η(p_k).
+            add(G.pressure, k, -A * er + (phi * detaDp / h) * A * (dVz * ez + dVt * et), lever);
+            // ∂/∂p at the stencil nodes: −(h/2)∇p.
+            const Stencil* stencils[2] = {&sz, &st};
+            const Eigen::Vector3d dirs[2] = {ez, et};
+            for (int d = 0; d < 2; ++d) {
+                const Stencil& q = *stencils[d];
+                const Eigen::Vector3d f = -0.5 * h * A * dirs[d];
+                add(G.pressure, q.m, q.wm * f, lever);
+                add(G.pressure, q.o, q.wo * f, lever);
+                add(G.pressure, q.p, q.wp * f, lever);
+            }
+            // ∂/∂h_k: −φηU/h² − ∇p/2.
+            const double couette = -phi * eta / (h * h);
+            add(G.thickness, k, A * ((couette * dVz - 0.5 * dpdz) * ez + (couette * dVt - 0.5 * dpdy) * et), lever);
+            // ∂/∂p_c,k: the contact force and the boundary friction μ_b p_c (V/|V|).
+            Eigen::Vector3d fc = -A * er;
+            if (dV > 0.0) fc += opt.boundaryFriction * A / dV * (dVz * ez + dVt * et);
+            add(G.contactPressure, k, fc, lever);
+        }
+    }
+    return G;
+}
+
+}  // namespace flexehd::lube

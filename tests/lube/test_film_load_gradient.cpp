@@ -1,0 +1,108 @@
+// FilmLoadGradient (the load's derivatives with respect to nodal pressure, film thickness and
+// contact pressure) against central differences of integrateFilm itself, in random directions:
+// a non-periodic arc with a non-uniform axial grid, masked nodes, pressure-dependent viscosity,
+// film fraction, contact pressure and boundary friction, and a periodic full circle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "lube/FilmLoadGradient.hpp"
+#include "tests/lube/LubeTestSupport.hpp"
+
+using namespace flexehd::lube;
+using flexehd::lube::test::kPi;
+
+namespace {
+
+Eigen::Matrix<double, 6, 1> load(const FilmGrid& g, const FilmState& f, const Lubricant& lub,
+                                 const Eigen::VectorXd& p, FilmIntegralOptions opt, const Eigen::VectorXd& pc) {
+    opt.contactPressure = &pc;
+    const FilmLoads L = integrateFilm(g, f, lub, p, opt);
+    Eigen::Matrix<double, 6, 1> out;
+    out << L.totalForce(), L.moment;
+    return out;
+}
+
+// max over the six rows of |G δ − FD δ| relative to the largest |FD δ| row of its kind (force, moment).
+void expectMatchesDifferences(const FilmGrid& g, const FilmState& f, const Lubricant& lub, const Eigen::VectorXd& p,
+                              const FilmIntegralOptions& opt, const Eigen::VectorXd& pc, unsigned seed) {
+    const int n = g.size();
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Eigen::VectorXd dp(n), dh(n), dc(n);
+    for (int k = 0; k < n; ++k) {
+        dp[k] = 1e5 * u(rng);
+        dh[k] = 1e-6 * u(rng);
+        dc[k] = 1e4 * u(rng);
+    }
+    const FilmLoadGradient G = filmLoadGradient(g, f, lub, p, opt);
+    const double s = 1e-3;  // of the directions above: δh ≤ 1 nm, δp ≤ 100 Pa (differences: truncation
+                            // ~(δh/h)² ≤ 1e-8, round-off of the large pressure load below 1e-9)
+    FilmState fp = f, fm = f;
+    fp.h += s * dh;
+    fm.h -= s * dh;
+    const Eigen::Matrix<double, 6, 1> fd =
+        (load(g, fp, lub, p + s * dp, opt, pc + s * dc) - load(g, fm, lub, p - s * dp, opt, pc - s * dc)) / (2 * s);
+    const Eigen::VectorXd lin = G.change(dp, dh, dc);
+    const double fScale = fd.head<3>().cwiseAbs().maxCoeff(), mScale = fd.tail<3>().cwiseAbs().maxCoeff();
+    ASSERT_GT(fScale, 0.0);
+    ASSERT_GT(mScale, 0.0);
+    for (int r = 0; r < 6; ++r)
+        EXPECT_NEAR(lin[r], fd[r], 1e-7 * (r < 3 ? fScale : mScale)) << "row " << r;
+    // Each kind of direction alone (the parts are separate).
+    const Eigen::VectorXd onlyH = G.change(Eigen::MatrixXd(), dh, Eigen::MatrixXd());
+    const Eigen::Matrix<double, 6, 1> fdH = (load(g, fp, lub, p, opt, pc) - load(g, fm, lub, p, opt, pc)) / (2 * s);
+    for (int r = 0; r < 6; ++r)
+        EXPECT_NEAR(onlyH[r], fdH[r], 1e-7 * std::max(fdH.cwiseAbs().maxCoeff(), 1e-30)) << "thickness part, row " << r;
+}
+
+}  // namespace
+
+TEST(FilmLoadGradient, MatchesDifferencesOfTheIntegralsOnAMaskedArc) {
+    std::vector<double> z;
+    for (int i = 0; i < 13; ++i) z.push_back(-0.02 + 0.04 * std::pow(i / 12.0, 1.3));  // non-uniform
+    FilmGrid g = FilmGrid::arc(0.043, z, -0.7, 0.7, 21);
+    g.setAmbientPressure(1e5);
+    g.voidNode(g.index(6, 10));
+    g.voidNode(g.index(0, 3));
+    const int n = g.size();
+    FilmState f;
+    f.h.resize(n);
+    Eigen::VectorXd p(n), pc(n), phi(n);
+    for (int k = 0; k < n; ++k) {
+        const double th = g.theta(g.thetaIndex(k)), zz = g.z(g.axialIndex(k));
+        f.h[k] = 5e-6 + 20e-6 * (1.0 - std::cos(th)) + 0.01 * zz * zz;
+        p[k] = 1e5 + 2e6 * std::exp(-th * th * 4.0) * (1.0 + 10.0 * zz);
+        pc[k] = 3e5 * std::max(0.0, std::cos(3 * th));
+        phi[k] = 0.6 + 0.4 * std::cos(th + 0.3);
+    }
+    f.inner.axial = 0.5;
+    f.outer.axial = -12.0;
+    f.outer.circumferential = 0.7;
+    FilmIntegralOptions opt;
+    opt.referencePoint = Eigen::Vector3d(0.001, 0.0, 0.004);
+    opt.boundaryFriction = 0.12;
+    opt.filmFraction = &phi;
+    expectMatchesDifferences(g, f, Lubricant(0.0086, 820.0).withBarus(1.5e-8), p, opt, pc, 7u);
+}
+
+TEST(FilmLoadGradient, MatchesDifferencesOfTheIntegralsOnAFullCircle) {
+    flexehd::lube::test::Journal jb;
+    const FilmGrid g = jb.finiteGrid(2 * jb.R, 31, 9);
+    FilmState f = jb.state(g);
+    const int n = g.size();
+    Eigen::VectorXd p(n), pc = Eigen::VectorXd::Zero(n);
+    for (int k = 0; k < n; ++k) {
+        const double th = g.theta(g.thetaIndex(k)), zz = g.z(g.axialIndex(k)) / jb.R;
+        p[k] = std::max(0.0, 1e6 * std::sin(th) * (1.0 - zz * zz));
+    }
+    FilmIntegralOptions opt;
+    expectMatchesDifferences(g, f, Lubricant(0.01, 850.0), p, opt, pc, 11u);
+}
+
+TEST(FilmLoadGradient, RejectsAPressureOfTheWrongSize) {
+    flexehd::lube::test::Journal jb;
+    const FilmGrid g = jb.finiteGrid(2 * jb.R, 8, 4);
+    EXPECT_THROW(filmLoadGradient(g, jb.state(g), Lubricant(0.01), Eigen::VectorXd::Zero(3)), std::invalid_argument);
+}
