@@ -752,7 +752,10 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
                                   : CouplingAcceleration::Aitken;
     c.coupling.method = choice(coupling, "method", {"newton", "partitioned"}, 0) == 0 ? CouplingMethod::Newton
                                                                                       : CouplingMethod::Partitioned;
-    c.coupling.elasticSqueeze = boolean(coupling, "elastic_squeeze", c.coupling.elasticSqueeze);
+    // Default: the whole film thickness's rate with the Newton method (the partitioned iteration
+    // cannot carry it; docs/coupling.md section 3).
+    c.coupling.elasticSqueeze =
+        boolean(coupling, "elastic_squeeze", c.coupling.method == CouplingMethod::Newton);
     if (c.coupling.elasticSqueeze && c.coupling.method == CouplingMethod::Partitioned)
         coupling.fail("elastic_squeeze",
                       "the elastic deformation rate in the squeeze term needs coupling.method: newton (the partitioned "

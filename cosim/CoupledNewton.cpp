@@ -24,6 +24,7 @@
 #include "cosim/PistonSimulationState.hpp"
 
 #include "lube/FilmIntegrals.hpp"
+#include "lube/FilmLoadGradient.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -109,39 +110,25 @@ void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2
     stats_.timings.film += seconds(t0);
     t0 = Clock::now();
 
-    // Motion rows: −∂f/∂y through the film action, each column by a small difference of the film
-    // integrals (affine in p, smooth in h), the friction's change included (at high sliding speed
-    // its moment about the pin is a large part of the motion's dependence on the deformation).
-    P.motionH.setZero(2, m);
-    P.motionRate.setZero(2, dPrate.cols());
+    // Motion rows: −∂f/∂y through the film action — the load's gradient in (p, h, p_c) applied to
+    // all modal columns at once (lube::FilmLoadGradient), the friction's change included (at high
+    // sliding speed its moment about the pin is a large part of the motion's dependence on the
+    // deformation); f is affine in the action (F_x, F_z, M_y).
     lube::FilmIntegralOptions io;
     io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
     io.cavitationPressure = case_.lubricant.cavitationPressure;
     io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
-    const Eigen::Vector2d f0 = dyn_.force(ctx.crank, ctx.gas, ev.action);
-    auto motionForce = [&](const lube::FilmState& f, const Eigen::VectorXd& p, const Eigen::VectorXd& pc) {
-        io.contactPressure = contact_ ? &pc : nullptr;
-        const lube::FilmLoads loads = lube::integrateFilm(g, f, lub, p, io);
-        const Eigen::Vector3d F = loads.totalForce();
-        return Eigen::Vector2d(dyn_.force(ctx.crank, ctx.gas, FilmAction{F.x(), F.z(), loads.moment.y()}));
-    };
-    lube::FilmState fj = fs;
-    Eigen::VectorXd pj, pcj;
-    for (int j = 0; j < m; ++j) {
-        const double size = Psi.col(j).cwiseAbs().maxCoeff();
-        if (!(size > 0.0)) continue;  // a mode without film-thickness change on the grid
-        // A step of 1e-6 clearance in h: the integrals' curvature (friction ∝ 1/h) stays below it.
-        const double s = 1e-6 * case_.piston.clearance / size;
-        fj.h = fs.h + s * PsiFilm.col(j);
-        pcj = ev.pc + s * dPc.col(j);
-        pj = ev.p + s * dPh.col(j);
-        P.motionH.col(j) = -(motionForce(fj, pj, pcj) - f0) / s;
-        if (elasticRate) {
-            fj.h = fs.h;
-            pj = ev.p + s * dPrate.col(j);
-            P.motionRate.col(j) = -(motionForce(fj, pj, ev.pc) - f0) / s;
-        }
+    const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, ev.p, io);
+    Eigen::Matrix<double, 2, 6> dForce = Eigen::Matrix<double, 2, 6>::Zero();  // ∂f/∂(F, M)
+    {
+        const Eigen::Vector2d f0 = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 0.0});
+        dForce.col(0) = dyn_.force(ctx.crank, ctx.gas, FilmAction{1.0, 0.0, 0.0}) - f0;
+        dForce.col(2) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 1.0, 0.0}) - f0;
+        dForce.col(4) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 1.0}) - f0;
     }
+    P.motionH = -dForce * G.change(dPh, PsiFilm, contact_ ? dPc : Eigen::MatrixXd());
+    P.motionRate = elasticRate ? Eigen::MatrixXd(-dForce * G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd()))
+                               : Eigen::MatrixXd(2, 0);
 
     // Modal rows: the modal forces of the mapped δp + δp_c (the response is applied when the
     // Jacobian is formed: it depends on the step size with bodies.response: dynamic).
@@ -222,6 +209,13 @@ bool PistonSimulation::formCoupledJacobian(const Context& ctx, const Eigen::Vect
     unknownScale_ = jacobianDh_.colwise().lpNorm<Eigen::Infinity>().transpose();
     for (Eigen::Index j = 0; j < unknownScale_.size(); ++j)
         unknownScale_[j] = unknownScale_[j] > 0.0 ? unknownScale_[j] : 1.0;
+    // Without the elastic rate the quasi-static modal rows are algebraic: where the film's
+    // stiffness on a combination of modes exceeds the structure's (det(I − ∂H/∂y) < 0), the skirt's
+    // equilibrium in the film has folded away (docs/coupling.md §3); noted for the diagnosis.
+    if (!case_.coupling.elasticSqueeze && !pistonDynamics_ && !linerDynamics_ && mp_ + ml_ > 0) {
+        const int m = mp_ + ml_;
+        if (Eigen::MatrixXd(J.bottomRightCorner(m, m)).partialPivLu().determinant() < 0.0) ++foldedJacobians_;
+    }
     return true;
 }
 

@@ -121,10 +121,11 @@ struct CouplingSpec {
     CouplingMethod method = CouplingMethod::Newton;
     ElasticResponse response = ElasticResponse::QuasiStatic;
     /// coupling.elastic_squeeze: the squeeze term ∂h/∂t includes the elastic deformation rate
-    /// (GUIDE eq. 1 in full); the step is then solved by semismooth Newton on the motion and the
+    /// (the seed's eq. 1 in full, the default); the step is then solved by semismooth Newton on the motion and the
     /// modal coordinates together with the film's exact linearisation (docs/coupling.md §3);
-    /// needs method Newton. Off: ∂h/∂t of the rigid film only.
-    bool elasticSqueeze = false;
+    /// needs method Newton. Off: ∂h/∂t of the rigid film only (the quasi-static skirt may then lose
+    /// its equilibrium in the film at high speed, docs/coupling.md §1).
+    bool elasticSqueeze = true;
 };
 
 struct OutputSpec {

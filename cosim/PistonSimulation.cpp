@@ -66,6 +66,10 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
       solver_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::Multigrid)),
       fallback_(film_.grid(), makeLubricant(c.lubricant), makeOptions(c.lubricant, lube::SolverKind::ActiveSet)) {
     const auto t0 = Clock::now();
+    if (c.coupling.elasticSqueeze && c.coupling.method == CouplingMethod::Partitioned)
+        throw std::invalid_argument(
+            "coupling: the elastic deformation rate in the squeeze term needs coupling.method: newton; set "
+            "coupling.elastic_squeeze: false for the partitioned iteration (docs/coupling.md section 3)");
     if (c.contact.compositeModulus > 0.0) {
         contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
         foundation_.emplace(c.contact.hardContactStiffness > 0.0
@@ -315,7 +319,11 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
         if (linerDynamics_) linerDynamics_->setStep(ctx.a0, dt);
     }
     Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
+    // The modal coordinates start from their linear extrapolation over the last step (at high
+    // speed y moves by hundreds of coupling tolerances per step; from y_n the first Newton passes
+    // go through the strongly nonlinear film law).
     Eigen::VectorXd y = s.y;
+    if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.dt / s.dt) * (s.y - prev.y);
     const bool flexible = piston_ || liner_;
     CouplingAccelerator acc(case_.coupling.acceleration);
     // Newton tolerances and finite-difference steps from the clearance c: 1e-5 c on the
@@ -648,14 +656,22 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
                 ++stats_.rejectedSteps;
                 dtDeg = ok ? step * std::max(0.2, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 0.25 * step;
                 if (dtDeg < T.minStepDeg) {
+                    // A folded quasi-static equilibrium is no matter of step size or iterations.
+                    const std::string advice =
+                        !ok && foldedJacobians_ > 0
+                            ? "The skirt's quasi-static equilibrium in the film is lost here: on some combination of "
+                              "its modes the film's stiffness (the wedge of the sliding liner) exceeds the "
+                              "structure's (det(I - dH/dy) < 0 in the step's Jacobian), and without the elastic "
+                              "deformation rate in the squeeze term nothing resists that deformation. Set "
+                              "coupling.elastic_squeeze: true (docs/coupling.md section 3)."
+                            : "Try a smaller time.max_step_deg, a finer film grid, more coupling.max_iterations, or "
+                              "check the loads and clearances of the case.";
                     throw std::runtime_error(fmt::format(
                         "the time step fell below time.min_step_deg = {:g} deg at crank angle {:.4f} deg of cycle {}: {}. "
-                        "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. Try a smaller "
-                        "time.max_step_deg, a finer film grid, more coupling.max_iterations, or check the loads and "
-                        "clearances of the case.",
+                        "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
                         T.minStepDeg, wrap720(s.crankDeg), cycle,
                         ok ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure,
-                        s.x[0] * 1e6, s.x[1] * 1e3, minimumGap(film_.grid(), s.hTotal) * 1e6));
+                        s.x[0] * 1e6, s.x[1] * 1e3, minimumGap(film_.grid(), s.hTotal) * 1e6, advice));
                 }
                 continue;
             }
@@ -666,6 +682,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
                     "tilt {:.3g} rad (clearance {:.3g} m). Is asperity contact (contact.composite_modulus) on?",
                     wrap720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance));
             ++stats_.steps;
+            foldedJacobians_ = 0;
             stats_.maxIterations = std::max(stats_.maxIterations, iterations);
             stats_.minStepDeg = std::min(stats_.minStepDeg, step);
             if (piston_) {

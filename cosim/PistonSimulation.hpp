@@ -174,6 +174,7 @@ private:
     Eigen::MatrixXd newtonJacobian_; // the coupled Jacobian as formed (before Broyden updates)
     Eigen::MatrixXd newtonInverse_;  // inverse of the coupled Jacobian (Broyden-updated within a step)
     Eigen::VectorXd unknownScale_;   // m of film-thickness change per unit of each unknown
+    int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
     double newtonRate_ = -1.0;       // the a0/Δt it was formed for
     double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();
     Eigen::Matrix2d jacobian_;

@@ -6,8 +6,8 @@
 # periodic, compute the thermal state (flexehd thermal) and run HD with it, and plot the
 # comparison (like the seed's Fig. 5). Results in out/engine86/.
 # FLEXEHD_EXAMPLE_LINER=1 also runs the flexible piston + flexible liner case;
-# FLEXEHD_EXAMPLE_SQUEEZE=1 also EHD with the elastic deformation rate in the squeeze term
-# (ehd_squeeze.yaml, about 80 s more; docs/coupling.md section 3).
+# FLEXEHD_EXAMPLE_RIGID_RATE=1 also EHD with the rigid film thickness's rate only in the squeeze
+# term (ehd_rigid_rate.yaml, about 40 s more; docs/coupling.md section 3).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/install_deps.sh"
@@ -43,11 +43,11 @@ if [[ "${FLEXEHD_EXAMPLE_LINER:-0}" == 1 ]]; then
   dirs+=("$out/ehd_liner")
   labels+=("EHD+liner")
 fi
-if [[ "${FLEXEHD_EXAMPLE_SQUEEZE:-0}" == 1 ]]; then
-  echo "== EHD: flexible piston, elastic deformation rate in the squeeze term"
-  "$flexehd" run "$root/examples/engine86/ehd_squeeze.yaml"
-  dirs+=("$out/ehd_squeeze")
-  labels+=("EHD elastic squeeze")
+if [[ "${FLEXEHD_EXAMPLE_RIGID_RATE:-0}" == 1 ]]; then
+  echo "== EHD: flexible piston, rigid film thickness's rate only in the squeeze term"
+  "$flexehd" run "$root/examples/engine86/ehd_rigid_rate.yaml"
+  dirs+=("$out/ehd_rigid_rate")
+  labels+=("EHD rigid rate")
 fi
 
 /usr/bin/python3 "$root/scripts/plot_results.py" "${dirs[0]}" --compare "${dirs[@]:1}" \

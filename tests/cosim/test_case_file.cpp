@@ -219,11 +219,11 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     const EngineCase both = readCaseFile(source("examples/engine86/ehd_liner.yaml"), noBodyFiles());
     const EngineCase hot = readCaseFile(source("examples/engine86/thermal_hd.yaml"), noBodyFiles());
     const EngineCase dynamic = readCaseFile(source("examples/engine86/ehd_dynamic.yaml"), noBodyFiles());
-    const EngineCase squeeze = readCaseFile(source("examples/engine86/ehd_squeeze.yaml"), noBodyFiles());
+    const EngineCase rigidRate = readCaseFile(source("examples/engine86/ehd_rigid_rate.yaml"), noBodyFiles());
     EXPECT_EQ(dynamic.coupling.response, cosim::ElasticResponse::Dynamic);
-    EXPECT_TRUE(squeeze.coupling.elasticSqueeze);
-    EXPECT_FALSE(ehd.coupling.elasticSqueeze || dynamic.coupling.elasticSqueeze || hd.coupling.elasticSqueeze);
-    EXPECT_EQ(squeeze.pistonBody.model, BodyModel::Flexible);
+    EXPECT_FALSE(rigidRate.coupling.elasticSqueeze);
+    EXPECT_TRUE(ehd.coupling.elasticSqueeze && dynamic.coupling.elasticSqueeze);  // the default with newton
+    EXPECT_EQ(rigidRate.pistonBody.model, BodyModel::Flexible);
     EXPECT_EQ(dynamic.pistonBody.model, BodyModel::Flexible);
     EXPECT_EQ(hd.pistonBody.model, BodyModel::Rigid);
     EXPECT_EQ(hot.pistonBody.model, BodyModel::Rigid);
@@ -239,7 +239,7 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     EXPECT_EQ(both.linerBody.interface, "top_seat");
     EXPECT_THAT(both.linerBody.interfaces, ::testing::ElementsAre("top_seat", "bottom_seat"));
     EXPECT_EQ(both.linerBody.file, fs::path(source("out/engine86/liner.h5")).lexically_normal().string());
-    for (const EngineCase* v : {&hd, &both, &hot, &dynamic, &squeeze}) {
+    for (const EngineCase* v : {&hd, &both, &hot, &dynamic, &rigidRate}) {
         EXPECT_NE(v->output.directory, ehd.output.directory);
         // Everything else equal: compare the parameter structs field by field through memcmp-free
         // checks of the values that drive the physics.

@@ -114,24 +114,68 @@ TEST(OperatingMap, RigidRunsConvergeWithPhysicalTrends) {
     EXPECT_GE(gasDriven, 2);  // the check above must have run
 }
 
-// The same map with the small flexible piston (SmallEngineCase's coarse 12 × 40 grid, 8 modes,
-// coupling.method newton): every point must run its cycle; friction work per cycle rises with
-// speed at each load. Disabled while the coupled step stalls at 4000 rpm and above (part load,
-// the expansion stroke; docs/coupling.md §1 "Where it still fails"): this is its acceptance test.
-TEST(OperatingMap, DISABLED_FlexiblePistonRunsConverge) {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("flexehd_map_" + std::to_string(::getpid()));
+namespace {
+std::string reduceMapPiston(const std::filesystem::path& dir) {
     std::filesystem::create_directories(dir);
     const std::string file = (dir / "piston.h5").string();
     const auto red = test::reduceSmallPiston(file);
-    ASSERT_EQ(red.status, 0) << red.err;
-    const std::vector<double> speeds{1000, 4000, 7000};
+    EXPECT_EQ(red.status, 0) << red.err;
+    return file;
+}
+}  // namespace
+
+// The small flexible piston (SmallEngineCase's coarse 12 × 40 grid, 8 modes, coupling.method
+// newton, the rigid film thickness's rate in the squeeze term) over the map: each point runs its
+// cycle or, where the quasi-static skirt loses its equilibrium in the film (docs/coupling.md §1:
+// measured here at 4000 rpm, part and full load), stops with that diagnosis — not the generic
+// advice to shorten the step, which cannot help there. Friction work rises with speed over the
+// points that run.
+TEST(OperatingMap, FlexiblePistonRunsOrNamesTheLostEquilibrium) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("flexehd_map_" + std::to_string(::getpid()));
+    const std::string file = reduceMapPiston(dir);
+    int lost = 0;
     for (const Load load : {Load::Part, Load::Full}) {
         double previous = 0.0;
-        for (const double rpm : speeds) {
+        for (const double rpm : {1000.0, 4000.0, 7000.0}) {
             EngineCase c = mapCase(rpm, load);
             c.grid = {12, 40};
             c.pistonBody = test::smallFlexibleCase(file).pistonBody;
+            c.coupling.elasticSqueeze = false;
+            PistonSimulation sim(c);
+            std::vector<StepRecord> steps;
+            try {
+                steps = sim.run();
+            } catch (const std::exception& e) {
+                EXPECT_NE(std::string(e.what()).find("quasi-static equilibrium in the film is lost"), std::string::npos)
+                    << (load == Load::Part ? "part" : "full") << " load at " << rpm << " rpm: " << e.what();
+                ++lost;
+                continue;
+            }
+            const double volume = 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
+            const CycleMetrics m = cycleMetrics(steps, sim.dynamics(), volume);
+            EXPECT_GT(m.frictionEnergy, previous) << rpm << " rpm";
+            previous = m.frictionEnergy;
+        }
+    }
+    EXPECT_LT(lost, 6) << "no point of the map ran";
+    std::filesystem::remove_all(dir);
+}
+
+// The same map with the default model, the elastic deformation rate in the squeeze term
+// (coupling.elastic_squeeze): every point runs its cycle, and friction work rises with speed at
+// each load.
+TEST(OperatingMap, FlexiblePistonWithElasticSqueezeRunsConverge) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("flexehd_map_sq_" + std::to_string(::getpid()));
+    const std::string file = reduceMapPiston(dir);
+    for (const Load load : {Load::Part, Load::Full}) {
+        double previous = 0.0;
+        for (const double rpm : {1000.0, 4000.0, 7000.0}) {
+            EngineCase c = mapCase(rpm, load);
+            c.grid = {12, 40};
+            c.pistonBody = test::smallFlexibleCase(file).pistonBody;
+            c.coupling.elasticSqueeze = true;
             PistonSimulation sim(c);
             std::vector<StepRecord> steps;
             try {
