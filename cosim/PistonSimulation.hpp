@@ -70,6 +70,7 @@ struct RunStatistics {
     double periodicityError = 0.0;  ///< m, last cycle vs the one before (see docs/coupling.md)
     long steps = 0, rejectedSteps = 0, filmSolves = 0, jacobians = 0;
     long fallbackSolves = 0;        ///< film solves redone by the active-set solver (multigrid failed)
+    long resolvedSteps = 0;         ///< steps ended by the resolution test of the coupled Newton (docs/coupling.md §1)
     int maxIterations = 0;          ///< most film solves in one accepted step
     /// max over the steps of |mapped resultant − film normal force| on the flexible piston,
     /// relative to the largest film normal force of the run

@@ -34,7 +34,7 @@ const std::vector<std::string> kSummaryKeys = {
     "tilt_min_rad", "tilt_max_rad", "min_film_m", "min_film_crank_deg", "max_pressure_pa", "contact_force_max_n", "hard_contact_force_max_n",
     "side_force_max_n", "cycles", "periodic", "periodicity_error_m", "periodicity_tolerance_m",
     "iterations.steps", "iterations.rejected_steps", "iterations.film_solves", "iterations.jacobians",
-    "iterations.fallback_film_solves", "iterations.film_solves_per_step_mean", "iterations.film_solves_per_step_max",
+    "iterations.fallback_film_solves", "iterations.resolved_steps", "iterations.film_solves_per_step_mean", "iterations.film_solves_per_step_max",
     "iterations.smallest_step_deg", "load_mapping_conservation_error_max", "timings_s.setup", "timings_s.film",
     "timings_s.structure", "timings_s.mapping", "timings_s.modal", "timings_s.dynamics", "timings_s.output", "timings_s.total"};
 

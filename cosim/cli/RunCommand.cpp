@@ -93,6 +93,7 @@ nlohmann::json summaryJson(const cosim::EngineCase& c, const cosim::PistonSimula
                        {"film_solves", st.filmSolves},
                        {"jacobians", st.jacobians},
                        {"fallback_film_solves", st.fallbackSolves},
+                       {"resolved_steps", st.resolvedSteps},
                        {"film_solves_per_step_mean", st.steps > 0 ? double(st.filmSolves) / double(st.steps) : 0.0},
                        {"film_solves_per_step_max", st.maxIterations},
                        {"smallest_step_deg", st.minStepDeg}};
