@@ -163,16 +163,18 @@ TEST(OperatingMap, FlexiblePistonRunsOrNamesTheLostEquilibrium) {
 }
 
 // The same map with the default model, the elastic deformation rate in the squeeze term
-// (coupling.elastic_squeeze): every point runs its cycle, and friction work rises with speed at
-// each load.
+// (coupling.elastic_squeeze): every point runs its cycle; friction work rises with speed at each
+// load, and where the gas force dominates the inertia the firing slap grows with the load.
 TEST(OperatingMap, FlexiblePistonWithElasticSqueezeRunsConverge) {
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / ("flexehd_map_sq_" + std::to_string(::getpid()));
     const std::string file = reduceMapPiston(dir);
-    for (const Load load : {Load::Part, Load::Full}) {
-        double previous = 0.0;
-        for (const double rpm : {1000.0, 4000.0, 7000.0}) {
-            EngineCase c = mapCase(rpm, load);
+    const std::vector<double> speeds{1000, 4000, 7000};
+    const std::map<Load, std::string> names{{Load::Motored, "motored"}, {Load::Part, "part"}, {Load::Full, "full"}};
+    std::map<std::pair<int, Load>, Point> map;
+    for (const auto& [load, name] : names) {
+        for (std::size_t i = 0; i < speeds.size(); ++i) {
+            EngineCase c = mapCase(speeds[i], load);
             c.grid = {12, 40};
             c.pistonBody = test::smallFlexibleCase(file).pistonBody;
             c.coupling.elasticSqueeze = true;
@@ -181,13 +183,34 @@ TEST(OperatingMap, FlexiblePistonWithElasticSqueezeRunsConverge) {
             try {
                 steps = sim.run();
             } catch (const std::exception& e) {
-                FAIL() << (load == Load::Part ? "part" : "full") << " load at " << rpm << " rpm: " << e.what();
+                FAIL() << name << " load at " << speeds[i] << " rpm: " << e.what();
             }
             const double volume = 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
-            const CycleMetrics m = cycleMetrics(steps, sim.dynamics(), volume);
-            EXPECT_GT(m.frictionEnergy, previous) << rpm << " rpm";
-            previous = m.frictionEnergy;
+            Point p;
+            p.metrics = cycleMetrics(steps, sim.dynamics(), volume);
+            for (const auto& q : c.cylinderPressure) p.peakGas = std::max(p.peakGas, sim.dynamics().gasForce(q.pressure));
+            const double omega = speeds[i] * std::numbers::pi / 30.0;
+            const double crank = 0.5 * c.engine.stroke;
+            p.inertia = (c.piston.mass + c.piston.pinMass) * crank * omega * omega * (1.0 + crank / c.engine.rodLength);
+            for (const StepRecord& r : steps)
+                if (r.crankDeg >= 340.0 && r.crankDeg <= 420.0)
+                    p.firingSlap = std::max(p.firingSlap, sim.dynamics().kineticEnergy(r.lateralVelocity, r.tiltRate));
+            map[std::pair(int(i), load)] = p;
         }
+        for (std::size_t i = 1; i < speeds.size(); ++i)
+            EXPECT_GT(map[std::pair(int(i), load)].metrics.frictionEnergy, map[std::pair(int(i - 1), load)].metrics.frictionEnergy)
+                << name << " load: friction work per cycle at " << speeds[i] << " vs " << speeds[i - 1] << " rpm";
     }
+    int gasDriven = 0;
+    for (std::size_t i = 0; i < speeds.size(); ++i) {
+        const Point& motored = map[std::pair(int(i), Load::Motored)];
+        const Point& part = map[std::pair(int(i), Load::Part)];
+        const Point& full = map[std::pair(int(i), Load::Full)];
+        if (part.peakGas < 4.0 * part.inertia) continue;
+        ++gasDriven;
+        EXPECT_GT(part.firingSlap, motored.firingSlap) << speeds[i] << " rpm";
+        EXPECT_GT(full.firingSlap, part.firingSlap) << speeds[i] << " rpm";
+    }
+    EXPECT_GE(gasDriven, 1);  // the check above must have run
     std::filesystem::remove_all(dir);
 }
