@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lube/FilmNodeGeometry.hpp"
 #include "lube/ReynoldsSystem.hpp"
 
 namespace flexehd::lube {
@@ -19,11 +20,6 @@ void checkField(const FilmGrid& g, const Eigen::VectorXd* v, const char* what) {
         throw std::invalid_argument(std::string("integrateFilm: ") + what + " has " +
                                     std::to_string(v->size()) + " values, grid has " +
                                     std::to_string(g.size()));
-}
-
-// Second-order derivative on a non-uniform 3-point stencil (one-sided at open ends).
-double derivative(double pm, double p0, double pp, double dm, double dp) {
-    return ((pp - p0) * dm / dp + (p0 - pm) * dp / dm) / (dm + dp);
 }
 
 Eigen::VectorXd nodalViscosity(const FilmGrid& g, const Lubricant& lub, const Eigen::VectorXd& p) {
@@ -53,7 +49,7 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
     checkField(g, opt.contactPressure, "contact pressure");
     checkField(g, opt.filmFraction, "film fraction");
     const int nz = g.nAxial(), nt = g.nTheta();
-    const double R = g.radius(), pAmb = g.ambientPressure();
+    const double pAmb = g.ambientPressure();
     const Eigen::VectorXd eta = nodalViscosity(g, lub, p);
     const double dVz = film.outer.axial - film.inner.axial;
     const double dVt = film.outer.circumferential - film.inner.circumferential;
@@ -66,24 +62,12 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
         for (int j = 0; j < nt; ++j) {
             const int k = g.index(i, j);
             if (g.kind(k) == NodeKind::Void) continue;
-            const double A = g.area(k);
-            const double th = g.theta(j), c = std::cos(th), s = std::sin(th);
-            const Eigen::Vector3d er(c, s, 0.0), et(-s, c, 0.0), ez(0.0, 0.0, 1.0);
-            const Eigen::Vector3d r(R * c, R * s, g.z(i));
+            const NodeFrame f = nodeFrame(g, i, j);
+            const double A = f.area;
+            const Eigen::Vector3d &er = f.er, &et = f.et, &ez = f.ez, &r = f.position;
             const double h = film.h[k];
-
             // ∇p: ∂p/∂z and (1/R) ∂p/∂θ.
-            double dpdz, dpdy;
-            if (i == 0) dpdz = (p[g.index(1, j)] - p[k]) / (g.z(1) - g.z(0));
-            else if (i == nz - 1) dpdz = (p[k] - p[g.index(i - 1, j)]) / (g.z(i) - g.z(i - 1));
-            else dpdz = derivative(p[g.index(i - 1, j)], p[k], p[g.index(i + 1, j)],
-                                   g.z(i) - g.z(i - 1), g.z(i + 1) - g.z(i));
-            const double ds = R * g.dTheta();
-            if (g.periodic())
-                dpdy = (p[g.index(i, (j + 1) % nt)] - p[g.index(i, (j + nt - 1) % nt)]) / (2 * ds);
-            else if (j == 0) dpdy = (p[g.index(i, 1)] - p[k]) / ds;
-            else if (j == nt - 1) dpdy = (p[k] - p[g.index(i, j - 1)]) / ds;
-            else dpdy = (p[g.index(i, j + 1)] - p[g.index(i, j - 1)]) / (2 * ds);
+            const double dpdz = axialStencil(g, i, j).apply(p), dpdy = circumferentialStencil(g, i, j).apply(p);
 
             const double phi = opt.filmFraction ? (*opt.filmFraction)[k] : 1.0;
             const double couette = phi * eta[k] / h;

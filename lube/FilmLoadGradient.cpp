@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lube/FilmNodeGeometry.hpp"
 #include "lube/ReynoldsSystem.hpp"
 
 namespace flexehd::lube {
@@ -18,38 +19,6 @@ namespace {
 void add(FilmLoadGradient::Rows& G, int col, const Eigen::Vector3d& f, const Eigen::Vector3d& lever) {
     G.col(col).head<3>() += f;
     G.col(col).tail<3>() += lever.cross(f);
-}
-
-// The weights of the 3-point derivative of FilmIntegrals.cpp on the stencil (m, 0, p).
-struct Stencil {
-    int m, o, p;
-    double wm, wo, wp;
-};
-
-Stencil axialStencil(const FilmGrid& g, int i, int j) {
-    const int nz = g.nAxial();
-    const int k = g.index(i, j);
-    if (i == 0) {
-        const double d = g.z(1) - g.z(0);
-        return {k, k, g.index(1, j), 0.0, -1.0 / d, 1.0 / d};
-    }
-    if (i == nz - 1) {
-        const double d = g.z(i) - g.z(i - 1);
-        return {g.index(i - 1, j), k, k, -1.0 / d, 1.0 / d, 0.0};
-    }
-    const double dm = g.z(i) - g.z(i - 1), dp = g.z(i + 1) - g.z(i), s = dm + dp;
-    return {g.index(i - 1, j), k, g.index(i + 1, j), -(dp / dm) / s, (dp / dm - dm / dp) / s, (dm / dp) / s};
-}
-
-Stencil circumferentialStencil(const FilmGrid& g, int i, int j) {
-    const int nt = g.nTheta();
-    const int k = g.index(i, j);
-    const double ds = g.radius() * g.dTheta();
-    if (g.periodic())
-        return {g.index(i, (j + nt - 1) % nt), k, g.index(i, (j + 1) % nt), -0.5 / ds, 0.0, 0.5 / ds};
-    if (j == 0) return {k, k, g.index(i, 1), 0.0, -1.0 / ds, 1.0 / ds};
-    if (j == nt - 1) return {g.index(i, j - 1), k, k, -1.0 / ds, 1.0 / ds, 0.0};
-    return {g.index(i, j - 1), k, g.index(i, j + 1), -0.5 / ds, 0.0, 0.5 / ds};
 }
 
 }  // namespace
@@ -75,7 +44,7 @@ FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, cons
         throw std::invalid_argument("filmLoadGradient: film fraction has " +
                                     std::to_string(opt.filmFraction->size()) + " values, grid has " +
                                     std::to_string(n));
-    const double R = g.radius(), pAmb = g.ambientPressure();
+    const double pAmb = g.ambientPressure();
     const double dVz = film.outer.axial - film.inner.axial;
     const double dVt = film.outer.circumferential - film.inner.circumferential;
     const double dV = std::hypot(dVz, dVt);
@@ -87,14 +56,13 @@ FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, cons
         for (int j = 0; j < nt; ++j) {
             const int k = g.index(i, j);
             if (g.kind(k) == NodeKind::Void) continue;
-            const double A = g.area(k);
-            const double th = g.theta(j), c = std::cos(th), s = std::sin(th);
-            const Eigen::Vector3d er(c, s, 0.0), et(-s, c, 0.0), ez(0.0, 0.0, 1.0);
-            const Eigen::Vector3d lever = Eigen::Vector3d(R * c, R * s, g.z(i)) - opt.referencePoint;
+            const NodeFrame f = nodeFrame(g, i, j);
+            const double A = f.area;
+            const Eigen::Vector3d &er = f.er, &et = f.et, &ez = f.ez;
+            const Eigen::Vector3d lever = f.position - opt.referencePoint;
             const double h = film.h[k];
             const Stencil sz = axialStencil(g, i, j), st = circumferentialStencil(g, i, j);
-            const double dpdz = sz.wm * p[sz.m] + sz.wo * p[sz.o] + sz.wp * p[sz.p];
-            const double dpdy = st.wm * p[st.m] + st.wo * p[st.o] + st.wp * p[st.p];
+            const double dpdz = sz.apply(p), dpdy = st.apply(p);
             const double phi = opt.filmFraction ? (*opt.filmFraction)[k] : 1.0;
             const double pk = p[k] - pAmb;
             const double eta = lub.viscosity(pk);

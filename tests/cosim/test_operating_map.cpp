@@ -63,30 +63,64 @@ struct Point {
     double firingSlap = 0.0;  // J, peak kinetic energy of the secondary motion in 340–420°
 };
 
+using MapPoints = std::map<std::pair<int, Load>, Point>;
+
+// The cycle's metrics, the peak gas force, the reciprocating inertia force m r ω² (1 + λ) and
+// the firing slap of one map point.
+Point measure(const EngineCase& c, const PistonSimulation& sim, const std::vector<StepRecord>& steps) {
+    const double volume = 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
+    Point p;
+    p.metrics = cycleMetrics(steps, sim.dynamics(), volume);
+    for (const auto& s : c.cylinderPressure) p.peakGas = std::max(p.peakGas, sim.dynamics().gasForce(s.pressure));
+    const double omega = c.engine.speedRpm * std::numbers::pi / 30.0;
+    const double crank = 0.5 * c.engine.stroke;
+    p.inertia = (c.piston.mass + c.piston.pinMass) * crank * omega * omega * (1.0 + crank / c.engine.rodLength);
+    for (const StepRecord& r : steps)
+        if (r.crankDeg >= 340.0 && r.crankDeg <= 420.0)
+            p.firingSlap = std::max(p.firingSlap, sim.dynamics().kineticEnergy(r.lateralVelocity, r.tiltRate));
+    return p;
+}
+
+// Friction work per cycle rises with speed at the load.
+void expectFrictionRisesWithSpeed(const MapPoints& map, const std::vector<double>& speeds, Load load,
+                                  const std::string& name) {
+    for (std::size_t i = 1; i < speeds.size(); ++i)
+        EXPECT_GT(map.at(std::pair(int(i), load)).metrics.frictionEnergy,
+                  map.at(std::pair(int(i - 1), load)).metrics.frictionEnergy)
+            << name << " load: friction work per cycle at " << speeds[i] << " vs " << speeds[i - 1] << " rpm";
+}
+
+// Where the gas force dominates the inertia (peak ≥ 4×), the firing slap grows with the load;
+// returns the number of speeds checked.
+int expectSlapGrowsWithLoad(const MapPoints& map, const std::vector<double>& speeds) {
+    int gasDriven = 0;
+    for (std::size_t i = 0; i < speeds.size(); ++i) {
+        const Point& motored = map.at(std::pair(int(i), Load::Motored));
+        const Point& part = map.at(std::pair(int(i), Load::Part));
+        const Point& full = map.at(std::pair(int(i), Load::Full));
+        if (part.peakGas < 4.0 * part.inertia) continue;
+        ++gasDriven;
+        EXPECT_GT(part.firingSlap, motored.firingSlap) << speeds[i] << " rpm";
+        EXPECT_GT(full.firingSlap, part.firingSlap) << speeds[i] << " rpm";
+    }
+    return gasDriven;
+}
+
 }  // namespace
 
 TEST(OperatingMap, RigidRunsConvergeWithPhysicalTrends) {
     const std::vector<double> speeds{1000, 2500, 4000, 5500, 7000};
     const std::map<Load, std::string> names{{Load::Motored, "motored"}, {Load::Part, "part"}, {Load::Full, "full"}};
-    std::map<std::pair<int, Load>, Point> map;
+    MapPoints map;
     for (const auto& [load, name] : names)
         for (std::size_t i = 0; i < speeds.size(); ++i) {
             const EngineCase c = mapCase(speeds[i], load);
             PistonSimulation sim(c);
             std::vector<StepRecord> steps;
             ASSERT_NO_THROW(steps = sim.run()) << name << " load at " << speeds[i] << " rpm";
-            const double volume = 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
-            Point p;
-            p.metrics = cycleMetrics(steps, sim.dynamics(), volume);
-            for (const auto& s : c.cylinderPressure) p.peakGas = std::max(p.peakGas, sim.dynamics().gasForce(s.pressure));
-            const double omega = speeds[i] * std::numbers::pi / 30.0;
-            const double crank = 0.5 * c.engine.stroke;
-            p.inertia = (c.piston.mass + c.piston.pinMass) * crank * omega * omega * (1.0 + crank / c.engine.rodLength);
             double largestDrop = 0.0;
             for (const auto& q : c.piston.profile) largestDrop = std::max(largestDrop, q.drop);
             for (const StepRecord& r : steps) {
-                if (r.crankDeg >= 340.0 && r.crankDeg <= 420.0)
-                    p.firingSlap = std::max(p.firingSlap, sim.dynamics().kineticEnergy(r.lateralVelocity, r.tiltRate));
                 const double overlap = std::max(0.0, -r.minFilm);
                 EXPECT_LE(std::abs(r.lateral), c.piston.clearance + largestDrop + overlap + 1e-9)
                     << name << " " << speeds[i] << " rpm at " << r.crankDeg << " deg";
@@ -95,23 +129,10 @@ TEST(OperatingMap, RigidRunsConvergeWithPhysicalTrends) {
                 }
                 EXPECT_LE(std::abs(r.hardContactForce), std::abs(r.contactForce) * (1 + 1e-12) + 1e-12);
             }
-            map[std::pair(int(i), load)] = p;
+            map[std::pair(int(i), load)] = measure(c, sim, steps);
         }
-    for (const auto& [load, name] : names)
-        for (std::size_t i = 1; i < speeds.size(); ++i)
-            EXPECT_GT(map[std::pair(int(i), load)].metrics.frictionEnergy, map[std::pair(int(i - 1), load)].metrics.frictionEnergy)
-                << name << " load: friction work per cycle at " << speeds[i] << " vs " << speeds[i - 1] << " rpm";
-    int gasDriven = 0;
-    for (std::size_t i = 0; i < speeds.size(); ++i) {
-        const Point& motored = map[std::pair(int(i), Load::Motored)];
-        const Point& part = map[std::pair(int(i), Load::Part)];
-        const Point& full = map[std::pair(int(i), Load::Full)];
-        if (part.peakGas < 4.0 * part.inertia) continue;
-        ++gasDriven;
-        EXPECT_GT(part.firingSlap, motored.firingSlap) << speeds[i] << " rpm";
-        EXPECT_GT(full.firingSlap, part.firingSlap) << speeds[i] << " rpm";
-    }
-    EXPECT_GE(gasDriven, 2);  // the check above must have run
+    for (const auto& [load, name] : names) expectFrictionRisesWithSpeed(map, speeds, load, name);
+    EXPECT_GE(expectSlapGrowsWithLoad(map, speeds), 2);  // the check must have run
 }
 
 namespace {
@@ -152,10 +173,9 @@ TEST(OperatingMap, FlexiblePistonRunsOrNamesTheLostEquilibrium) {
                 ++lost;
                 continue;
             }
-            const double volume = 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
-            const CycleMetrics m = cycleMetrics(steps, sim.dynamics(), volume);
-            EXPECT_GT(m.frictionEnergy, previous) << rpm << " rpm";
-            previous = m.frictionEnergy;
+            const double friction = measure(c, sim, steps).metrics.frictionEnergy;
+            EXPECT_GT(friction, previous) << rpm << " rpm";
+            previous = friction;
         }
     }
     EXPECT_LT(lost, 6) << "no point of the map ran";
@@ -171,7 +191,7 @@ TEST(OperatingMap, FlexiblePistonWithElasticSqueezeRunsConverge) {
     const std::string file = reduceMapPiston(dir);
     const std::vector<double> speeds{1000, 4000, 7000};
     const std::map<Load, std::string> names{{Load::Motored, "motored"}, {Load::Part, "part"}, {Load::Full, "full"}};
-    std::map<std::pair<int, Load>, Point> map;
+    MapPoints map;
     for (const auto& [load, name] : names) {
         for (std::size_t i = 0; i < speeds.size(); ++i) {
             EngineCase c = mapCase(speeds[i], load);
@@ -185,32 +205,10 @@ TEST(OperatingMap, FlexiblePistonWithElasticSqueezeRunsConverge) {
             } catch (const std::exception& e) {
                 FAIL() << name << " load at " << speeds[i] << " rpm: " << e.what();
             }
-            const double volume = 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
-            Point p;
-            p.metrics = cycleMetrics(steps, sim.dynamics(), volume);
-            for (const auto& q : c.cylinderPressure) p.peakGas = std::max(p.peakGas, sim.dynamics().gasForce(q.pressure));
-            const double omega = speeds[i] * std::numbers::pi / 30.0;
-            const double crank = 0.5 * c.engine.stroke;
-            p.inertia = (c.piston.mass + c.piston.pinMass) * crank * omega * omega * (1.0 + crank / c.engine.rodLength);
-            for (const StepRecord& r : steps)
-                if (r.crankDeg >= 340.0 && r.crankDeg <= 420.0)
-                    p.firingSlap = std::max(p.firingSlap, sim.dynamics().kineticEnergy(r.lateralVelocity, r.tiltRate));
-            map[std::pair(int(i), load)] = p;
+            map[std::pair(int(i), load)] = measure(c, sim, steps);
         }
-        for (std::size_t i = 1; i < speeds.size(); ++i)
-            EXPECT_GT(map[std::pair(int(i), load)].metrics.frictionEnergy, map[std::pair(int(i - 1), load)].metrics.frictionEnergy)
-                << name << " load: friction work per cycle at " << speeds[i] << " vs " << speeds[i - 1] << " rpm";
+        expectFrictionRisesWithSpeed(map, speeds, load, name);
     }
-    int gasDriven = 0;
-    for (std::size_t i = 0; i < speeds.size(); ++i) {
-        const Point& motored = map[std::pair(int(i), Load::Motored)];
-        const Point& part = map[std::pair(int(i), Load::Part)];
-        const Point& full = map[std::pair(int(i), Load::Full)];
-        if (part.peakGas < 4.0 * part.inertia) continue;
-        ++gasDriven;
-        EXPECT_GT(part.firingSlap, motored.firingSlap) << speeds[i] << " rpm";
-        EXPECT_GT(full.firingSlap, part.firingSlap) << speeds[i] << " rpm";
-    }
-    EXPECT_GE(gasDriven, 1);  // the check above must have run
+    EXPECT_GE(expectSlapGrowsWithLoad(map, speeds), 1);  // the check must have run
     std::filesystem::remove_all(dir);
 }
