@@ -37,6 +37,7 @@ const std::vector<Column>& table() {
         {"friction_power_w", &StepRecord::frictionPower, nullptr},
         {"min_film_m", &StepRecord::minFilm, nullptr},
         {"max_pressure_pa", &StepRecord::maxPressure, nullptr},
+        {"elastic_film_change_m", &StepRecord::elasticFilmChange, nullptr},
         {"coupling_iterations", nullptr, &StepRecord::couplingIterations},
         {"step_deg", &StepRecord::stepDeg, nullptr},
     };

@@ -548,6 +548,12 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
     r.frictionPower = -r.frictionForce * k.velocity;
     r.minFilm = ev.minGap;  // unfloored: < 0 where the surfaces overlap
     r.maxPressure = ev.p.size() ? ev.p.maxCoeff() : 0.0;
+    if (piston_ || liner_) {
+        const lube::FilmGrid& g = film_.grid();
+        for (int k = 0; k < g.size(); ++k)
+            if (g.kind(k) != lube::NodeKind::Void)
+                r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(ev.hTotal[k] - ev.hRigid[k]));
+    }
     r.couplingIterations = iterations;
     r.stepDeg = stepDeg;
     return r;

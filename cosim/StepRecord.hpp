@@ -24,6 +24,9 @@ struct StepRecord {
     double frictionPower = 0.0;     ///< W, −F_friction,z · ż (power lost, ≥ 0 on average)
     double minFilm = 0.0;           ///< m, smallest film thickness (gap); < 0 where the surfaces overlap
     double maxPressure = 0.0;       ///< Pa, gauge
+    /// m, largest |elastic change of the film thickness| over the film nodes (piston and liner
+    /// deformation together; 0 with rigid bodies)
+    double elasticFilmChange = 0.0;
     int couplingIterations = 0;     ///< film solves in this step (coupling + Newton)
     double stepDeg = 0.0;           ///< °, crank-angle step that reached this point
 };
