@@ -583,6 +583,12 @@ ReducedBody readContent(const Reader& r) {
 
 void writeReducedBody(const ReducedBody& body, const std::string& path) {
     checkConsistent(body);
+    // The file's directory is made as the run's output directories are.
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty() && !std::filesystem::create_directories(parent, ec) && ec)
+        throw std::runtime_error("cannot create the directory '" + parent.string() + "' for reduced-body file '" +
+                                 path + "': " + ec.message());
     const QuietHdf5Errors quiet;
     fem::writeAtomically(path, [&](const std::string& tmp) {
         Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);

@@ -20,7 +20,7 @@ using namespace flexehd;
 
 TEST(CliReduce, CantileverTipDeflectionFromTheFile) {
     const auto dir = flexehd::test::scratchDir();
-    const std::string h5 = (dir / "beam.h5").string();
+    const std::string h5 = (dir / "bodies" / "beam.h5").string();  // the directory is made
     const auto r = runFlexehd("reduce --mesh " + dataPath("beam.geo") +
                               " --E 2.1e11 --nu 0.3 --rho 7850 --interface clamped:rbe2@0,0.01,0.01 --modes 12"
                               " --out " + h5 + " --json");
