@@ -681,6 +681,11 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
                               "structure's (det(I - dH/dy) < 0 in the step's Jacobian), and without the elastic "
                               "deformation rate in the squeeze term nothing resists that deformation. Set "
                               "coupling.elastic_squeeze: true (docs/coupling.md section 3)."
+                        : !ok && (piston_ || liner_) && case_.coupling.method == CouplingMethod::Partitioned
+                            ? "With coupling.method: partitioned the modal coordinates follow the film by a "
+                              "fixed-point iteration beside the Newton iteration of the motion; on the example engine "
+                              "it fails from 3000 rpm on (docs/coupling.md section 1). coupling.method: newton (the "
+                              "default) solves the motion and the modes together and runs the whole map."
                             : "Try a smaller time.max_step_deg, a finer film grid, more coupling.max_iterations, or "
                               "check the loads and clearances of the case.";
                     throw std::runtime_error(fmt::format(
