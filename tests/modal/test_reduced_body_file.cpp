@@ -259,10 +259,20 @@ TEST_F(ReducedBodyFileTest, InconsistentBodyIsNotWritten) {
     EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
 }
 
-TEST_F(ReducedBodyFileTest, UnwritableLocation) {
+TEST_F(ReducedBodyFileTest, MissingDirectoriesAreMade) {
     const std::string path = (dir_ / "no" / "such" / "dir.h5").string();
+    modal::writeReducedBody(*body_, path);
+    EXPECT_EQ(modal::readReducedBody(path).numModes(), body_->numModes());
+}
+
+TEST_F(ReducedBodyFileTest, UnwritableLocation) {
+    // A directory that cannot be made: its parent is a regular file.
+    const std::filesystem::path file = dir_ / "plain_file";
+    std::ofstream(file) << "not a directory\n";
+    const std::string path = (file / "dir.h5").string();
     const std::string e = errorOf([&] { modal::writeReducedBody(*body_, path); });
     EXPECT_THAT(e, HasSubstr(path));
+    EXPECT_THAT(e, testing::Not(HasSubstr("HDF5")));
 }
 
 TEST(Fnv1a64, KnownValues) {
