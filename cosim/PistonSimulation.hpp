@@ -175,6 +175,9 @@ private:
     Eigen::MatrixXd newtonJacobian_; // the coupled Jacobian as formed (before Broyden updates)
     Eigen::MatrixXd newtonInverse_;  // inverse of the coupled Jacobian (Broyden-updated within a step)
     Eigen::VectorXd unknownScale_;   // m of film-thickness change per unit of each unknown
+    // coupling.method partitioned with flexible bodies: units of (e, β, y) in clearances of film
+    // change, for the quasi-Newton acceleration of the joint fixed-point map (docs/coupling.md §1)
+    Eigen::VectorXd partitionedScale_;
     int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
     double newtonRate_ = -1.0;       // the a0/Δt it was formed for
     double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();
