@@ -9,7 +9,9 @@
 namespace flexehd::lube {
 
 struct FilmLinearization::Factor {
-    Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
+    // Simplicial: the film's 2-D factor has small supernodes, on which the supernodal method's BLAS
+    // kernels gain nothing and OpenBLAS's worker threads spin (docs/benchmarks.md).
+    Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> llt;
     std::vector<int> analysedFree;  // the free set whose pattern llt has analysed
     // CHOLMOD prints nothing itself: a failed factorization is reported by linearize's exception.
     Factor() { llt.cholmod().print = 0; }

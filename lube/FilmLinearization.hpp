@@ -11,7 +11,7 @@
 // (Poiseuille h_f³, Couette h_f) is taken by finite differences on a distance-2 colouring of the
 // grid — a node's row depends on h at the node and its four neighbours, so nodes three grid steps
 // apart can be perturbed together: about 8 assemblies per linearisation, not one per node.
-// A_FF, the free rows and columns only, is factorized once per linearisation (CHOLMOD; its pattern
+// A_FF, the free rows and columns only, is factorized once per linearisation (CHOLMOD simplicial; its pattern
 // analysed again when the free set changes); any number of (δh, δḣ) columns are then answered by
 // one multi-column solve of the free rows' size.
 #include <Eigen/Core>
