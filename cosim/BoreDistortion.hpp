@@ -1,6 +1,6 @@
 #pragma once
 // BoreDistortion: the liner's assembly distortion (head bolts, gasket) as a radial displacement
-// Δr(z, θ) of the bore in the liner frame. It is part of the rigid clearance (GUIDE eq. 2):
+// Δr(z, θ) of the bore in the liner frame. It is part of the rigid clearance (seed eq. 2):
 // h += Δr, outward distortion opens the gap. Two sources (docs/case-file.md `liner`):
 //
 //  * Fourier orders per axial position (the usual measurement format):

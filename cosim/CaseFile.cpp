@@ -421,7 +421,7 @@ void readContact(const Section& s, ContactSpec& c) {
                                     c.hardContactStiffness);
 }
 
-// ---- liner bore distortion and thermal displacements (issue 7; BoreDistortion, ClearanceTerms) --
+// ---- liner bore distortion and thermal displacements (BoreDistortion, ClearanceTerms) --
 
 /// liner.bore_distortion: {format: fourier, file: CSV} | {format: fourier, orders: [...]} |
 /// {format: nodal, file: CSV}. Tables are read and checked here; errors name the key.

@@ -1,5 +1,5 @@
 #pragma once
-// ClearanceTerms: the film-thickness terms of GUIDE eq. 2 that do not depend on the secondary
+// ClearanceTerms: the film-thickness terms of seed eq. 2 that do not depend on the secondary
 // motion or the elastic deformation, beyond SkirtFilm's c + profile + ovality (docs/coupling.md §5):
 //
 //   h_rigid += Δr_bore(z + s, θ)            liner bore distortion from assembly (BoreDistortion)

@@ -6,7 +6,7 @@
 // positive towards the major thrust side +x), so the connecting rod makes the angle ψ with
 //     sin ψ = (r sin φ_c + c) / l,
 // and a rod in compression pushes the pin towards +x during expansion (360°–540°): +x is the
-// major thrust side. (GUIDE writes sin φ = (r sin θ − c_pin)/l with the opposite sign of c.)
+// major thrust side. (Some texts write sin φ = (r sin θ − c_pin)/l with the opposite sign of c.)
 
 namespace flexehd::cosim {
 

@@ -1,7 +1,7 @@
 #pragma once
 // DeformationMapping: structure → grid transfer of surface displacements as a C¹ piecewise
-// cubic (Clough–Tocher) interpolant over the parameter plane (z, s = R θ) (seed §3.1; GUIDE
-// "Mapping"; docs/mapping.md).
+// cubic (Clough–Tocher) interpolant over the parameter plane (z, s = R θ) (seed §3.1;
+// docs/mapping.md).
 //
 // Each surface triangle's vertex image (z, s) is split at its centroid into three cubic
 // Bézier patches (Clough & Tocher 1965; Bézier form: Farin, CAGD 3 (1986) 83–127). The patches

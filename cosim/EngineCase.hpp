@@ -151,7 +151,7 @@ struct BoreNode {
 
 enum class BoreDistortionFormat { None, Fourier, Nodal };
 
-/// Liner bore distortion from assembly (GUIDE eq. 2: part of h_rigid; outward opens the gap).
+/// Liner bore distortion from assembly (seed eq. 2: part of h_rigid; outward opens the gap).
 struct BoreDistortionSpec {
     BoreDistortionFormat format = BoreDistortionFormat::None;  ///< None = no distortion
     std::string file;                  ///< absolute path of the table, empty for an inline table

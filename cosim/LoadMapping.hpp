@@ -1,7 +1,7 @@
 #pragma once
 // LoadMapping: conservative transfer of film pressure from the lubrication grid to the nodes
-// of a structural surface (seed paper §3.1; GUIDE "Mapping between the lubrication grid and
-// the structural surfaces"; docs/mapping.md).
+// of a structural surface (seed paper §3.1;
+// docs/mapping.md).
 //
 // The grid pressure is bilinear on each grid cell of the parameter plane (z, θ). The nodal
 // forces on the body are the consistent loads

@@ -1,6 +1,6 @@
 #pragma once
 // ModalMapping: the load and deformation mappings pre-multiplied into the mode shapes of a
-// reduced body (issue 5; GUIDE "Mapping"; docs/mapping.md):
+// reduced body (docs/mapping.md):
 //     loadOperator = Φᵀ A   (modes × grid nodes): modal forces of grid pressures,
 //     gridShapes   = D_r Φ  (grid nodes × modes): radial displacement of the grid per unit q,
 // with A the LoadMapping matrix (3·nodes × grid), D_r the DeformationMapping radial operator

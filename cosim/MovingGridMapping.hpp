@@ -1,7 +1,7 @@
 #pragma once
 // MovingGridMapping: load and deformation mapping between a film grid that slides axially
 // along a structure (the piston grid along the liner bore) and that structure, without
-// rebuilding the operators for every position (issue 5; GUIDE "Mapping"; docs/mapping.md).
+// rebuilding the operators for every position (docs/mapping.md).
 //
 // Setup, once: a structure-fixed grid G with the moving grid's θ nodes and uniform axial
 // spacing h over [zMin, zMax] (body frame), its LoadMapping A_G and DeformationMapping D_G.

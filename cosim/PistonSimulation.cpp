@@ -187,7 +187,7 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     Evaluation ev;
     auto t0 = Clock::now();
     film_.rigidThickness(x[0], x[1], ev.hRigid);
-    if (clearance_) clearance_->add(ctx.offset, ev.hRigid);  // distortion, thermal (GUIDE eq. 2)
+    if (clearance_) clearance_->add(ctx.offset, ev.hRigid);  // distortion, thermal (seed eq. 2)
     ev.h = ev.hRigid;
     const bool elasticSqueeze = case_.coupling.elasticSqueeze;
     const double rigidSeconds = seconds(t0);

@@ -1,6 +1,6 @@
 #pragma once
 // SkirtFilm: the lubrication grid on the piston skirt and the rigid part of the film thickness
-// (GUIDE "Film thickness", seed eq. 2; docs/dynamics.md §3).
+// (seed eq. 2; docs/dynamics.md §3).
 //
 // The grid is fixed to the piston: FilmGrid full circumference of radius bore/2, z from the
 // skirt bottom to the skirt top in the piston frame (increasing towards the head), θ from +x

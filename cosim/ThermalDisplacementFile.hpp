@@ -1,6 +1,6 @@
 #pragma once
 // ThermalDisplacementFile: reads the compact thermal-displacement file `thermal.h5` written by
-// `flexehd thermal` (issue 7; seed §2.3: h_thermal,piston and h_thermal,liner of GUIDE eq. 2).
+// `flexehd thermal` (seed §2.3: h_thermal,piston and h_thermal,liner of seed eq. 2).
 //
 // Format (agreed with the thermal analysis; docs/thermal.md, docs/coupling.md §5):
 //   root attributes  format = "flexehd-thermal" (string), version = 1 (integer)

@@ -3,8 +3,8 @@
 // for, written as u = T u_free + g: constrained DOFs take prescribed values g, free DOFs
 // are numbered in increasing order so that reduced matrices keep their upper-triangle
 // storage. With only Dirichlet constraints T is a selection and reduce() extracts K_ff
-// directly in O(nnz). Multi-point constraints (a node set tied to a reference node,
-// issue 3) extend the same picture: extra free DOFs for the reference node, dependent
+// directly in O(nnz). Multi-point constraints (a node set tied to a reference node)
+// extend the same picture: extra free DOFs for the reference node, dependent
 // DOFs expressed as rows of T, reduce() = Tᵀ K T.
 #include <string>
 #include <unordered_set>

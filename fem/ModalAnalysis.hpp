@@ -1,7 +1,7 @@
 #pragma once
 // Free-vibration analysis of an elastic body: assemble K and M, hold the fixed groups,
 // solve for the lowest modes, return shapes on all nodes. The pipeline behind
-// `flexehd modes`, and the reference that modal reduction (issue 3) is checked against.
+// `flexehd modes`, and the reference that modal reduction is checked against.
 #include <string>
 #include <vector>
 

@@ -7,7 +7,7 @@
 //   free Film nodes F (p above the bound):  A_FF δp_F = −(∂w/∂h δh + ∂w/∂ḣ δḣ)_F
 //   cavitated Film nodes, Fixed and Void:   δp = 0
 //
-// ∂w/∂ḣ is diagonal (the squeeze term A_k ρ_k ḣ_k of GUIDE eq. 1, exact by linearity); ∂w/∂h
+// ∂w/∂ḣ is diagonal (the squeeze term A_k ρ_k ḣ_k of seed eq. 1, exact by linearity); ∂w/∂h
 // (Poiseuille h_f³, Couette h_f) is taken by finite differences on a distance-2 colouring of the
 // grid — a node's row depends on h at the node and its four neighbours, so nodes three grid steps
 // apart can be perturbed together: about 8 assemblies per linearisation, not one per node.

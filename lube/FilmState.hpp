@@ -5,7 +5,7 @@
 // "Inner" is the body inside the film (piston skirt, journal), "outer" the body outside it
 // (liner, sleeve). Velocities are tangential, in the grid frame, with components along +z
 // (axial) and along +θ (circumferential, m/s: for a journal spinning at ω, ωR). The Reynolds
-// equation sees only their sum U = V_inner + V_outer (GUIDE eq. 1 with u = U); the shear stress
+// equation sees only their sum U = V_inner + V_outer (seed eq. 1 with u = U); the shear stress
 // needs them separately. See docs/lube.md §1.
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #pragma once
-// GreenwoodTripp: asperity contact pressure of two rough surfaces (Greenwood & Tripp 1970,
-// GUIDE eq. 3):
+// GreenwoodTripp: asperity contact pressure of two rough surfaces (Greenwood & Tripp 1970;
+// seed eq. 3):
 //   p_c(h) = K E* F_{5/2}(h/σ),   K = (16√2 π/15) (η_s β σ)² √(σ/β),
 //   F_n(λ) = (2π)^(-1/2) ∫_λ^∞ (s − λ)^n e^(−s²/2) ds.
 // σ: composite rms roughness (m), β: asperity tip radius (m), η_s: asperity density (1/m²).

@@ -1,6 +1,6 @@
 #pragma once
 // ReynoldsSystem: the conservative finite-volume discretisation of the Reynolds equation
-// (GUIDE eq. 1) on a FilmGrid, written as the linear system A p = b of the mass balance of
+// (seed eq. 1) on a FilmGrid, written as the linear system A p = b of the mass balance of
 // every node's control volume V_k:
 //
 //   Σ_faces f  [ c_f (p_k − p_nb) + m_f ]  + A_k ρ_k ∂h_k/∂t = 0,

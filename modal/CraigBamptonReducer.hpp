@@ -1,5 +1,5 @@
 #pragma once
-// Craig–Bampton reduction of an elastic body (Craig & Bampton 1968; GUIDE §2):
+// Craig–Bampton reduction of an elastic body (Craig & Bampton 1968; docs/modal.md):
 //   u = [u_i; u_b] ≈ [[Ψ, Φ, X], [I, 0, 0]] [q_b; η; ξ],
 //   Ψ = -K_ii⁻¹ K_ib (constraint modes), Φ: K_ii φ = ω² M_ii φ (fixed-interface modes),
 //   X = (I - Φ Φᵀ M_ii) K_ii⁻¹ F_i (static-correction / residual attachment modes: inertia

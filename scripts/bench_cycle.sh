@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark of issue 6: one full 720° cycle of the example engine on the default film grid
+# Benchmark: one full 720° cycle of the example engine on the default film grid
 # (48 x 144) with rigid bodies (HD, hd.yaml), the flexible piston (EHD, case.yaml) and the
 # flexible piston + flexible liner (ehd_liner.yaml), each with its default output (history,
 # summary, VTK snapshots every 10°, mode shapes). Target: the piston + liner cycle <= 60 s on

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Speed-up of `flexehd sweep` from 1 process to 2 MPI ranks (docs/benchmarks.md, "Design
-# study (issue 8)"): 8 variants of the rigid example (pin offset x clearance, one cycle, film
+# study"): 8 variants of the rigid example (pin offset x clearance, one cycle, film
 # grid FLEXEHD_BENCH_GRID="AXIAL CIRCUMFERENTIAL", default "32 96"), run once in one process
 # and once with `mpirun -n 2`.
 set -euo pipefail

@@ -1,5 +1,5 @@
-// Issue 7, film side: the liner's bore distortion (Fourier orders, nodal FE result) and the
-// thermal displacements of piston and liner (thermal.h5) in the film thickness (GUIDE eq. 2),
+// Film side of the clearance terms: the liner's bore distortion (Fourier orders, nodal FE result) and the
+// thermal displacements of piston and liner (thermal.h5) in the film thickness (seed eq. 2),
 // cosim/ClearanceTerms, BoreDistortion, ThermalDisplacementFile, LinerFieldTable, the case keys
 // `liner.bore_distortion` and `thermal`, and their placement by the run (PistonSimulation).
 #include <gmock/gmock.h>

@@ -1,5 +1,5 @@
 // The `flexehd bearing` command as a user runs it: journal-bearing loads, dimensionless design
-// numbers and flows against classical solutions (GUIDE §3), solver agreement, and bad input.
+// numbers and flows against classical solutions (Sommerfeld, Ocvirk; Hamrock, Fundamentals of Fluid Film Lubrication), solver agreement, and bad input.
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -31,7 +31,7 @@ double num(const nlohmann::json& d, const char* key) { return d.at(key).get<doub
 }  // namespace
 
 // Infinitely long bearing, half Sommerfeld, ε = 0.6: in units of 6μωR³L/c², W_r = 0.47669
-// (along the line of centres), W_t = 0.99839 (GUIDE §3); 0.5% as in the lube tests at 240 nodes.
+// (along the line of centres), W_t = 0.99839 (half Sommerfeld); 0.5% as in the lube tests at 240 nodes.
 TEST(CliBearing, LongHalfSommerfeldLoad) {
     const auto d = bearing("--eccentricity 0.6 --infinitely-long --cavitation half-sommerfeld "
                            "--grid 240x3 --length 0.1");
@@ -44,7 +44,7 @@ TEST(CliBearing, LongHalfSommerfeldLoad) {
     EXPECT_EQ(num(d, "side_flow_m3_s"), 0.0);
 }
 
-// Infinitely long, full Sommerfeld, ε = 0.6: W = 1.99677 (GUIDE §3) at 90° attitude. Friction on
+// Infinitely long, full Sommerfeld, ε = 0.6: W = 1.99677 (Sommerfeld) at 90° attitude. Friction on
 // the journal T = (4πμωR³L/c)(1+2ε²)/[(2+ε²)√(1−ε²)] gives (R/c)f = T/(cW) = (1+2ε²)/(3ε);
 // circumferential flow Q = ωRcL(1−ε²)/(2+ε²) gives Q/(RcNL) = 2π(1−ε²)/(2+ε²).
 TEST(CliBearing, LongFullSommerfeldLoadFrictionAndFlow) {

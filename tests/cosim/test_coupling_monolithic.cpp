@@ -1,6 +1,6 @@
 // The partitioned film–structure coupling of PistonSimulation (film solve, then the quasi-static
 // modal response, accelerated by IQN-ILS) converges to the same state as a monolithic solve of
-// the same equations (issue 6, docs/coupling.md §2).
+// the same equations (docs/coupling.md §2).
 //
 // At written crank angles of an EHD run the test takes the piston's rigid motion (e, β, ė, β̇)
 // from the run and solves, from scratch and as one system, for the film pressure p and the

@@ -1,4 +1,4 @@
-// bodies.response: dynamic in the co-simulation (issue 6): the flexible piston's modal dynamics
+// bodies.response: dynamic in the co-simulation: the flexible piston's modal dynamics
 // (modal::HeldModalDynamics, BDF2 with the motion's step coefficients) inside the coupling.
 //  * The real piston's elastic modes (free-free from ~6 kHz) lie far above the load's frequency
 //    content at 1000 rpm (the slap takes ~10° = 1.7 ms): the dynamic run must agree with the

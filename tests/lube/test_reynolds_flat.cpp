@@ -46,7 +46,7 @@ double sliderLoad(const std::vector<double>& z, SolverKind solver) {
 
 }  // namespace
 
-// GUIDE §3: 6/K²[ln(1+K) − 2K/(2+K)] = 0.15888 at K = 1. The finite-volume error is O(Δz²):
+// Inclined slider (Hamrock, Fundamentals of Fluid Film Lubrication): 6/K²[ln(1+K) − 2K/(2+K)] = 0.15888 at K = 1. The finite-volume error is O(Δz²):
 // it must fall by 4 ± 0.5 per halving, and be below 1e-4 relative at 161 nodes.
 TEST(InclinedSlider, LoadConvergesAtSecondOrder) {
     const double exact = 6.0 * (std::log(2.0) - 2.0 / 3.0);
@@ -78,7 +78,7 @@ TEST(InclinedSlider, NonUniformAxialSpacing) {
 
 // Squeeze film of a flat pad of width B under a constant load W′ per unit length:
 // t = μB³/(2W′)(1/h₁² − 1/h₀²) = 0.4277 s for μ = 0.01 Pa·s, B = 30 mm, W′ = 12.5 kN/m,
-// 50 µm → 5 µm (GUIDE §3). Transient: RK4 in time on dh/dt, each stage a film solve with the
+// 50 µm → 5 µm (closed form t = μB³/(2W′)(1/h₁² − 1/h₀²)). Transient: RK4 in time on dh/dt, each stage a film solve with the
 // ∂h/∂t term (the load is linear in dh/dt: scale a unit-rate solve). Quadrature error of the
 // load is O(Δz²) ≈ 1e-4 at 101 nodes, RK4 error far below.
 TEST(SqueezeFilm, FlatPadApproachTime) {
