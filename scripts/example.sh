@@ -10,7 +10,7 @@
 # term (ehd_rigid_rate.yaml, about 40 s more; docs/coupling.md section 3).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-bash "$root/scripts/install_deps.sh"
+bash "$root/scripts/install_deps.sh" --with-python  # the plots at the end need numpy and matplotlib
 bash "$root/scripts/build.sh"
 build="${FLEXEHD_BUILD_DIR:-$root/build}"
 flexehd="$build/cosim/flexehd"

@@ -34,6 +34,13 @@ void addMaterialOptions(CLI::App* cmd, fem::ElasticMaterial& material) {
     cmd->add_option("--rho", material.rho, "Density [kg/m^3]")->required()->check(kFinite & CLI::PositiveNumber);
 }
 
+namespace {
+bool quietFlag = false;
+}  // namespace
+
+void setGlobalQuiet(bool quiet) { quietFlag = quiet; }
+bool globalQuiet() { return quietFlag; }
+
 double peakMemoryMiB() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);

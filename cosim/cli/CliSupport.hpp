@@ -35,6 +35,11 @@ void addMeshOptions(CLI::App* cmd, MeshArguments& mesh);
 /// The elastic material options: --E, --nu, --rho (all required, SI).
 void addMaterialOptions(CLI::App* cmd, fem::ElasticMaterial& material);
 
+/// The global -q/--quiet: set by main once the command line is parsed; a command with its own
+/// --quiet is quiet with either (one meaning everywhere: no progress output).
+void setGlobalQuiet(bool quiet);
+bool globalQuiet();
+
 /// Peak resident memory of this process so far, MiB (getrusage).
 double peakMemoryMiB();
 

@@ -210,12 +210,15 @@ void runCase(const RunArgs& a) {
         printJson(doc);
     } else if (!a.quiet) {
         fmt::print("lateral {:+.1f} .. {:+.1f} um, tilt {:+.3f} .. {:+.3f} mrad, friction {:.1f} W mean (FMEP {:.3f} kPa), "
-                   "min film {:.2f} um, {} cycles{} in {:.1f} s\nresults: {}\n",
+                   "min film {:.2f} um, {} cycle{}{} in {:.1f} s\nresults: {}\n",
                    doc.value("lateral_min_m", 0.0) * 1e6, doc.value("lateral_max_m", 0.0) * 1e6,
                    doc.value("tilt_min_rad", 0.0) * 1e3, doc.value("tilt_max_rad", 0.0) * 1e3,
                    doc.value("friction_power_mean_w", 0.0), doc.value("fmep_pa", 0.0) * 1e-3,
-                   doc.value("min_film_m", 0.0) * 1e6, sim.statistics().cycles,
-                   sim.statistics().periodic ? " (periodic)" : " (NOT periodic within the tolerance)", total.seconds(),
+                   doc.value("min_film_m", 0.0) * 1e6, sim.statistics().cycles, sim.statistics().cycles == 1 ? "" : "s",
+                   sim.statistics().cycles < 2   ? " (periodicity not checked: it needs two cycles)"
+                   : sim.statistics().periodic ? " (periodic)"
+                                               : " (NOT periodic within the tolerance)",
+                   total.seconds(),
                    dir);
     }
 }
@@ -231,7 +234,10 @@ void addRunCommand(CLI::App& app) {
     cmd->add_option("--cycles", a->cycles, "Cycles at most (overrides time.max_cycles)")->check(CLI::PositiveNumber);
     cmd->add_flag("--json", a->json, "Print summary.json on stdout");
     cmd->add_flag("--quiet", a->quiet, "No progress output");
-    cmd->callback([a] { runCase(*a); });
+    cmd->callback([a] {
+        a->quiet = a->quiet || globalQuiet();
+        runCase(*a);
+    });
 }
 
 }  // namespace flexehd::cli

@@ -65,7 +65,10 @@ void addSweepCommand(CLI::App& app) {
     cmd->add_flag("--dry-run", a->dryRun, "Check the study and list its variants; run nothing");
     cmd->add_flag("--json", a->json, "Print the study's counts as one JSON object on stdout");
     cmd->add_flag("--quiet", a->quiet, "No progress output");
-    cmd->callback([a] { runSweep(*a); });
+    cmd->callback([a] {
+        a->quiet = a->quiet || globalQuiet();
+        runSweep(*a);
+    });
 }
 
 }  // namespace flexehd::cli

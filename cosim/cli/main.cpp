@@ -6,6 +6,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "lube/LargeArrayAllocator.hpp"
 
@@ -24,9 +25,10 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "flexehd 0.1.0");
     bool quiet = false;
-    app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr");
+    app.add_flag("-q,--quiet", quiet, "No progress output: only warnings and errors on stderr (as a command's --quiet)");
     app.parse_complete_callback([&] {
         spdlog::set_level(quiet ? spdlog::level::warn : spdlog::level::info);
+        flexehd::cli::setGlobalQuiet(quiet);
     });
 
     flexehd::cli::addModesCommand(app);

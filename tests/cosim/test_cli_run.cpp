@@ -124,3 +124,35 @@ TEST(CliRun, BadCaseNamesTheKey) {
     EXPECT_NE(r.err.find("piston.clearance"), std::string::npos) << r.err;
     fs::remove_all(dir);
 }
+
+// Periodicity compares a cycle with the one before: after one cycle it is not judged.
+TEST(CliRun, OneCycleSaysPeriodicityIsNotChecked) {
+    const fs::path dir = fs::temp_directory_path() / ("flexehd_run_once_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string file = coarseCase("hd.yaml", dir);
+    const auto once = runFlexehd("run " + file + " --cycles 1");
+    ASSERT_EQ(once.status, 0) << once.err;
+    EXPECT_NE(once.out.find("1 cycle (periodicity not checked: it needs two cycles)"), std::string::npos) << once.out;
+    const auto twice = runFlexehd("run " + file + " --cycles 2");
+    ASSERT_EQ(twice.status, 0) << twice.err;
+    EXPECT_EQ(twice.out.find("periodicity not checked"), std::string::npos) << twice.out;
+    EXPECT_NE(twice.out.find("2 cycles ("), std::string::npos) << twice.out;
+    fs::remove_all(dir);
+}
+
+// The global -q means what run's --quiet means: no progress output.
+TEST(CliRun, GlobalQuietSilencesTheProgress) {
+    const fs::path dir = fs::temp_directory_path() / ("flexehd_run_q_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string file = coarseCase("hd.yaml", dir);
+    const auto loud = runFlexehd("run " + file + " --cycles 1");
+    ASSERT_EQ(loud.status, 0) << loud.err;
+    EXPECT_NE(loud.err.find("cycle 1"), std::string::npos) << "progress expected without -q: " << loud.err;
+    for (const std::string& q : {"-q run " + file, "run " + file + " --quiet"}) {
+        const auto quiet = runFlexehd(q + " --cycles 1");
+        ASSERT_EQ(quiet.status, 0) << quiet.err;
+        EXPECT_EQ(quiet.err, "") << q;
+        EXPECT_EQ(quiet.out, "") << q;
+    }
+    fs::remove_all(dir);
+}
