@@ -1,5 +1,6 @@
 #include "fem/ModalAnalysis.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -22,6 +23,12 @@ int ModalAnalysis::rigidBodyModes() const {
     int n = 0;
     while (n < l.size() && std::abs(l(n)) < rigidThreshold) ++n;
     return n;
+}
+
+Eigen::VectorXd ModalAnalysis::frequenciesHz() const {
+    Eigen::VectorXd f = modes.frequenciesHz();
+    f.head(std::min<Eigen::Index>(rigidBodyModes(), f.size())).setZero();
+    return f;
 }
 
 ModalAnalysis analyseModes(const Mesh& mesh, const ElasticMaterial& material,

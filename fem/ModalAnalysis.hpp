@@ -28,6 +28,9 @@ struct ModalAnalysis {
     /// Number of leading modes with |λ| below rigidThreshold: the rigid-body modes of an
     /// insufficiently held body.
     int rigidBodyModes() const;
+    /// Natural frequencies, Hz; the rigid-body modes as exactly 0 (their eigenvalues are
+    /// round-off of either sign).
+    Eigen::VectorXd frequenciesHz() const;
 };
 
 ModalAnalysis analyseModes(const Mesh& mesh, const ElasticMaterial& material,

@@ -242,6 +242,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
         body.frequenciesHz(k) = std::copysign(std::sqrt(std::abs(lambda(k))), lambda(k)) / (2 * std::numbers::pi);
         if (std::abs(lambda(k)) < rigidThreshold) {  // same criterion as fem::ModalAnalysis
             body.rigidBody[k] = 1;
+            body.frequenciesHz(k) = 0.0;  // the eigenvalue is round-off of either sign
             body.dampingRatios(k) = 0.0;
         }
     }

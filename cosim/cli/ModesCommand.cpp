@@ -53,13 +53,13 @@ void runModes(const ModesArgs& a) {
     if (!a.out.empty()) {
         Stopwatch w;
         for (const auto& name : cosim::writeModeShapes(a.out, mesh, result.modes.shapes,
-                                                       result.modes.frequenciesHz(), result.modes.eigenvalues))
+                                                       result.frequenciesHz(), result.modes.eigenvalues))
             files.push_back(name);
         spdlog::info("wrote {} mode shapes and {}/modes.pvd", result.modes.shapes.cols(), a.out);
         writeSeconds = w.seconds();
     }
 
-    const Eigen::VectorXd f = result.modes.frequenciesHz();
+    const Eigen::VectorXd f = result.frequenciesHz();
     const int rigid = result.rigidBodyModes();
     if (a.json) {
         nlohmann::json doc;

@@ -48,6 +48,10 @@ TEST(BeamModes, FreeFreeRigidBodyModesAndBendingPairs) {
     ASSERT_EQ(r.rigidBodyModes(), 6);
     const double firstElastic = r.modes.eigenvalues(6);
     for (int k = 0; k < 6; ++k) EXPECT_LT(std::abs(r.modes.eigenvalues(k)), 1e-4 * firstElastic);
+    // Reported: the rigid-body modes as exactly 0 Hz, the elastic ones as computed.
+    const Eigen::VectorXd reported = r.frequenciesHz();
+    for (int k = 0; k < 6; ++k) EXPECT_EQ(reported(k), 0.0) << "mode " << k + 1;
+    for (int k = 6; k < 12; ++k) EXPECT_EQ(reported(k), f(k)) << "mode " << k + 1;
     const double betaL[3] = {4.730041, 7.853205, 10.995608};
     for (int k = 6; k < 12; ++k)
         EXPECT_NEAR(f(k) / beamFrequency(betaL[(k - 6) / 2], 1.0, 0.02), 1.0, 0.015) << "mode " << k + 1;

@@ -186,6 +186,7 @@ TEST(CraigBampton, Rbe3InterfaceConvergesToThePlainFreeBody) {
     const Eigen::VectorXd plain = fem::analyseModes(m, steel, {}, opt).modes.frequenciesHz();
     const auto body = modal::CraigBamptonReducer(m, steel).reduce({modal::parseInterface("clamped:rbe3")}, settings(20));
     ASSERT_EQ(std::count(body.rigidBody.begin(), body.rigidBody.end(), 1), 6);
+    for (int k = 0; k < 6; ++k) EXPECT_EQ(body.frequenciesHz(k), 0.0) << "rigid-body mode " << k + 1 << " as 0 Hz";
     for (int k = 6; k < 12; ++k) EXPECT_NEAR(body.frequenciesHz(k) / plain(k), 1.0, 1e-3) << "mode " << k + 1;
 }
 
