@@ -91,12 +91,15 @@ const std::vector<std::string>& HistoryWriter::columns() {
 
 HistoryWriter::HistoryWriter(const std::string& path) : path_(path), out_(path, std::ios::out | std::ios::trunc) {
     if (!out_) throw std::runtime_error("cannot open '" + path + "' for writing");
-    std::string header = kComments;
+    // The column names first, then the comments: numpy.genfromtxt(names=True) takes its names
+    // from the first line and skips '#' lines after it, pandas.read_csv(comment='#') skips them.
+    std::string header;
     for (std::size_t c = 0; c < table().size(); ++c) {
         if (c) header += ',';
         header += table()[c].name;
     }
     header += '\n';
+    header += kComments;
     out_ << header;
     if (!out_.flush()) throw std::runtime_error("error writing '" + path + "'");
 }

@@ -673,11 +673,12 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         cycleRecords.clear();
         cycleSince.clear();
         std::vector<Snapshot> snaps;
-        if (haveLast) {  // the boundary point opens the new cycle too
+        if (haveLast) {
+            // The boundary point opens the new cycle's records too (its metrics and its 0° snapshot);
+            // it is the last cycle's final step, written to the history once, there.
             StepRecord r = record(s, lastEv, cycle, 0.0, 0);
             cycleRecords.push_back(r);
             cycleSince.push_back(s.crankDeg - cycleStart);
-            if (cb.onStep) cb.onStep(r);
             if (every > 0.0) snaps.push_back(snapshot(s, lastEv, cycle));
         }
         double nextProgress = cycleStart;

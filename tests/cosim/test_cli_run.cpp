@@ -137,6 +137,17 @@ TEST(CliRun, OneCycleSaysPeriodicityIsNotChecked) {
     ASSERT_EQ(twice.status, 0) << twice.err;
     EXPECT_EQ(twice.out.find("periodicity not checked"), std::string::npos) << twice.out;
     EXPECT_NE(twice.out.find("2 cycles ("), std::string::npos) << twice.out;
+    // history.csv: the header is the first line (numpy.genfromtxt(names=True) reads it there) and
+    // one line per accepted step, time rising strictly also across the cycle boundary.
+    std::ifstream in(dir / "results" / "history.csv");
+    std::string first;
+    std::getline(in, first);
+    EXPECT_EQ(first.rfind("cycle,crank_deg,time_s,", 0), 0u) << first;
+    const auto rows = flexehd::cosim::HistoryWriter::read((dir / "results" / "history.csv").string());
+    ASSERT_GT(rows.size(), 2u);
+    EXPECT_EQ(rows.back().cycle, 2);
+    for (std::size_t k = 1; k < rows.size(); ++k)
+        ASSERT_GT(rows[k].time, rows[k - 1].time) << "row " << k + 1 << " at crank " << rows[k].crankDeg;
     fs::remove_all(dir);
 }
 

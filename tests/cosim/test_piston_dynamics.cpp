@@ -247,6 +247,9 @@ TEST(PistonSimulation, PeriodicityErrorComparesTheSameCrankAngle) {
     for (const auto& r : all) (r.cycle == 1 ? one : two).push_back(r);
     ASSERT_GT(one.size(), 100u);
     ASSERT_GT(two.size(), 100u);
+    // The history holds each step once: cycle 1's last step is the boundary point, which opens
+    // cycle 2's comparison too (at the crank angle where cycle 1 started).
+    two.insert(two.begin(), one.back());
     const double period = 720.0 / (6.0 * c.engine.speedRpm);  // s
     const double reach = std::max(c.piston.skirtTop, -c.piston.skirtBottom);
     double err = 0.0;

@@ -95,15 +95,18 @@ void expectPrintedEqual(const StepRecord& written, const StepRecord& read) {
     for (auto m : reals) EXPECT_EQ(read.*m, printed(written.*m));  // exact, not approximate
 }
 
-TEST(HistoryWriter, HeaderCarriesUnitsAfterCommentLines) {
+// The header is the first line (numpy.genfromtxt(names=True) takes its names from there and
+// skips the '#' lines after it), then the comment lines.
+TEST(HistoryWriter, HeaderWithUnitsIsTheFirstLineThenComments) {
     const auto path = test::scratchDir() / "history.csv";
     { HistoryWriter w(path.string()); }
     const auto l = lines(path);
-    ASSERT_GE(l.size(), 2u);
-    std::size_t k = 0;
-    while (k < l.size() && l[k].rfind('#', 0) == 0) ++k;
-    EXPECT_GE(k, 2u) << "expected a few '#' comment lines";
-    ASSERT_EQ(k + 1, l.size());
+    ASSERT_GE(l.size(), 3u);
+    const std::size_t k = 0;
+    std::size_t comments = 0;
+    while (comments + 1 < l.size() && l[comments + 1].rfind('#', 0) == 0) ++comments;
+    EXPECT_GE(comments, 2u) << "expected a few '#' comment lines";
+    ASSERT_EQ(comments + 1, l.size());
     EXPECT_THAT(l[k], AllOf(HasSubstr("crank_deg,time_s,lateral_m,tilt_rad,"), HasSubstr("side_force_n"),
                             HasSubstr("friction_power_w"), HasSubstr("min_film_m"), HasSubstr("max_pressure_pa"),
                             HasSubstr("coupling_iterations")));
