@@ -277,10 +277,7 @@ TEST(OperatingMap, PartitionedCouplingMatchesNewtonAtHighSpeed) {
         std::filesystem::temp_directory_path() / ("flexehd_map_part_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::string file = (dir / "piston.h5").string();
-    const auto red = test::runFlexehd("reduce --mesh " + std::string(FLEXEHD_SOURCE_DIR) +
-                                      "/meshes/piston.geo --size 0.0065 --E 7.5e10 --nu 0.33 --rho 2700 "
-                                      "--interface pin_bore:rbe2@0,0,0 --modes 20 --static-correction skirt --out " +
-                                      file);
+    const auto red = test::reduceExamplePiston(file);
     ASSERT_EQ(red.status, 0) << red.err;
     CaseFileOptions options;
     options.checkBodyFiles = false;

@@ -36,6 +36,14 @@ using namespace flexehd::cosim;
 
 namespace {
 
+// The grid nodes that carry film (not Void).
+std::vector<int> filmCarryingNodes(const lube::FilmGrid& g) {
+    std::vector<int> nodes;
+    for (int k = 0; k < g.size(); ++k)
+        if (g.kind(k) != lube::NodeKind::Void) nodes.push_back(k);
+    return nodes;
+}
+
 // The static contact problem of the skirt at one crank state: film thickness
 //     h = h_rigid(e, β) + G p_c(h)
 // with p_c = Greenwood–Tripp asperity pressure + coating foundation, and the piston's
@@ -48,9 +56,7 @@ public:
           foundation_(lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
                                                               c.contact.coatingThickness)),
           lubricant_(c.lubricant.viscosity, c.lubricant.density) {
-        const lube::FilmGrid& g = sim.film().grid();
-        for (int k = 0; k < g.size(); ++k)
-            if (g.kind(k) != lube::NodeKind::Void) film_.push_back(k);
+        film_ = filmCarryingNodes(sim.film().grid());
     }
 
     // (e, β) where the contact balances the rod and gas forces at the crank angle.
@@ -161,9 +167,7 @@ Eigen::MatrixXd fullModelCompliance(const FlexibleSurface& piston, const lube::F
     dofs.constrain(body.mesh.groupNodes("pin_bore"), fem::kAllComponents);
     dofs.finalize();
     const fem::StaticSolver solver(dofs.reduce(K));
-    std::vector<int> film;
-    for (int k = 0; k < g.size(); ++k)
-        if (g.kind(k) != lube::NodeKind::Void) film.push_back(k);
+    const std::vector<int> film = filmCarryingNodes(g);
     Eigen::MatrixXd G(film.size(), film.size());
     for (std::size_t j = 0; j < film.size(); ++j) {
         const Eigen::VectorXd f = load.matrix().col(film[j]);
@@ -176,9 +180,7 @@ Eigen::MatrixXd fullModelCompliance(const FlexibleSurface& piston, const lube::F
 
 // The same with the reduced body as the master uses it (FlexibleSurface: C Φᵀ A, D Φ).
 Eigen::MatrixXd reducedCompliance(const FlexibleSurface& piston, const lube::FilmGrid& g) {
-    std::vector<int> film;
-    for (int k = 0; k < g.size(); ++k)
-        if (g.kind(k) != lube::NodeKind::Void) film.push_back(k);
+    const std::vector<int> film = filmCarryingNodes(g);
     Eigen::MatrixXd G(film.size(), film.size());
     Eigen::VectorXd p = Eigen::VectorXd::Zero(g.size()), f, q, dh;
     for (std::size_t j = 0; j < film.size(); ++j) {
