@@ -17,7 +17,11 @@ CycleMetrics cycleMetrics(const std::vector<StepRecord>& c, const PistonDynamics
     long iterations = 0;
     for (std::size_t i = 0; i < c.size(); ++i) {
         const StepRecord& r = c[i];
-        if (i > 0) m.frictionEnergy += 0.5 * (r.frictionPower + c[i - 1].frictionPower) * (r.time - c[i - 1].time);
+        if (i > 0) {
+            const double dt = r.time - c[i - 1].time;
+            m.frictionEnergy += 0.5 * (r.dissipatedPower + c[i - 1].dissipatedPower) * dt;
+            m.boundaryFrictionEnergy += 0.5 * (r.boundaryFrictionPower + c[i - 1].boundaryFrictionPower) * dt;
+        }
         const double ke = dyn.kineticEnergy(r.lateralVelocity, r.tiltRate);
         if (ke > m.slapEnergyMax) {
             m.slapEnergyMax = ke;
@@ -39,6 +43,7 @@ CycleMetrics cycleMetrics(const std::vector<StepRecord>& c, const PistonDynamics
         m.maxIterations = std::max(m.maxIterations, r.couplingIterations);
     }
     m.frictionPowerMean = m.duration > 0.0 ? m.frictionEnergy / m.duration : 0.0;
+    m.boundaryFrictionPowerMean = m.duration > 0.0 ? m.boundaryFrictionEnergy / m.duration : 0.0;
     m.fmep = m.frictionEnergy / volume;
     m.meanIterations = double(iterations) / double(c.size());
     return m;

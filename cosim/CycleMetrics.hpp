@@ -11,8 +11,10 @@ namespace flexehd::cosim {
 
 struct CycleMetrics {
     double duration = 0.0;            ///< s, time spanned by the records
-    double frictionEnergy = 0.0;      ///< J, ∫ friction power dt (trapezoidal over the steps)
+    double frictionEnergy = 0.0;      ///< J, ∫ dissipated power dt (trapezoidal over the steps)
     double frictionPowerMean = 0.0;   ///< W, frictionEnergy / duration
+    double boundaryFrictionEnergy = 0.0;     ///< J, its boundary-friction part
+    double boundaryFrictionPowerMean = 0.0;  ///< W, boundaryFrictionEnergy / duration
     double fmep = 0.0;                ///< Pa, frictionEnergy / displaced volume (skirt's FMEP share)
     /// J, peak kinetic energy of the secondary motion, PistonDynamics::kineticEnergy:
     /// ½ (m_p + m_pin) ė² + m_p z_g ė β̇ + ½ [I_g + m_p (x_g² + z_g²)] β̇² (docs/dynamics.md §2)

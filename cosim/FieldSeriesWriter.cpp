@@ -97,7 +97,11 @@ vtkNew<vtkDoubleArray> scalarArray(const char* name, vtkIdType count) {
 
 // The film grid as a structured grid nx × nAxial × 1, x = θ (fastest), y = axial. On a periodic
 // grid the first θ column is repeated as column nθ so that ParaView draws a closed cylinder.
-void writeFilm(const std::string& path, const FilmField& film, double time) {
+std::vector<FieldValue> fieldData(const SnapshotTime& at) {
+    return {{"TimeValue", at.time}, {"crank_deg", at.crankDeg}, {"cycle", double(at.cycle)}};
+}
+
+void writeFilm(const std::string& path, const FilmField& film, const SnapshotTime& at) {
     const lube::FilmGrid& g = *film.grid;
     const int nTheta = g.nTheta(), nAxial = g.nAxial();
     const int nx = nTheta + (g.periodic() ? 1 : 0);
@@ -138,9 +142,11 @@ void writeFilm(const std::string& path, const FilmField& film, double time) {
     grid->GetPointData()->AddArray(kind);
     grid->GetPointData()->SetActiveScalars("pressure_pa");
 
-    auto timeValue = scalarArray("TimeValue", 1);  // ParaView shows it when the file is opened alone
-    timeValue->SetValue(0, time);
-    grid->GetFieldData()->AddArray(timeValue);
+    for (const FieldValue& v : fieldData(at)) {  // ParaView shows TimeValue when the file is opened alone
+        auto a = scalarArray(v.name.c_str(), 1);
+        a->SetValue(0, v.value);
+        grid->GetFieldData()->AddArray(a);
+    }
 
     fem::writeAtomically(path, [&](const std::string& tmp) {
         vtkNew<vtkXMLStructuredGridWriter> writer;
@@ -154,16 +160,16 @@ void writeFilm(const std::string& path, const FilmField& film, double time) {
     });
 }
 
-void writeBody(const std::string& path, const BodyField& b, double time) {
+void writeBody(const std::string& path, const BodyField& b, const SnapshotTime& at) {
     const fem::Mesh& mesh = *b.mesh;
     fem::Mesh placed;  // the elements of the body, nodes moved into the cylinder frame
     placed.nodes = mesh.nodes.colwise() + b.origin;
     placed.volume = mesh.volume;
     std::vector<PointField> fields{
-        {"displacement", Eigen::Map<const Eigen::MatrixXd>(b.displacement.data(), 3, mesh.numNodes())}};
+        {"displacement_m", Eigen::Map<const Eigen::MatrixXd>(b.displacement.data(), 3, mesh.numNodes())}};
     if (b.elastic.size() != 0)
-        fields.push_back({"elastic_displacement", Eigen::Map<const Eigen::MatrixXd>(b.elastic.data(), 3, mesh.numNodes())});
-    writeVtu(path, placed, fields, {{"TimeValue", time}}, VtuCompression::LZ4);
+        fields.push_back({"elastic_displacement_m", Eigen::Map<const Eigen::MatrixXd>(b.elastic.data(), 3, mesh.numNodes())});
+    writeVtu(path, placed, fields, fieldData(at), VtuCompression::LZ4);
 }
 
 }  // namespace
@@ -175,8 +181,10 @@ FieldSeriesWriter::FieldSeriesWriter(std::string directory) : directory_(std::mo
         throw std::runtime_error("cannot create '" + (fs::path(directory_) / "vtk").string() + "': " + ec.message());
 }
 
-void FieldSeriesWriter::write(double time, const FilmField& film, const BodyField* piston, const BodyField* liner) {
-    if (!std::isfinite(time)) throw std::runtime_error(fmt::format("snapshot time {} is not finite", time));
+void FieldSeriesWriter::write(const SnapshotTime& at, const FilmField& film, const BodyField* piston,
+                              const BodyField* liner) {
+    const double time = at.time;
+    if (!std::isfinite(time) || !std::isfinite(at.crankDeg)) throw std::runtime_error(fmt::format("snapshot time {} is not finite", time));
     if (count_ > 0 && !(time > lastTime_))
         throw std::runtime_error(fmt::format("snapshot time {} does not follow the previous snapshot's {}: "
                                              "the series must be strictly increasing",
@@ -189,10 +197,10 @@ void FieldSeriesWriter::write(double time, const FilmField& film, const BodyFiel
     const std::string index = fmt::format("{:06d}", count_);
     // Snapshots first, collections last: a collection only ever lists complete files.
     const std::string filmFile = "vtk/film_" + index + ".vts";
-    writeFilm((dir / filmFile).string(), film, time);
+    writeFilm((dir / filmFile).string(), film, at);
     const std::string pistonFile = "vtk/piston_" + index + ".vtu", linerFile = "vtk/liner_" + index + ".vtu";
-    if (piston) writeBody((dir / pistonFile).string(), *piston, time);
-    if (liner) writeBody((dir / linerFile).string(), *liner, time);
+    if (piston) writeBody((dir / pistonFile).string(), *piston, at);
+    if (liner) writeBody((dir / linerFile).string(), *liner, at);
 
     filmPvd_.add(time, filmFile);
     filmPvd_.write((dir / "film.pvd").string());

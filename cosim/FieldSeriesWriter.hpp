@@ -33,8 +33,16 @@ struct FilmField {
 struct BodyField {
     const fem::Mesh* mesh = nullptr;
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< cylinder-frame position of the mesh frame's origin (m)
-    Eigen::VectorXd displacement;  ///< 3·nodes, m: rigid secondary motion + elastic (for Warp By Vector)
-    Eigen::VectorXd elastic;       ///< 3·nodes, m: elastic part only (empty: not written)
+    Eigen::VectorXd displacement;  ///< 3·nodes, m: rigid secondary motion + elastic (`displacement_m`, for Warp By Vector)
+    Eigen::VectorXd elastic;       ///< 3·nodes, m: elastic part only (`elastic_displacement_m`; empty: not written)
+};
+
+/// When a snapshot was taken: the collection's time axis and the crank angle and cycle it
+/// stands for, written as field data of each file (docs/results-format.md, "VTK series").
+struct SnapshotTime {
+    double time = 0.0;      ///< the .pvd time (flexehd run: the crank angle of the written cycle, °)
+    double crankDeg = 0.0;  ///< °, the crank angle 0–720 of history.csv
+    int cycle = 0;          ///< 1-based cycle number of history.csv
 };
 
 class FieldSeriesWriter {
@@ -42,11 +50,11 @@ public:
     /// Creates `directory`/vtk. Snapshot files are numbered from 000000.
     explicit FieldSeriesWriter(std::string directory);
 
-    /// Writes one snapshot at `time` (the caller's time axis: the continuous crank angle in
-    /// degrees for flexehd run), which must be finite and larger than the previous one.
+    /// Writes one snapshot at `at.time`, which must be finite and larger than the previous one;
+    /// each file carries `TimeValue`, `crank_deg` and `cycle` as field data.
     /// Throws std::runtime_error naming the field (and the node) on a size mismatch or a NaN/Inf
     /// value, before any file is written; or naming the file on an I/O error.
-    void write(double time, const FilmField& film, const BodyField* piston, const BodyField* liner);
+    void write(const SnapshotTime& at, const FilmField& film, const BodyField* piston, const BodyField* liner);
 
     /// Number of snapshots written so far.
     int count() const { return count_; }

@@ -34,7 +34,11 @@ const std::vector<Column>& table() {
         {"contact_force_n", &StepRecord::contactForce, nullptr},
         {"hard_contact_force_n", &StepRecord::hardContactForce, nullptr},
         {"friction_force_n", &StepRecord::frictionForce, nullptr},
-        {"friction_power_w", &StepRecord::frictionPower, nullptr},
+        {"liner_friction_hydrodynamic_n", &StepRecord::linerHydrodynamicFriction, nullptr},
+        {"liner_friction_boundary_n", &StepRecord::linerBoundaryFriction, nullptr},
+        {"dissipated_power_w", &StepRecord::dissipatedPower, nullptr},
+        {"boundary_friction_power_w", &StepRecord::boundaryFrictionPower, nullptr},
+        {"cylinder_pressure_pa", &StepRecord::cylinderPressure, nullptr},
         {"min_film_m", &StepRecord::minFilm, nullptr},
         {"max_pressure_pa", &StepRecord::maxPressure, nullptr},
         {"elastic_film_change_m", &StepRecord::elasticFilmChange, nullptr},
@@ -49,8 +53,8 @@ constexpr const char* kComments =
     "docs/results-format.md\n"
     "# units: SI, named by each column's suffix (_m, _s, _rad, _m_per_s, _rad_per_s, _n, _n_m, _w, _pa); "
     "crank_deg and step_deg in degrees, crank_deg 0-720 within the cycle (0 = gas-exchange TDC, "
-    "360 = firing TDC); max_pressure_pa is gauge (relative to the crankcase)\n"
-    "# signs: forces and moments act ON the piston, cylinder frame (+x major thrust side, +z towards "
+    "360 = firing TDC); max_pressure_pa is gauge (relative to the crankcase), cylinder_pressure_pa absolute\n"
+    "# signs: forces and moments act ON the piston (liner_friction_* ON the liner), cylinder frame (+x major thrust side, +z towards "
     "the head, y pin axis); lateral > 0 towards +x; tilt about +y, > 0 = top of the piston towards "
     "+x; moments about the pin axis (+y)\n";
 

@@ -103,7 +103,7 @@ std::vector<std::string> writeModeShapes(const std::string& directory, const fem
         std::vector<FieldValue> data{{"mode", double(k + 1)}, {"frequency_hz", frequenciesHz(k)}};
         if (eigenvalues.size() == shapes.cols()) data.push_back({"eigenvalue_rad2_per_s2", eigenvalues(k)});
         data.push_back({"mass_normalisation_factor", 1.0 / scale});
-        writeVtu((dir / name).string(), mesh, {{"displacement", u}}, data, VtuCompression::LZ4);
+        writeVtu((dir / name).string(), mesh, {{"displacement_m", u}}, data, VtuCompression::LZ4);
         pvd.add(double(k + 1), name);
     }
     pvd.write((dir / "modes.pvd").string());

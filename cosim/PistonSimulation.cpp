@@ -1,4 +1,5 @@
 #include "cosim/PistonSimulation.hpp"
+#include "cosim/RunProgress.hpp"
 
 #include "cosim/ClearanceTerms.hpp"
 #include "cosim/PistonSimulationState.hpp"
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 #include <stdexcept>
 
 namespace flexehd::cosim {
@@ -565,7 +567,8 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
                                     int iterations) const {
     StepRecord r;
     const CrankState k = kin_.at(s.crankDeg);
-    const double gas = dyn_.gasForce(pressure_(wrap720(s.crankDeg)));
+    r.cylinderPressure = pressure_(wrap720(s.crankDeg));
+    const double gas = dyn_.gasForce(r.cylinderPressure);
     r.cycle = cycle;
     r.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
     r.time = s.time;
@@ -579,7 +582,10 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
     r.contactForce = ev.loads.contactForce.x();
     r.hardContactForce = ev.hardForce;
     r.frictionForce = ev.loads.frictionForce().z();
-    r.frictionPower = -r.frictionForce * k.velocity;
+    r.linerHydrodynamicFriction = ev.loads.outerShearForce.z();
+    r.linerBoundaryFriction = -ev.loads.boundaryFrictionForce.z();
+    r.dissipatedPower = ev.loads.dissipatedPower();
+    r.boundaryFrictionPower = ev.loads.boundaryFrictionPower;
     r.minFilm = ev.minGap;  // unfloored: < 0 where the surfaces overlap
     r.maxPressure = ev.p.size() ? ev.p.maxCoeff() : 0.0;
     if (piston_ || liner_) {
@@ -667,12 +673,14 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     double filmT0 = stats_.timings.film, structT0 = stats_.timings.structure;
     (void)filmT0;
     (void)structT0;
+    RunProgress progress(T.maxCycles, T.periodicityTolerance);
     for (int cycle = 1; cycle <= T.maxCycles; ++cycle) {
         const double cycleStart = T.startDeg + 720.0 * (cycle - 1);
         const double cycleEnd = spanDeg > 0.0 ? std::min(cycleStart + 720.0, T.startDeg + spanDeg) : cycleStart + 720.0;
         cycleRecords.clear();
         cycleSince.clear();
         std::vector<Snapshot> snaps;
+        progress.startCycle(cycle, seconds(tRun));
         if (haveLast) {
             // The boundary point opens the new cycle's records too (its metrics and its 0° snapshot);
             // it is the last cycle's final step, written to the history once, there.
@@ -766,12 +774,8 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             dtDeg = std::min(T.maxStepDeg, std::max(step, std::min(dtDeg, T.maxStepDeg)) * grow);
             if (cb.progress && s.crankDeg >= nextProgress) {
                 nextProgress += 30.0;
-                const double done = (s.crankDeg - T.startDeg) / 720.0;
-                const double elapsed = seconds(tRun);
-                cb.progress(fmt::format("cycle {}/{}  crank {:6.1f} deg  e {:+7.2f} um  tilt {:+6.3f} mrad  "
-                                        "iterations {:2d}  step {:.3f} deg  {:.1f} s (≤ {:.0f} s per cycle)",
-                                        cycle, T.maxCycles, wrap720(s.crankDeg), s.x[0] * 1e6, s.x[1] * 1e3,
-                                        iterations, step, elapsed, done > 0 ? elapsed / done : 0.0));
+                cb.progress(progress.stepLine(cycleCrankDeg(s.crankDeg, cycle), (s.crankDeg - cycleStart) / (cycleEnd - cycleStart),
+                                              seconds(tRun), s.x[0], s.x[1], iterations, step));
             }
         }
         stats_.cycles = cycle;
@@ -796,14 +800,14 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             stats_.periodic = err <= T.periodicityTolerance;
         }
         if (cb.progress)
-            cb.progress(previousCycle.empty()
-                            ? fmt::format("cycle {} done: {} steps so far, {:.1f} s", cycle, stats_.steps, seconds(tRun))
-                            : fmt::format("cycle {} done: periodicity error {:.3g} m (tolerance {:.3g} m), {:.1f} s", cycle,
-                                          stats_.periodicityError, T.periodicityTolerance, seconds(tRun)));
+            cb.progress(progress.cycleDoneLine(seconds(tRun), previousCycle.empty() ? std::nullopt
+                                                                                   : std::optional(stats_.periodicityError)));
         const bool last = stats_.periodic || cycle == T.maxCycles || (spanDeg > 0.0 && cycleEnd >= T.startDeg + spanDeg - 1e-9);
         if (last) {
-            if (cb.onSnapshot)
+            if (cb.onSnapshot && !snaps.empty()) {
+                if (cb.progress) cb.progress(fmt::format("writing the {} VTK snapshots of cycle {}", snaps.size(), cycle));
                 for (const Snapshot& sn : snaps) cb.onSnapshot(sn);
+            }
             break;
         }
         previousCycle = cycleRecords;

@@ -20,8 +20,15 @@ struct StepRecord {
     double filmMoment = 0.0;        ///< N·m, moment of film pressure, contact and friction about the pin
     double contactForce = 0.0;      ///< N, lateral contact force (asperities + hard contact)
     double hardContactForce = 0.0;  ///< N, its hard-contact part (coating, film thickness < 0)
-    double frictionForce = 0.0;     ///< N, axial friction force (hydrodynamic shear + boundary)
-    double frictionPower = 0.0;     ///< W, −F_friction,z · ż (power lost, ≥ 0 on average)
+    double frictionForce = 0.0;     ///< N, axial friction force on the piston (hydrodynamic shear + boundary)
+    /// N, axial friction force ON THE LINER (what a floating-liner rig measures): the film's
+    /// shear on the liner wall and the boundary friction of the asperity contact
+    double linerHydrodynamicFriction = 0.0;
+    double linerBoundaryFriction = 0.0;
+    /// W, ≥ 0: the power the skirt contact loses, viscous dissipation + boundary friction power
+    double dissipatedPower = 0.0;
+    double boundaryFrictionPower = 0.0;  ///< W, ≥ 0: its boundary-friction part μ_b ∫ p_c |ΔV| dA
+    double cylinderPressure = 0.0;  ///< Pa, absolute cylinder (gas) pressure, as the case's table gives it
     double minFilm = 0.0;           ///< m, smallest film thickness (gap); < 0 where the surfaces overlap
     double maxPressure = 0.0;       ///< Pa, gauge
     /// m, largest |elastic change of the film thickness| over the film nodes (piston and liner

@@ -29,7 +29,8 @@ const std::vector<std::string> kReduceOptions = {"mesh", "order", "size", "E", "
                                                  "circumferential_order", "damping", "damping_band"};
 // The keys `flexehd run` writes to summary.json (cosim/cli/RunCommand.cpp); nested ones dotted.
 const std::vector<std::string> kSummaryKeys = {
-    "status", "message", "name", "cycle", "friction_power_mean_w", "friction_energy_per_cycle_j", "fmep_pa",
+    "status", "message", "name", "cycle", "friction_power_mean_w", "boundary_friction_power_mean_w",
+    "friction_energy_per_cycle_j", "fmep_pa",
     "slap_kinetic_energy_max_j", "slap_kinetic_energy_max_crank_deg", "lateral_min_m", "lateral_max_m",
     "tilt_min_rad", "tilt_max_rad", "min_film_m", "min_film_crank_deg", "max_pressure_pa", "contact_force_max_n", "hard_contact_force_max_n",
     "side_force_max_n", "cycles", "periodic", "periodicity_error_m", "periodicity_tolerance_m",

@@ -72,6 +72,8 @@ public:
         return buffer;
     }
 
+    bool hasAttribute(const std::string& name) const { return H5Aexists(file_.get(), name.c_str()) > 0; }
+
     long long integerAttribute(const std::string& name) const {
         if (H5Aexists(file_.get(), name.c_str()) <= 0)
             fail(fmt::format("missing root attribute '{}' (expected the integer {})", name, kThermalFormatVersion));
@@ -181,10 +183,12 @@ ThermalDisplacement readThermalDisplacementFile(const std::string& path) {
     const std::string format = r.stringAttribute("format");
     if (format != kThermalFormat)
         r.fail(fmt::format("root attribute 'format' is \"{}\", expected \"{}\"", format, kThermalFormat));
-    const long long version = r.integerAttribute("version");
+    // `format_version`, as in the reduced-body file; files of earlier builds call it `version`.
+    const std::string versionName = r.hasAttribute("format_version") ? "format_version" : "version";
+    const long long version = r.integerAttribute(versionName);
     if (version != kThermalFormatVersion)
-        r.fail(
-            fmt::format("root attribute 'version' is {}, this build reads version {}", version, kThermalFormatVersion));
+        r.fail(fmt::format("root attribute '{}' is {}, this build reads version {}", versionName, version,
+                           kThermalFormatVersion));
     ThermalDisplacement t;
     t.path = path;
     if (r.has("/piston")) t.piston = r.field("/piston");

@@ -83,6 +83,8 @@ void writeBody(Writer& w, const std::string& g, const ThermalBodyTable& body) {
     w.dataset(g + "/theta", {nt}, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, t.theta.data());
     w.dataset(g + "/radial_displacement", {nz, nt}, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, t.radial.data());
     w.dataset(g + "/on_surface", {nz, nt}, H5T_STD_U8LE, H5T_NATIVE_UCHAR, t.onSurface.data());
+    for (const auto& [name, unit] : {std::pair{"axial", "m"}, {"theta", "rad"}, {"radial_displacement", "m"}, {"on_surface", "1"}})
+        w.stringAttribute(g + "/" + name, "units", unit);
 }
 
 }  // namespace
@@ -93,7 +95,7 @@ void writeThermalFile(const std::string& path, const std::optional<ThermalBodyTa
     fem::writeAtomically(path, [&](const std::string& tmp) {
         Writer w(tmp, path);
         w.stringAttribute("/", "format", "flexehd-thermal");
-        w.scalarAttribute("/", "version", H5T_STD_I32LE, H5T_NATIVE_INT, 1);
+        w.scalarAttribute("/", "format_version", H5T_STD_I32LE, H5T_NATIVE_INT, 1);
         if (piston) writeBody(w, "/piston", *piston);
         if (liner) writeBody(w, "/liner", *liner);
         w.close();

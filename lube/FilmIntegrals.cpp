@@ -78,11 +78,13 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
             const Eigen::Vector3d fp = -(p[k] - pAmb) * A * er;
             const Eigen::Vector3d fc = -pc * A * er;
             const Eigen::Vector3d fs = (tz * ez + tt * et) * A;
+            const Eigen::Vector3d fo = (-(couette * dVz + 0.5 * h * dpdz) * ez - (couette * dVt + 0.5 * h * dpdy) * et) * A;
             Eigen::Vector3d fb = Eigen::Vector3d::Zero();
             if (dV > 0.0) fb = opt.boundaryFriction * pc * A / dV * (dVz * ez + dVt * et);
             out.pressureForce += fp;
             out.contactForce += fc;
             out.shearForce += fs;
+            out.outerShearForce += fo;
             out.boundaryFrictionForce += fb;
             out.moment += (r - opt.referencePoint).cross(fp + fc + fs + fb);
             out.viscousDissipation +=

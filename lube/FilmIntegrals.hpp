@@ -11,7 +11,11 @@
 //   boundary  F_b = ∫ μ_b p_c (V_out − V_in)/|V_out − V_in| dA
 // with φ the film fraction (1 unless given: Couette shear scales with it in cavitated zones).
 // The moment is that of all four about the given reference point.
-// Viscous dissipation Φ = ∫ [φ η |V_out − V_in|²/h + h³|∇p|²/(12η)] dA is frame-invariant.
+// The outer body (liner, sleeve) feels the shear τ_out = −φ η (V_out − V_in)/h − (h/2) ∇p
+// (the Couette part opposite, the Poiseuille part the same as on the inner body) and −F_b.
+// Viscous dissipation Φ = ∫ [φ η |V_out − V_in|²/h + h³|∇p|²/(12η)] dA is frame-invariant and
+// never negative; with the boundary friction power it is the power the contact loses
+// (docs/results-format.md, "Friction").
 #include <Eigen/Core>
 
 #include "lube/FilmGrid.hpp"
@@ -33,6 +37,9 @@ struct FilmLoads {
     Eigen::Vector3d contactForce = Eigen::Vector3d::Zero();          ///< N
     Eigen::Vector3d shearForce = Eigen::Vector3d::Zero();            ///< N
     Eigen::Vector3d boundaryFrictionForce = Eigen::Vector3d::Zero(); ///< N
+    /// N, hydrodynamic shear on the OUTER body (the liner: what a floating-liner rig measures
+    /// of the film); its boundary friction is −boundaryFrictionForce
+    Eigen::Vector3d outerShearForce = Eigen::Vector3d::Zero();
     Eigen::Vector3d moment = Eigen::Vector3d::Zero();  ///< N·m, all forces, about referencePoint
     double viscousDissipation = 0.0;      ///< W
     double boundaryFrictionPower = 0.0;   ///< W: ∫ μ_b p_c |V_out − V_in| dA
@@ -43,6 +50,8 @@ struct FilmLoads {
     double filmArea = 0.0;                ///< m², all non-Void nodes
 
     Eigen::Vector3d frictionForce() const { return shearForce + boundaryFrictionForce; }
+    /// W, ≥ 0: viscous dissipation + boundary friction power
+    double dissipatedPower() const { return viscousDissipation + boundaryFrictionPower; }
     Eigen::Vector3d totalForce() const {
         return pressureForce + contactForce + shearForce + boundaryFrictionForce;
     }

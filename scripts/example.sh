@@ -56,4 +56,4 @@ echo
 echo "Results: $out/{hd,ehd,thermal_hd}/history.csv and summary.json; plots in $out/plots/;"
 echo "temperatures and thermal expansion in $out/thermal/ (piston.vtu, liner.vtu)."
 echo "ParaView: open $out/ehd/film.pvd (film grid: pressure, film thickness, contact, shear) and"
-echo "$out/ehd/piston.pvd (Warp By Vector: 'displacement' with a scale of about 20, 'elastic_displacement' 100-200)."
+echo "$out/ehd/piston.pvd (Warp By Vector: 'displacement_m' with a scale of about 20, 'elastic_displacement_m' 100-200)."

@@ -7,16 +7,25 @@
 Uses the last complete engine cycle of each run (the `cycle` column; --cycle picks another)
 and writes, into --out (default RESULTS_DIR/plots):
 
-  secondary_motion.png  lateral displacement (um), tilt (deg) and side force (kN) over the
-                        crank angle, runs overlaid (HD vs EHD, like Fig. 5 of Dlugos et al. 2016)
-  friction.png          friction force (N) and friction power (W), with cycle averages
+  secondary_motion.png  lateral displacement (um) with the clearance band, tilt (deg) and side
+                        force (kN) with the cylinder pressure over the crank angle, runs overlaid
+                        (HD vs EHD, like Fig. 5 of Dlugos et al. 2016)
+  friction.png          friction force on the liner (N, hydrodynamic and boundary) and the
+                        dissipated power (W), with cycle averages
+  contact.png           asperity contact force (N) and boundary friction on the liner (N)
   film.png              minimum film thickness (um) and maximum film pressure (MPa)
+  film_maps.png         film pressure (max over the skirt's height) and film thickness (min over
+                        it) as maps over the circumferential angle and the crank angle, from the
+                        VTK snapshots of RESULTS_DIR (film.pvd); skipped without snapshots
 
-Needs only numpy and matplotlib (Debian: python3-numpy, python3-matplotlib). Column names,
-units and sign conventions: docs/results-format.md.
+Needs numpy, matplotlib and, for film_maps.png, VTK's Python modules (Debian: python3-numpy,
+python3-matplotlib, python3-vtk9). Column names, units and sign conventions:
+docs/results-format.md.
 """
 import argparse
+import json
 import os
+import re
 import sys
 
 import numpy as np
@@ -25,8 +34,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 
-REQUIRED = ["cycle", "crank_deg", "time_s", "lateral_m", "tilt_rad", "side_force_n",
-            "friction_force_n", "friction_power_w", "min_film_m", "max_pressure_pa"]
+REQUIRED = ["cycle", "crank_deg", "time_s", "lateral_m", "tilt_rad", "side_force_n", "contact_force_n",
+            "liner_friction_hydrodynamic_n", "liner_friction_boundary_n", "dissipated_power_w",
+            "boundary_friction_power_w", "cylinder_pressure_pa", "min_film_m", "max_pressure_pa"]
 STYLES = ["-", "--", "-.", ":"]
 COLORS = ["tab:blue", "tab:red", "tab:green", "tab:purple"]
 
@@ -145,20 +155,47 @@ def save(fig, out_dir, name):
     print(path)
 
 
+def smallest_clearance(directory):
+    """The smallest centred clearance at mid-stroke (m) of summary.json, or None."""
+    try:
+        with open(os.path.join(directory, "summary.json")) as f:
+            return float(json.load(f)["centred_clearance_m"]["mid_stroke"]["min"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
 def plot_secondary_motion(runs, out_dir):
     fig, axes = plt.subplots(3, 1, sharex=True, figsize=(9, 8.5),
                              gridspec_kw={"height_ratios": [1.2, 1.2, 0.9]})
-    for k, (label, sel, _) in enumerate(runs):
+    band = False
+    for k, (label, sel, _, directory) in enumerate(runs):
         style = dict(color=COLORS[k % len(COLORS)], ls=STYLES[k % len(STYLES)], lw=1.3)
         axes[0].plot(sel["crank_deg"], sel["lateral_m"] * 1e6, label=label, **style)
         axes[1].plot(sel["crank_deg"], np.degrees(sel["tilt_rad"]), label=label, **style)
         axes[2].plot(sel["crank_deg"], sel["side_force_n"] * 1e-3, label=label, **style)
+        c = smallest_clearance(directory)
+        if c is not None:
+            band = True
+            for sign in (-1, 1):
+                axes[0].axhline(sign * c * 1e6, color=style["color"], lw=0.8, ls=(0, (6, 3)), alpha=0.7,
+                                label=f"{label}: ±{c * 1e6:.1f} µm clearance" if sign > 0 else None)
     axes[0].set_ylabel("lateral displacement (µm)\n+ = major thrust side")
+    if band:
+        axes[0].text(0.01, 0.02, "dashed: smallest centred clearance at mid-stroke (rigid skirt). With EHD the "
+                     "skirt deforms,\nso the pin axis can move beyond it.", transform=axes[0].transAxes,
+                     fontsize=7, color="0.3", va="bottom")
     axes[1].set_ylabel("tilt (deg)\n+ = top towards thrust side")
     axes[2].set_ylabel("side force (kN)")
+    gas = axes[2].twinx()
+    _, first, _, _ = runs[0]
+    gas.plot(first["crank_deg"], first["cylinder_pressure_pa"] * 1e-6, color="0.55", lw=0.9, ls="-",
+             label=f"cylinder pressure ({runs[0][0]}, absolute)")
+    gas.set_ylabel("cylinder pressure (MPa)", color="0.45")
+    gas.tick_params(axis="y", colors="0.45")
+    gas.legend(loc="lower right", fontsize=7)
     axes[0].set_title("Piston secondary motion" + cycle_note(runs), pad=14)
     for ax in axes:
-        ax.legend(loc="best", fontsize=8)
+        ax.legend(loc="upper right" if ax is axes[2] else "best", fontsize=7)
     decorate_crank_axis(axes)
     fig.tight_layout()
     save(fig, out_dir, "secondary_motion.png")
@@ -166,16 +203,21 @@ def plot_secondary_motion(runs, out_dir):
 
 def plot_friction(runs, out_dir):
     fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 6.5))
-    for k, (label, sel, _) in enumerate(runs):
-        style = dict(color=COLORS[k % len(COLORS)], ls=STYLES[k % len(STYLES)], lw=1.3)
-        axes[0].plot(sel["crank_deg"], sel["friction_force_n"],
-                     label=label, **style)
-        mean_power = cycle_mean(sel, "friction_power_w")
-        axes[1].plot(sel["crank_deg"], sel["friction_power_w"],
-                     label=f"{label} (cycle mean {mean_power:.1f} W)", **style)
-        axes[1].axhline(mean_power, color=style["color"], lw=0.8, ls=":")
-    axes[0].set_ylabel("friction force on the piston (N)\n+ = towards the head")
-    axes[1].set_ylabel("friction power loss (W)")
+    for k, (label, sel, _, _) in enumerate(runs):
+        color = COLORS[k % len(COLORS)]
+        axes[0].plot(sel["crank_deg"], sel["liner_friction_hydrodynamic_n"], color=color, lw=1.3,
+                     ls=STYLES[k % len(STYLES)], label=f"{label}: film shear")
+        if np.any(sel["liner_friction_boundary_n"] != 0.0):
+            axes[0].plot(sel["crank_deg"], sel["liner_friction_boundary_n"], color=color, lw=0.9, ls=":",
+                         label=f"{label}: boundary friction")
+        mean_power = cycle_mean(sel, "dissipated_power_w")
+        mean_boundary = cycle_mean(sel, "boundary_friction_power_w")
+        axes[1].plot(sel["crank_deg"], sel["dissipated_power_w"], color=color, lw=1.3, ls=STYLES[k % len(STYLES)],
+                     label=f"{label} (cycle mean {mean_power:.2f} W, boundary {mean_boundary:.2f} W)")
+        axes[1].axhline(mean_power, color=color, lw=0.8, ls=":")
+    axes[0].set_ylabel("friction force on the liner (N)\n+ = towards the head")
+    axes[1].set_ylabel("dissipated power (W)\nviscous + boundary, ≥ 0")
+    axes[1].set_ylim(bottom=0)
     axes[0].set_title("Skirt friction" + cycle_note(runs), pad=14)
     for ax in axes:
         ax.legend(loc="best", fontsize=8)
@@ -184,9 +226,109 @@ def plot_friction(runs, out_dir):
     save(fig, out_dir, "friction.png")
 
 
+def plot_contact(runs, out_dir):
+    fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 6.0))
+    for k, (label, sel, _, _) in enumerate(runs):
+        style = dict(color=COLORS[k % len(COLORS)], ls=STYLES[k % len(STYLES)], lw=1.3)
+        axes[0].plot(sel["crank_deg"], sel["contact_force_n"], label=label, **style)
+        axes[1].plot(sel["crank_deg"], sel["liner_friction_boundary_n"], label=label, **style)
+    axes[0].set_ylabel("lateral contact force\non the piston (N)")
+    axes[1].set_ylabel("boundary friction\non the liner (N)")
+    axes[0].set_title("Skirt–liner asperity contact" + cycle_note(runs), pad=14)
+    for ax in axes:
+        ax.legend(loc="best", fontsize=8)
+    decorate_crank_axis(axes)
+    fig.tight_layout()
+    save(fig, out_dir, "contact.png")
+
+
+def read_film_snapshots(directory):
+    """The film snapshots of film.pvd: crank angles (deg), theta of the columns (deg) and, per
+    snapshot, the largest pressure (Pa) and the smallest film thickness (m) over each column's
+    skirt nodes (NaN where a column has none). None when the directory has no film.pvd."""
+    pvd = os.path.join(directory, "film.pvd")
+    if not os.path.isfile(pvd):
+        return None
+    try:
+        from vtkmodules.vtkIOXML import vtkXMLStructuredGridReader
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+    except ImportError:
+        raise PlotError("film_maps.png needs VTK's Python modules (Debian python3-vtk9: "
+                        "bash scripts/install_deps.sh --with-python)") from None
+    with open(pvd) as f:
+        files = re.findall(r'file="([^"]+)"', f.read())
+    if not files:
+        return None
+    crank, p_max, h_min, theta = [], [], [], None
+    for name in files:
+        path = os.path.join(directory, name)
+        reader = vtkXMLStructuredGridReader()
+        reader.SetFileName(path)
+        reader.Update()
+        grid = reader.GetOutput()
+        dims = grid.GetDimensions()
+        fd, pd = grid.GetFieldData(), grid.GetPointData()
+        if fd.GetArray("crank_deg") is None or pd.GetArray("pressure_pa") is None:
+            raise PlotError(f"'{path}' lacks the field data 'crank_deg' or the array 'pressure_pa'")
+        shape = (dims[1], dims[0])  # axial rows, theta columns
+        p = vtk_to_numpy(pd.GetArray("pressure_pa")).reshape(shape)
+        h = vtk_to_numpy(pd.GetArray("film_thickness_m")).reshape(shape)
+        kind = vtk_to_numpy(pd.GetArray("node_kind")).reshape(shape)
+        xyz = vtk_to_numpy(grid.GetPoints().GetData()).reshape(shape + (3,))
+        if theta is None:  # -90 ... 270 deg: the thrust (0) and antithrust (180) sides each in one piece
+            theta = (np.degrees(np.arctan2(xyz[0, :, 1], xyz[0, :, 0])) + 90.0) % 360.0 - 90.0
+        skirt = kind != 2
+        with np.errstate(invalid="ignore"):
+            p_max.append(np.where(skirt.any(axis=0), np.where(skirt, p, -np.inf).max(axis=0), np.nan))
+            h_min.append(np.where(skirt.any(axis=0), np.where(skirt, h, np.inf).min(axis=0), np.nan))
+        crank.append(fd.GetArray("crank_deg").GetValue(0))
+    order = np.argsort(crank, kind="stable")
+    return np.asarray(crank)[order], theta, np.asarray(p_max)[order], np.asarray(h_min)[order]
+
+
+def plot_film_maps(label, directory, out_dir):
+    snaps = read_film_snapshots(directory)
+    if snaps is None:
+        print(f"plot_results.py: note: '{directory}' has no film snapshots (output.vtk_every_deg: 0): "
+              f"no film_maps.png", file=sys.stderr)
+        return
+    crank, theta, p_max, h_min = snaps
+    if len(crank) < 2:
+        print(f"plot_results.py: note: '{directory}' has only {len(crank)} film snapshot: no film_maps.png",
+              file=sys.stderr)
+        return
+    order = np.argsort(theta, kind="stable")  # the seam column (θ repeated) drops out below
+    theta, p_max, h_min = theta[order], p_max[:, order], h_min[:, order]
+    keep = np.concatenate(([True], np.diff(theta) > 1e-9))
+    theta, p_max, h_min = theta[keep], p_max[:, keep], h_min[:, keep]
+    fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 7.0))
+    p = np.ma.masked_invalid(p_max * 1e-6)  # masked: no skirt in that column
+    m0 = axes[0].pcolormesh(crank, theta, p.T, cmap="viridis", shading="nearest")
+    fig.colorbar(m0, ax=axes[0], label="film pressure, max over z (MPa, gauge)")
+    h = np.ma.masked_invalid(h_min * 1e6)
+    m1 = axes[1].pcolormesh(crank, theta, h.T, cmap="magma", vmin=min(0.0, float(h.min())), shading="nearest")
+    fig.colorbar(m1, ax=axes[1], label="film thickness, min over z (µm)")
+    for ax in axes:
+        ax.set_ylabel("θ (deg): 0 major thrust,\n180 minor thrust side")
+        ax.set_yticks(np.arange(-90, 271, 45))
+        ax.set_facecolor("0.85")  # grey: no skirt
+        ax.set_xlim(0, 720)
+        ax.set_xticks(np.arange(0, 721, 90))
+        for x in (180, 360, 540):
+            ax.axvline(x, color="w", lw=0.6, ls=":")
+    axes[1].set_xlabel("crank angle (deg)")
+    axes[0].set_title(f"Skirt film over the cycle: {label} ({len(crank)} snapshots, output.vtk_every_deg)", pad=10)
+    fig.tight_layout()
+    save(fig, out_dir, f"film_maps_{safe_name(label)}.png")
+
+
+def safe_name(label):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", label) or "run"
+
+
 def plot_film(runs, out_dir):
     fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 6.5))
-    for k, (label, sel, _) in enumerate(runs):
+    for k, (label, sel, _, _) in enumerate(runs):
         style = dict(color=COLORS[k % len(COLORS)], ls=STYLES[k % len(STYLES)], lw=1.3)
         axes[0].plot(sel["crank_deg"], sel["min_film_m"] * 1e6, label=label, **style)
         axes[1].plot(sel["crank_deg"], sel["max_pressure_pa"] * 1e-6, label=label, **style)
@@ -202,9 +344,9 @@ def plot_film(runs, out_dir):
 
 
 def cycle_note(runs):
-    cycles = {f"{c}{note}" for _, _, (c, note) in runs}
+    cycles = {f"{c}{note}" for _, _, (c, note), _ in runs}
     return f", cycle {cycles.pop()}" if len(cycles) == 1 else ", cycles " + ", ".join(
-        f"{label}: {c}{note}" for label, _, (c, note) in runs)
+        f"{label}: {c}{note}" for label, _, (c, note), _ in runs)
 
 
 def main(argv=None):
@@ -229,7 +371,7 @@ def main(argv=None):
         for label, d in zip(labels, dirs):
             path, h = read_history(d)
             sel, c, note = select_cycle(path, h, args.cycle)
-            runs.append((label, sel, (c, note)))
+            runs.append((label, sel, (c, note), d))
         out_dir = args.out or os.path.join(args.results, "plots")
         try:
             os.makedirs(out_dir, exist_ok=True)
@@ -237,7 +379,10 @@ def main(argv=None):
             raise PlotError(f"cannot create the output directory '{out_dir}': {e.strerror}") from None
         plot_secondary_motion(runs, out_dir)
         plot_friction(runs, out_dir)
+        plot_contact(runs, out_dir)
         plot_film(runs, out_dir)
+        for label, _, _, d in runs:
+            plot_film_maps(label, d, out_dir)
     except (PlotError, OSError) as e:
         print(f"plot_results.py: error: {e}", file=sys.stderr)
         return 1

@@ -62,6 +62,7 @@ nlohmann::json summaryJson(const cosim::EngineCase& c, const cosim::PistonSimula
         const cosim::CycleMetrics m = cosim::cycleMetrics(cycle, sim.dynamics(), volume);
         d["cycle"] = cycle.back().cycle;
         d["friction_power_mean_w"] = m.frictionPowerMean;
+        d["boundary_friction_power_mean_w"] = m.boundaryFrictionPowerMean;
         d["friction_energy_per_cycle_j"] = m.frictionEnergy;
         d["fmep_pa"] = m.fmep;
         d["slap_kinetic_energy_max_j"] = m.slapEnergyMax;
@@ -174,7 +175,10 @@ void runCase(const RunArgs& a) {
             liner.origin = Eigen::Vector3d(0.0, 0.0, s.pinHeight - s.linerOffset);
             liner.displacement = sim.liner()->displacement(s.linerModal);
         }
-        fields.write(s.continuousDeg, film, sim.piston() ? &piston : nullptr,
+        // Time axis: the crank angle of the written cycle, time.start_deg … start_deg + 720 (0–720
+        // with the default start), so that it reads as history.csv's crank_deg.
+        const cosim::SnapshotTime at{s.continuousDeg - 720.0 * (s.cycle - 1), s.crankDeg, s.cycle};
+        fields.write(at, film, sim.piston() ? &piston : nullptr,
                      sim.liner() ? &liner : nullptr);
         outputInRun += w.seconds();
     };
@@ -185,8 +189,13 @@ void runCase(const RunArgs& a) {
             if (!body) continue;
             const std::string sub = dir + (body == sim.piston() ? "/modes_piston" : "/modes_liner");
             std::filesystem::create_directories(sub);
+            const Stopwatch one;
+            bool reused = false;
             cosim::writeModeShapes(sub, body->body().mesh, body->body().shapes, body->body().frequenciesHz,
-                                   Eigen::VectorXd());
+                                   Eigen::VectorXd(), &reused);
+            log(fmt::format("mode shapes of the {} ({} modes): {} {}", body == sim.piston() ? "piston" : "liner",
+                            body->modes(), reused ? "unchanged, kept in" : fmt::format("written in {:.1f} s to", one.seconds()),
+                            sub));
         }
         outputSeconds += w.seconds();
     }

@@ -80,8 +80,8 @@ void runThermal(const ThermalArgs& a) {
     auto vtu = [&](const std::string& name, const cosim::ThermalBodyResult& b) {
         const std::string path = (fs::path(dir) / name).string();
         cosim::writeVtu(path, b.mesh,
-                        {{"temperature", b.temperature.transpose()},
-                         {"thermal_displacement", b.deformation.displacement.reshaped(3, b.mesh.numNodes())}},
+                        {{"temperature_k", b.temperature.transpose()},
+                         {"thermal_displacement_m", b.deformation.displacement.reshaped(3, b.mesh.numNodes())}},
                         {{"reference_temperature_k", c.referenceTemperature}});
         files.push_back(name);
     };

@@ -126,7 +126,7 @@ void writeThermal(const fs::path& path, const std::vector<Group>& groups, const 
     const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     ASSERT_GE(file, 0);
     attribute(file, "format", format);
-    attribute(file, "version", version);
+    attribute(file, "format_version", version);
     for (const Group& g : groups) {
         const hid_t grp = H5Gcreate2(file, ("/" + g.name).c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
         dataset(grp, "axial", g.axial, {g.axial.size()});
@@ -528,7 +528,7 @@ TEST(ThermalFile, BadFilesGiveClearErrors) {
         error(dir / "format.h5"),
         AllOf(HasSubstr("format.h5"), HasSubstr("'format' is \"flexehd-reduced-body\", expected \"flexehd-thermal\"")));
     writeThermal(dir / "version.h5", {{"piston", {-0.03, 0.02}, th, u}}, kThermalFormat, 2);
-    EXPECT_THAT(error(dir / "version.h5"), AllOf(HasSubstr("version.h5"), HasSubstr("'version' is 2")));
+    EXPECT_THAT(error(dir / "version.h5"), AllOf(HasSubstr("version.h5"), HasSubstr("'format_version' is 2")));
     Group noTheta{"liner", {-0.17, 0.0}, th, u};
     noTheta.writeTheta = false;
     writeThermal(dir / "theta.h5", {noTheta});
@@ -551,7 +551,7 @@ TEST(ThermalFile, BadFilesGiveClearErrors) {
     {
         const hid_t f = H5Fcreate((dir / "empty.h5").c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
         attribute(f, "format", std::string(kThermalFormat));
-        attribute(f, "version", 1);
+        attribute(f, "version", 1);  // the root attribute's name in files of earlier builds
         H5Fclose(f);
     }
     EXPECT_THAT(error(dir / "empty.h5"), HasSubstr("neither a /piston nor a /liner group"));

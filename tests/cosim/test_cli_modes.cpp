@@ -60,7 +60,7 @@ TEST(CliModes, ParaViewFilesOfFreeBody) {
         std::string head(2000, '\0');
         vtu.read(head.data(), head.size());
         EXPECT_THAT(head, HasSubstr("type=\"UnstructuredGrid\""));
-        EXPECT_THAT(head, HasSubstr("Name=\"displacement\" NumberOfComponents=\"3\" format=\"appended\""));
+        EXPECT_THAT(head, HasSubstr("Name=\"displacement_m\" NumberOfComponents=\"3\" format=\"appended\""));
         EXPECT_THAT(head, HasSubstr("Name=\"frequency_hz\""));
     }
     for (const auto& e : std::filesystem::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".tmp");

@@ -86,7 +86,7 @@ TEST(CliReducedBody, ExportModes) {
     std::ifstream vtu(out / "mode_007.vtu");
     std::string head(2000, '\0');
     vtu.read(head.data(), head.size());
-    EXPECT_THAT(head, HasSubstr("Name=\"displacement\""));
+    EXPECT_THAT(head, HasSubstr("Name=\"displacement_m\""));
     EXPECT_THAT(head, HasSubstr("Name=\"eigenvalue_rad2_per_s2\""));
 }
 

@@ -66,7 +66,11 @@ StepRecord sampleRecord(int k) {
     r.filmMoment = 1.0 / 7.0;
     r.contactForce = 0.0;
     r.frictionForce = -42.000000001;
-    r.frictionPower = 1.0e6 / 3.0;
+    r.linerHydrodynamicFriction = 41.5;
+    r.linerBoundaryFriction = -1.0 / 3.0;
+    r.dissipatedPower = 1.0e6 / 3.0;
+    r.boundaryFrictionPower = 2.0 / 3.0;
+    r.cylinderPressure = 4.5e6 + k;
     r.minFilm = 1.234567890123e-6;
     r.maxPressure = 7.77777777777e7;
     r.couplingIterations = 3 + k;
@@ -89,7 +93,9 @@ void expectPrintedEqual(const StepRecord& written, const StepRecord& read) {
                                          &StepRecord::lateralVelocity, &StepRecord::tiltRate,
                                          &StepRecord::sideForce,       &StepRecord::filmForce,
                                          &StepRecord::filmMoment,      &StepRecord::contactForce,
-                                         &StepRecord::frictionForce,   &StepRecord::frictionPower,
+                                         &StepRecord::frictionForce,   &StepRecord::dissipatedPower,
+                                         &StepRecord::linerHydrodynamicFriction, &StepRecord::linerBoundaryFriction,
+                                         &StepRecord::boundaryFrictionPower, &StepRecord::cylinderPressure,
                                          &StepRecord::minFilm,         &StepRecord::maxPressure,
                                          &StepRecord::stepDeg};
     for (auto m : reals) EXPECT_EQ(read.*m, printed(written.*m));  // exact, not approximate
@@ -108,7 +114,7 @@ TEST(HistoryWriter, HeaderWithUnitsIsTheFirstLineThenComments) {
     EXPECT_GE(comments, 2u) << "expected a few '#' comment lines";
     ASSERT_EQ(comments + 1, l.size());
     EXPECT_THAT(l[k], AllOf(HasSubstr("crank_deg,time_s,lateral_m,tilt_rad,"), HasSubstr("side_force_n"),
-                            HasSubstr("friction_power_w"), HasSubstr("min_film_m"), HasSubstr("max_pressure_pa"),
+                            HasSubstr("dissipated_power_w"), HasSubstr("min_film_m"), HasSubstr("max_pressure_pa"),
                             HasSubstr("coupling_iterations")));
     std::string joined;
     for (const auto& c : HistoryWriter::columns()) joined += (joined.empty() ? "" : ",") + c;
@@ -159,9 +165,9 @@ TEST(HistoryWriter, NonFiniteValueIsRefusedNamingColumnAndCrankAngle) {
     EXPECT_THAT([&] { w.append(bad); },
                 ThrowsMessage<std::runtime_error>(AllOf(HasSubstr("'tilt_rad'"), HasSubstr("361.25"))));
     bad.tilt = 0.0;
-    bad.frictionPower = -std::numeric_limits<double>::infinity();
+    bad.dissipatedPower = -std::numeric_limits<double>::infinity();
     EXPECT_THAT([&] { w.append(bad); },
-                ThrowsMessage<std::runtime_error>(AllOf(HasSubstr("'friction_power_w'"), HasSubstr("361.25"))));
+                ThrowsMessage<std::runtime_error>(AllOf(HasSubstr("'dissipated_power_w'"), HasSubstr("361.25"))));
     EXPECT_EQ(slurp(path), before) << "a refused record must leave no partial line";
     w.append(sampleRecord(2));  // the writer stays usable
     EXPECT_EQ(HistoryWriter::read(path.string()).size(), 2u);
@@ -269,6 +275,8 @@ struct FilmFixture {
 
 const std::vector<double> kAxial{0.0, 0.004, 0.010, 0.018, 0.030};  // non-uniform
 
+SnapshotTime at(double time) { return {time, std::fmod(time, 720.0), std::isfinite(time) ? 1 + int(time / 720.0) : 1}; }
+
 vtkSmartPointer<vtkStructuredGrid> readVts(const fs::path& p) {
     vtkNew<vtkXMLStructuredGridReader> reader;
     reader->SetFileName(p.c_str());
@@ -318,7 +326,7 @@ TEST(FieldSeriesWriter, PeriodicFilmIsClosedAtTheSeam) {
     FilmFixture f(lube::FilmGrid::fullCircumference(0.043, kAxial, 12, 0.1));
     f.grid.voidNode(f.grid.index(2, 3));
     FieldSeriesWriter w(dir.string());
-    w.write(360.0, f.film, nullptr, nullptr);
+    w.write(at(360.0), f.film, nullptr, nullptr);
 
     const auto vts = readVts(dir / "vtk" / "film_000000.vts");
     int dims[3];
@@ -342,13 +350,17 @@ TEST(FieldSeriesWriter, PeriodicFilmIsClosedAtTheSeam) {
     EXPECT_EQ(vts->GetPointData()->GetArray("node_kind")->GetTuple1(13 + 5), 0.0);      // Film
     ASSERT_NE(vts->GetFieldData()->GetArray("TimeValue"), nullptr);
     EXPECT_EQ(vts->GetFieldData()->GetArray("TimeValue")->GetTuple1(0), 360.0);
+    ASSERT_NE(vts->GetFieldData()->GetArray("crank_deg"), nullptr);
+    EXPECT_EQ(vts->GetFieldData()->GetArray("crank_deg")->GetTuple1(0), 360.0);
+    ASSERT_NE(vts->GetFieldData()->GetArray("cycle"), nullptr);
+    EXPECT_EQ(vts->GetFieldData()->GetArray("cycle")->GetTuple1(0), 1.0);
 }
 
 TEST(FieldSeriesWriter, OpenArcHasNoSeamAndOptionalFieldsMayBeLeftOut) {
     const auto dir = test::scratchDir();
     FilmFixture f(lube::FilmGrid::arc(0.043, kAxial, -0.8, 0.8, 9));
     FieldSeriesWriter w(dir.string());
-    w.write(0.5, f.film, nullptr, nullptr);
+    w.write(at(0.5), f.film, nullptr, nullptr);
     auto vts = readVts(dir / "vtk" / "film_000000.vts");
     int dims[3];
     vts->GetDimensions(dims);
@@ -361,7 +373,7 @@ TEST(FieldSeriesWriter, OpenArcHasNoSeamAndOptionalFieldsMayBeLeftOut) {
     f.film.contactPressure.resize(0);
     f.film.shearStress.resize(0);
     f.film.cavitation.resize(0);
-    w.write(1.0, f.film, nullptr, nullptr);
+    w.write(at(1.0), f.film, nullptr, nullptr);
     vts = readVts(dir / "vtk" / "film_000001.vts");
     EXPECT_NE(vts->GetPointData()->GetArray("pressure_pa"), nullptr);
     EXPECT_NE(vts->GetPointData()->GetArray("film_thickness_m"), nullptr);
@@ -410,7 +422,7 @@ TEST(FieldSeriesWriter, BodiesAndCollectionsListTheSnapshotsInOrder) {
     const double times[] = {10.0, 10.25, 370.5, 729.75};
     for (int s = 0; s < 4; ++s) {
         piston.origin.z() = -0.02 - 0.001 * s;
-        w.write(times[s], f.film, &piston, s % 2 == 0 ? &liner : nullptr);
+        w.write(at(times[s]), f.film, &piston, s % 2 == 0 ? &liner : nullptr);
     }
     EXPECT_EQ(w.count(), 4);
 
@@ -440,8 +452,8 @@ TEST(FieldSeriesWriter, BodiesAndCollectionsListTheSnapshotsInOrder) {
         double x[3];
         vtu->GetPoint(n, x);
         for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(x[c], mesh.nodes(c, n) + piston.origin(c));
-        auto* u = vtu->GetPointData()->GetArray("displacement");
-        auto* e = vtu->GetPointData()->GetArray("elastic_displacement");
+        auto* u = vtu->GetPointData()->GetArray("displacement_m");
+        auto* e = vtu->GetPointData()->GetArray("elastic_displacement_m");
         ASSERT_NE(u, nullptr);
         ASSERT_NE(e, nullptr);
         ASSERT_EQ(u->GetNumberOfComponents(), 3);
@@ -451,8 +463,14 @@ TEST(FieldSeriesWriter, BodiesAndCollectionsListTheSnapshotsInOrder) {
         }
     }
     const auto linerVtu = readVtu(dir / "vtk" / "liner_000002.vtu");
-    EXPECT_NE(linerVtu->GetPointData()->GetArray("displacement"), nullptr);
-    EXPECT_EQ(linerVtu->GetPointData()->GetArray("elastic_displacement"), nullptr);  // not given
+    EXPECT_NE(linerVtu->GetPointData()->GetArray("displacement_m"), nullptr);
+    EXPECT_EQ(linerVtu->GetPointData()->GetArray("elastic_displacement_m"), nullptr);  // not given
+    // Field data of the body files: the snapshot's crank angle and cycle (729.75° = cycle 2 at 9.75°).
+    const auto last = readVtu(dir / "vtk" / "piston_000003.vtu");
+    ASSERT_NE(last->GetFieldData()->GetArray("crank_deg"), nullptr);
+    EXPECT_EQ(last->GetFieldData()->GetArray("crank_deg")->GetTuple1(0), 9.75);
+    EXPECT_EQ(last->GetFieldData()->GetArray("cycle")->GetTuple1(0), 2.0);
+    EXPECT_EQ(last->GetFieldData()->GetArray("TimeValue")->GetTuple1(0), 729.75);
 }
 
 TEST(FieldSeriesWriter, BadSnapshotsAreRefusedBeforeAnyFileIsWritten) {
@@ -464,30 +482,30 @@ TEST(FieldSeriesWriter, BadSnapshotsAreRefusedBeforeAnyFileIsWritten) {
 
     FilmField bad = f.film;
     bad.pressure(f.grid.index(3, 5)) = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_THAT([&] { w.write(1.0, bad, &piston, nullptr); },
+    EXPECT_THAT([&] { w.write(at(1.0), bad, &piston, nullptr); },
                 ThrowsMessage<std::runtime_error>(
                     AllOf(HasSubstr("'pressure'"), HasSubstr("axial row 3"), HasSubstr("θ column 5"))));
     bad = f.film;
     bad.filmThickness.resize(7);
-    EXPECT_THAT([&] { w.write(1.0, bad, &piston, nullptr); },
+    EXPECT_THAT([&] { w.write(at(1.0), bad, &piston, nullptr); },
                 ThrowsMessage<std::runtime_error>(AllOf(HasSubstr("'filmThickness'"), HasSubstr("7 values"))));
     bad = f.film;
     bad.cavitation(0) = std::numeric_limits<double>::infinity();
-    EXPECT_THAT([&] { w.write(1.0, bad, &piston, nullptr); },
+    EXPECT_THAT([&] { w.write(at(1.0), bad, &piston, nullptr); },
                 ThrowsMessage<std::runtime_error>(HasSubstr("'cavitation'")));
     BodyField badBody = piston;
     badBody.displacement(7) = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_THAT([&] { w.write(1.0, f.film, &badBody, nullptr); },
+    EXPECT_THAT([&] { w.write(at(1.0), f.film, &badBody, nullptr); },
                 ThrowsMessage<std::runtime_error>(
                     AllOf(HasSubstr("piston"), HasSubstr("'displacement'"), HasSubstr("Gmsh tag 13"))));
-    EXPECT_THAT([&] { w.write(std::numeric_limits<double>::quiet_NaN(), f.film, nullptr, nullptr); },
+    EXPECT_THAT([&] { w.write(at(std::numeric_limits<double>::quiet_NaN()), f.film, nullptr, nullptr); },
                 ThrowsMessage<std::runtime_error>(HasSubstr("not finite")));
     EXPECT_EQ(w.count(), 0);
     EXPECT_TRUE(fs::is_empty(dir / "vtk"));
     EXPECT_FALSE(fs::exists(dir / "film.pvd"));
 
-    w.write(5.0, f.film, &piston, nullptr);
-    EXPECT_THAT([&] { w.write(5.0, f.film, &piston, nullptr); },
+    w.write(at(5.0), f.film, &piston, nullptr);
+    EXPECT_THAT([&] { w.write(at(5.0), f.film, &piston, nullptr); },
                 ThrowsMessage<std::runtime_error>(HasSubstr("strictly increasing")));
     EXPECT_EQ(readPvd(dir / "film.pvd").size(), 1u);
 }
@@ -511,7 +529,7 @@ TEST(ModeShapeExport, WrittenOnceAndRewrittenWhenTheDataChanges) {
     EXPECT_EQ(slurp(dir / "modes.fingerprint"), modeShapeFingerprint(mesh, shapes, freq, Eigen::VectorXd()) + "\n");
     const auto vtu = readVtu(dir / "mode_002.vtu");
     ASSERT_EQ(vtu->GetNumberOfPoints(), 4);
-    auto* u = vtu->GetPointData()->GetArray("displacement");
+    auto* u = vtu->GetPointData()->GetArray("displacement_m");
     ASSERT_NE(u, nullptr);
     const double scale = u->GetComponent(0, 0) / shapes(0, 1);  // the viewing scale, same for all
     for (vtkIdType n = 0; n < 4; ++n)

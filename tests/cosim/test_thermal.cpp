@@ -177,7 +177,7 @@ TEST(ThermalCli, WritesThermalFileWithAgreedLayoutAndVtu) {
     EXPECT_EQ(stringAttribute(file, "format"), "flexehd-thermal");
     {
         int version = 0;
-        const hid_t a = H5Aopen(file, "version", H5P_DEFAULT);
+        const hid_t a = H5Aopen(file, "format_version", H5P_DEFAULT);
         H5Aread(a, H5T_NATIVE_INT, &version);
         H5Aclose(a);
         EXPECT_EQ(version, 1);
@@ -187,6 +187,12 @@ TEST(ThermalCli, WritesThermalFileWithAgreedLayoutAndVtu) {
         ASSERT_GE(grp, 0) << g;
         EXPECT_EQ(stringAttribute(grp, "units"), "m");
         H5Gclose(grp);
+        for (const auto& [name, unit] : {std::pair{"axial", "m"}, {"theta", "rad"}, {"radial_displacement", "m"}, {"on_surface", "1"}}) {
+            const hid_t d = H5Dopen2(file, (g + "/" + name).c_str(), H5P_DEFAULT);
+            ASSERT_GE(d, 0) << g << "/" << name;
+            EXPECT_EQ(stringAttribute(d, "units"), unit) << g << "/" << name;
+            H5Dclose(d);
+        }
         EXPECT_EQ(dims(file, g + "/axial"), std::vector<hsize_t>({16}));
         EXPECT_EQ(dims(file, g + "/theta"), std::vector<hsize_t>({24}));
         EXPECT_EQ(dims(file, g + "/radial_displacement"), std::vector<hsize_t>({16, 24}));

@@ -62,6 +62,43 @@ TEST(InclinedSlider, LoadConvergesAtSecondOrder) {
     EXPECT_LT(prev / exact, 1e-4);
 }
 
+// Friction of the inclined slider on both surfaces (h = h0[1 + K(1 − z/B)], the lower surface
+// sliding at U, Reynolds' equation integrated in closed form with p(0) = p(B) = 0, h* =
+// 2h0(1 + K)/(2 + K)): per width W, on the sliding surface F = −(ηUB/h0)[4 ln(1+K)/K − 6/(2+K)],
+// on the stationary one F = (ηUB/h0)[6/(2+K) − 2 ln(1+K)/K] (Hamrock, Fundamentals of Fluid Film
+// Lubrication, fixed-incline slider). The stationary surface does no work, so the viscous
+// dissipation equals the sliding surface's power −F U.
+TEST(InclinedSlider, FrictionOnBothSurfacesAndDissipation) {
+    const double B = 0.02, h0 = 10e-6, K = 1.0, mu = 0.05, U = 5.0;
+    const double scale = mu * U * B / h0;
+    const double inner = -(4.0 * std::log(1.0 + K) / K - 6.0 / (2.0 + K));
+    const double outer = 6.0 / (2.0 + K) - 2.0 * std::log(1.0 + K) / K;
+    double prevInner = 0.0, prevOuter = 0.0;
+    for (int n : {41, 81, 161}) {
+        ReynoldsOptions opt;
+        opt.control.tolerance = 1e-11;
+        ReynoldsSolver rs(flatPad(FilmGrid::uniform(0.0, B, n)), Lubricant(mu), opt);
+        FilmState st;
+        st.h.resize(rs.grid().size());
+        for (int k = 0; k < rs.grid().size(); ++k) st.h[k] = h0 * (1 + K * (1 - rs.grid().z(rs.grid().axialIndex(k)) / B));
+        st.inner.axial = U;
+        const FilmLoads f = integrateFilm(rs.grid(), st, rs.lubricant(), rs.solve(st).pressure);
+        const double W = padWidth(rs.grid());
+        const double ei = std::abs(f.shearForce.z() / (scale * W) - inner);
+        const double eo = std::abs(f.outerShearForce.z() / (scale * W) - outer);
+        if (prevInner > 0.0) {
+            EXPECT_GT(prevInner / ei, 3.5) << "sliding surface, n = " << n;
+            EXPECT_GT(prevOuter / eo, 3.5) << "stationary surface, n = " << n;
+        }
+        prevInner = ei;
+        prevOuter = eo;
+        EXPECT_NEAR(f.dissipatedPower() / (-inner * scale * W * U), 1.0, n == 161 ? 1e-4 : 2e-3) << "n = " << n;
+        EXPECT_GT(f.viscousDissipation, 0.0);
+    }
+    EXPECT_LT(prevInner / std::abs(inner), 1e-4);
+    EXPECT_LT(prevOuter / std::abs(outer), 1e-4);
+}
+
 // Non-uniform (smoothly graded) axial spacing: still converges to the exact load at 2nd order.
 TEST(InclinedSlider, NonUniformAxialSpacing) {
     const double exact = 6.0 * (std::log(2.0) - 2.0 / 3.0);
