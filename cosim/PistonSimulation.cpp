@@ -230,7 +230,7 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
             ev.pc[k] = asperity + hard;
             if (hard > 0.0) {
                 ev.pcHard[k] = hard;
-                ev.hardForce -= hard * g.area(k) * std::cos(g.theta(g.thetaIndex(k)));
+                ev.hardForce -= hard * g.surfaceArea(k) * std::cos(g.theta(g.thetaIndex(k)));
             }
         }
         if (ev.h[k] < floor) {

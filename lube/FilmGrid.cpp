@@ -1,6 +1,8 @@
 #include "lube/FilmGrid.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +45,15 @@ FilmGrid::FilmGrid(double radius, std::vector<double> axial, int nTheta, bool pe
         edges_[static_cast<int>(Edge::ArcEnd)].condition = EdgeCondition::Symmetry;
     }
     refreshKinds();
+    resetColumnGeometry();
+}
+
+void FilmGrid::resetColumnGeometry() {
+    const auto nt = static_cast<std::size_t>(nTheta_);
+    cvWidth_.assign(nt, dTheta_);
+    if (!periodic_) cvWidth_.front() = cvWidth_.back() = 0.5 * dTheta_;
+    coveredWidth_ = cvWidth_;
+    faceAngle_.assign(nt, dTheta_);
 }
 
 FilmGrid FilmGrid::fullCircumference(double radius, std::vector<double> axial, int nTheta,
@@ -84,9 +95,68 @@ double FilmGrid::axialWidth(int i) const {
     return lo + hi;
 }
 
-double FilmGrid::angularWidth(int j) const {
-    if (periodic_) return dTheta_;
-    return (j == 0 || j == nTheta_ - 1) ? 0.5 * dTheta_ : dTheta_;
+void FilmGrid::restrictToArcs(std::vector<std::pair<double, double>> arcs) {
+    if (arcs.empty()) throw std::invalid_argument("FilmGrid::restrictToArcs: no arc given");
+    const double turn = 2.0 * kPi;
+    for (const auto& [lo, hi] : arcs)
+        if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo) || (periodic_ && hi - lo >= turn))
+            throw std::invalid_argument("FilmGrid::restrictToArcs: arc [" + std::to_string(lo) + ", " +
+                                        std::to_string(hi) + "] rad must have lo < hi" +
+                                        (periodic_ ? " and span less than a turn" : ""));
+    resetColumnGeometry();
+    arcs_ = std::move(arcs);
+    // Position of column j in arc a (θ wrapped into [lo, lo + 2π) on a full circumference), or
+    // NaN when it lies outside.
+    const double eps = 1e-12 * dTheta_;
+    auto positionIn = [&](int j, const std::pair<double, double>& a) {
+        double t = theta(j);
+        const double from = a.first - eps;
+        if (periodic_) t = from + std::fmod(std::fmod(t - from, turn) + turn, turn);
+        return t >= from && t <= a.second + eps ? t : std::numeric_limits<double>::quiet_NaN();
+    };
+    const auto nt = static_cast<std::size_t>(nTheta_);
+    std::vector<int> arcOf(nt, -1);
+    std::vector<double> pos(nt, 0.0);
+    for (int j = 0; j < nTheta_; ++j)
+        for (std::size_t a = 0; a < arcs_.size(); ++a) {
+            const double t = positionIn(j, arcs_[a]);
+            if (std::isnan(t)) continue;
+            arcOf[std::size_t(j)] = int(a);
+            pos[std::size_t(j)] = t;
+            break;
+        }
+    for (int j = 0; j < nTheta_; ++j) {
+        const auto sj = static_cast<std::size_t>(j);
+        if (arcOf[sj] < 0) {
+            for (int i = 0; i < nAxial(); ++i) voidNode(index(i, j));
+            continue;
+        }
+        const auto& [lo, hi] = arcs_[std::size_t(arcOf[sj])];
+        const bool hasRight = periodic_ || j + 1 < nTheta_, hasLeft = periodic_ || j > 0;
+        const std::size_t jr = std::size_t((j + 1) % nTheta_), jl = std::size_t((j + nTheta_ - 1) % nTheta_);
+        double cv = 0.0, covered = 0.0;
+        bool onEdge = false;
+        auto side = [&](bool exists, std::size_t nb, double distance, std::size_t face) {
+            if (!exists) return;  // open-arc end: the half control volume of the grid
+            distance = std::max(0.0, distance);
+            if (arcOf[nb] >= 0) {
+                cv += 0.5 * dTheta_;
+                covered += 0.5 * dTheta_;
+                return;
+            }
+            cv += 0.5 * distance;
+            covered += distance;
+            faceAngle_[face] = std::max(distance, 1e-6 * dTheta_);
+            onEdge = onEdge || distance < 1e-6 * dTheta_;
+        };
+        side(hasRight, jr, hi - pos[sj], sj);
+        side(hasLeft, jl, pos[sj] - lo, jl);
+        cvWidth_[sj] = cv;
+        coveredWidth_[sj] = covered;
+        if (onEdge)
+            for (int i = 0; i < nAxial(); ++i)
+                if (userKind_[std::size_t(index(i, j))] == NodeKind::Film) fixNode(index(i, j), ambient_);
+    }
 }
 
 void FilmGrid::setEdge(Edge edge, EdgeCondition condition, double pressure) {
@@ -160,6 +230,7 @@ std::optional<FilmGrid> FilmGrid::coarsened(std::vector<int>& axialMap) const {
             c.userPressure_[kc] = userPressure_[kf];
         }
     c.refreshKinds();
+    if (!arcs_.empty()) c.restrictToArcs(arcs_);
     return c;
 }
 

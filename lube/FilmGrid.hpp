@@ -15,6 +15,7 @@
 //           shear, contact and area integrals.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flexehd::lube {
@@ -57,11 +58,33 @@ public:
     double length() const { return z_.back() - z_.front(); }
     double angularExtent() const { return periodic_ ? 2.0 * kPi : (nTheta_ - 1) * dTheta_; }
 
-    /// Control-volume extent of node row i along z (m) and of node column j in θ (rad).
+    /// Control-volume extent of node row i along z (m) and of node column j in θ (rad); a column
+    /// cut by an arc end (restrictToArcs) ends halfway to it.
     double axialWidth(int i) const;
-    double angularWidth(int j) const;
-    /// Control-volume area of node k (m²): the trapezoidal-rule weight on the cylinder.
+    double angularWidth(int j) const { return cvWidth_[static_cast<std::size_t>(j)]; }
+    /// The part of the bearing surface column j stands for (rad): its control volume plus, next
+    /// to an arc end, the strip from there to the end (where the pressure falls to ambient).
+    double coveredAngularWidth(int j) const { return coveredWidth_[static_cast<std::size_t>(j)]; }
+    /// Angular distance across the face between columns j and j + 1 (wrapped): Δθ, or from a
+    /// column to the arc end it borders when the other column is outside the arcs.
+    double faceAngle(int j) const { return faceAngle_[static_cast<std::size_t>(j)]; }
+    /// Control-volume area of node k (m²): the weight of the pressure and of the mass balance.
     double area(int k) const { return radius_ * angularWidth(thetaIndex(k)) * axialWidth(axialIndex(k)); }
+    /// Surface area node k stands for (m²): the weight of contact, shear and other fields that
+    /// do not vanish at an arc end (= area(k) away from arc ends).
+    double surfaceArea(int k) const {
+        return radius_ * coveredAngularWidth(thetaIndex(k)) * axialWidth(axialIndex(k));
+    }
+
+    /// The bearing surface covers only these arcs of θ (rad, each [lo, hi] with lo < hi, shorter
+    /// than a turn on a full circumference and inside [θ0, θ1] on an open arc; pairwise apart by
+    /// more than Δθ): nodes outside them become Void, and the columns next to an arc's end are
+    /// cut there — their control volume ends halfway to it, their covered width reaches it and
+    /// the face towards the Void column spans the distance to it, so that the ambient pressure
+    /// sits at the arc's true end (docs/lube.md §1). A column within 1e-6 Δθ of an end becomes
+    /// Fixed at ambient. Replaces the arcs of an earlier call; coarsened() keeps them.
+    void restrictToArcs(std::vector<std::pair<double, double>> arcs);
+    const std::vector<std::pair<double, double>>& arcs() const { return arcs_; }
 
     /// Edge conditions. Default: Pressure edges at pressure 0 (gauge ambient).
     void setEdge(Edge edge, EdgeCondition condition, double pressure = 0.0);
@@ -96,6 +119,7 @@ private:
     FilmGrid(double radius, std::vector<double> axial, int nTheta, bool periodic, double theta0,
              double dTheta);
     void refreshKinds();
+    void resetColumnGeometry();
 
     struct EdgeSpec {
         EdgeCondition condition = EdgeCondition::Pressure;
@@ -114,6 +138,9 @@ private:
     std::vector<double> userPressure_;
     std::vector<NodeKind> kind_;
     std::vector<double> fixedPressure_;
+    // Column geometry (rad), per column j: control-volume width, covered width, face j | j + 1.
+    std::vector<double> cvWidth_, coveredWidth_, faceAngle_;
+    std::vector<std::pair<double, double>> arcs_;
 };
 
 }  // namespace flexehd::lube

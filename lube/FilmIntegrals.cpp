@@ -63,7 +63,7 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
             const int k = g.index(i, j);
             if (g.kind(k) == NodeKind::Void) continue;
             const NodeFrame f = nodeFrame(g, i, j);
-            const double A = f.area;
+            const double A = f.area, S = f.surfaceArea;  // pressure; everything else (arc ends)
             const Eigen::Vector3d &er = f.er, &et = f.et, &ez = f.ez, &r = f.position;
             const double h = film.h[k];
             // ∇p: ∂p/∂z and (1/R) ∂p/∂θ.
@@ -76,11 +76,11 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
             const double pc = opt.contactPressure ? (*opt.contactPressure)[k] : 0.0;
 
             const Eigen::Vector3d fp = -(p[k] - pAmb) * A * er;
-            const Eigen::Vector3d fc = -pc * A * er;
-            const Eigen::Vector3d fs = (tz * ez + tt * et) * A;
-            const Eigen::Vector3d fo = (-(couette * dVz + 0.5 * h * dpdz) * ez - (couette * dVt + 0.5 * h * dpdy) * et) * A;
+            const Eigen::Vector3d fc = -pc * S * er;
+            const Eigen::Vector3d fs = (tz * ez + tt * et) * S;
+            const Eigen::Vector3d fo = (-(couette * dVz + 0.5 * h * dpdz) * ez - (couette * dVt + 0.5 * h * dpdy) * et) * S;
             Eigen::Vector3d fb = Eigen::Vector3d::Zero();
-            if (dV > 0.0) fb = opt.boundaryFriction * pc * A / dV * (dVz * ez + dVt * et);
+            if (dV > 0.0) fb = opt.boundaryFriction * pc * S / dV * (dVz * ez + dVt * et);
             out.pressureForce += fp;
             out.contactForce += fc;
             out.shearForce += fs;
@@ -88,14 +88,14 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
             out.boundaryFrictionForce += fb;
             out.moment += (r - opt.referencePoint).cross(fp + fc + fs + fb);
             out.viscousDissipation +=
-                (couette * dV * dV + h * h * h * (dpdz * dpdz + dpdy * dpdy) / (12.0 * eta[k])) * A;
-            out.boundaryFrictionPower += opt.boundaryFriction * pc * dV * A;
-            out.contactLoad += pc * A;
+                (couette * dV * dV + h * h * h * (dpdz * dpdz + dpdy * dpdy) / (12.0 * eta[k])) * S;
+            out.boundaryFrictionPower += opt.boundaryFriction * pc * dV * S;
+            out.contactLoad += pc * S;
             out.minFilm = std::min(out.minFilm, h);
             out.maxPressure = std::max(out.maxPressure, p[k]);
-            out.filmArea += A;
+            out.filmArea += S;
             if (g.kind(k) == NodeKind::Film && p[k] <= opt.cavitationPressure)
-                out.cavitatedArea += A;
+                out.cavitatedArea += S;
         }
     }
     if (!out.pressureForce.allFinite() || !out.shearForce.allFinite() || !out.moment.allFinite())
@@ -116,7 +116,7 @@ double circumferentialFlow(const FilmGrid& g, const FilmState& film, const Lubri
     for (int i = 0; i < g.nAxial(); ++i) {
         const int a = g.index(i, j), b = g.index(i, (j + 1) % nt);
         if (g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void) continue;
-        q += faceFlow(g, film, eta, p, phi, a, b, false, g.axialWidth(i), g.radius() * g.dTheta());
+        q += faceFlow(g, film, eta, p, phi, a, b, false, g.axialWidth(i), g.radius() * g.faceAngle(j));
     }
     return q;
 }
@@ -133,6 +133,33 @@ double axialFlow(const FilmGrid& g, const FilmState& film, const Lubricant& lub,
         if (g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void) continue;
         q += faceFlow(g, film, eta, p, phi, a, b, true, g.radius() * g.angularWidth(j),
                       g.z(i + 1) - g.z(i));
+    }
+    return q;
+}
+
+double axialEdgeFlow(const FilmGrid& g, const FilmState& film, const Lubricant& lub, const Eigen::VectorXd& p,
+                     Edge edge, const Eigen::VectorXd* phi) {
+    validateFilmState(g, film);
+    const int nz = g.nAxial();
+    if (nz < 3) throw std::invalid_argument("axialEdgeFlow: the grid needs at least 3 rows");
+    if (edge != Edge::AxialLow && edge != Edge::AxialHigh)
+        throw std::invalid_argument("axialEdgeFlow: an axial edge (AxialLow or AxialHigh) is needed");
+    const Eigen::VectorXd eta = nodalViscosity(g, lub, p);
+    const bool low = edge == Edge::AxialLow;
+    // Rows of the edge and of the first two faces inside it (face f between rows f and f + 1).
+    const int r0 = low ? 0 : nz - 1, f0 = low ? 0 : nz - 2, f1 = low ? 1 : nz - 3;
+    auto mid = [&](int f) { return 0.5 * (g.z(f) + g.z(f + 1)); };
+    const double w = (mid(f0) - g.z(r0)) / (mid(f1) - mid(f0));  // extrapolation weight
+    double q = 0.0;
+    for (int j = 0; j < g.nTheta(); ++j) {
+        const double L = g.radius() * g.angularWidth(j);
+        auto flux = [&](int f) {
+            const int a = g.index(f, j), b = g.index(f + 1, j);
+            if (g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void) return 0.0;
+            return faceFlow(g, film, eta, p, phi, a, b, true, L, g.z(f + 1) - g.z(f));
+        };
+        const double q0 = flux(f0), q1 = flux(f1);
+        q += q0 + (q0 - q1) * w;
     }
     return q;
 }

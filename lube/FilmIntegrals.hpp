@@ -70,4 +70,12 @@ double axialFlow(const FilmGrid& grid, const FilmState& film, const Lubricant& l
                  const Eigen::VectorXd& pressure, int i,
                  const Eigen::VectorXd* filmFraction = nullptr);
 
+/// Volumetric flow (m³/s) in +z through the grid's low (Edge::AxialLow) or high
+/// (Edge::AxialHigh) end, summed over the columns: each column's face fluxes of its first two
+/// faces inside the end, extrapolated linearly to the end (second order; the face flux half a
+/// cell inside misses what the edge cells take in from the sides, e.g. from a supply groove).
+/// Needs at least 3 rows.
+double axialEdgeFlow(const FilmGrid& grid, const FilmState& film, const Lubricant& lubricant,
+                     const Eigen::VectorXd& pressure, Edge edge, const Eigen::VectorXd* filmFraction = nullptr);
+
 }  // namespace flexehd::lube

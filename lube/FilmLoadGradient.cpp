@@ -57,7 +57,7 @@ FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, cons
             const int k = g.index(i, j);
             if (g.kind(k) == NodeKind::Void) continue;
             const NodeFrame f = nodeFrame(g, i, j);
-            const double A = f.area;
+            const double A = f.area, S = f.surfaceArea;  // as in integrateFilm
             const Eigen::Vector3d &er = f.er, &et = f.et, &ez = f.ez;
             const Eigen::Vector3d lever = f.position - opt.referencePoint;
             const double h = film.h[k];
@@ -71,23 +71,23 @@ FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, cons
             const double dp = 1e-6 * std::max(std::abs(pk), 1e5);
             const double detaDp = (lub.viscosity(pk + dp) - lub.viscosity(pk - dp)) / (2.0 * dp);
             // ∂/∂p_k: the pressure force, and the Couette shear through η(p_k).
-            add(G.pressure, k, -A * er + (phi * detaDp / h) * A * (dVz * ez + dVt * et), lever);
+            add(G.pressure, k, -A * er + (phi * detaDp / h) * S * (dVz * ez + dVt * et), lever);
             // ∂/∂p at the stencil nodes: −(h/2)∇p.
             const Stencil* stencils[2] = {&sz, &st};
             const Eigen::Vector3d dirs[2] = {ez, et};
             for (int d = 0; d < 2; ++d) {
                 const Stencil& q = *stencils[d];
-                const Eigen::Vector3d f = -0.5 * h * A * dirs[d];
+                const Eigen::Vector3d f = -0.5 * h * S * dirs[d];
                 add(G.pressure, q.m, q.wm * f, lever);
                 add(G.pressure, q.o, q.wo * f, lever);
                 add(G.pressure, q.p, q.wp * f, lever);
             }
             // ∂/∂h_k: −φηU/h² − ∇p/2.
             const double couette = -phi * eta / (h * h);
-            add(G.thickness, k, A * ((couette * dVz - 0.5 * dpdz) * ez + (couette * dVt - 0.5 * dpdy) * et), lever);
+            add(G.thickness, k, S * ((couette * dVz - 0.5 * dpdz) * ez + (couette * dVt - 0.5 * dpdy) * et), lever);
             // ∂/∂p_c,k: the contact force and the boundary friction μ_b p_c (V/|V|).
-            Eigen::Vector3d fc = -A * er;
-            if (dV > 0.0) fc += opt.boundaryFriction * A / dV * (dVz * ez + dVt * et);
+            Eigen::Vector3d fc = -S * er;
+            if (dV > 0.0) fc += opt.boundaryFriction * S / dV * (dVz * ez + dVt * et);
             add(G.contactPressure, k, fc, lever);
         }
     }

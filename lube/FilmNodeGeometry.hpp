@@ -12,14 +12,15 @@
 namespace flexehd::lube {
 
 struct NodeFrame {
-    double area;
+    double area;         ///< control volume (the pressure's weight)
+    double surfaceArea;  ///< surface the node stands for (contact, shear; FilmGrid::surfaceArea)
     Eigen::Vector3d er, et, ez;  ///< outward normal of the inner body, +θ, +z
     Eigen::Vector3d position;    ///< (R cos θ, R sin θ, z)
 };
 
 inline NodeFrame nodeFrame(const FilmGrid& g, int i, int j) {
     const double th = g.theta(j), c = std::cos(th), s = std::sin(th), R = g.radius();
-    return {g.area(g.index(i, j)), Eigen::Vector3d(c, s, 0.0), Eigen::Vector3d(-s, c, 0.0),
+    return {g.area(g.index(i, j)), g.surfaceArea(g.index(i, j)), Eigen::Vector3d(c, s, 0.0), Eigen::Vector3d(-s, c, 0.0),
             Eigen::Vector3d(0.0, 0.0, 1.0), Eigen::Vector3d(R * c, R * s, g.z(i))};
 }
 
@@ -44,14 +45,24 @@ inline Stencil axialStencil(const FilmGrid& g, int i, int j) {
     return {g.index(i - 1, j), k, g.index(i + 1, j), -(dp / dm) / s, (dp / dm - dm / dp) / s, (dm / dp) / s};
 }
 
+/// (1/R) ∂p/∂θ: the non-uniform 3-point stencil when a neighbour is an arc end's Void column
+/// (at FilmGrid::faceAngle, where the pressure is ambient), central otherwise.
 inline Stencil circumferentialStencil(const FilmGrid& g, int i, int j) {
     const int nt = g.nTheta(), k = g.index(i, j);
-    const double ds = g.radius() * g.dTheta();
-    if (g.periodic())
-        return {g.index(i, (j + nt - 1) % nt), k, g.index(i, (j + 1) % nt), -0.5 / ds, 0.0, 0.5 / ds};
-    if (j == 0) return {k, k, g.index(i, 1), 0.0, -1.0 / ds, 1.0 / ds};
-    if (j == nt - 1) return {g.index(i, j - 1), k, k, -1.0 / ds, 1.0 / ds, 0.0};
-    return {g.index(i, j - 1), k, g.index(i, j + 1), -0.5 / ds, 0.0, 0.5 / ds};
+    const double R = g.radius();
+    if (!g.periodic() && j == 0) {
+        const double ds = R * g.faceAngle(0);
+        return {k, k, g.index(i, 1), 0.0, -1.0 / ds, 1.0 / ds};
+    }
+    if (!g.periodic() && j == nt - 1) {
+        const double ds = R * g.faceAngle(j - 1);
+        return {g.index(i, j - 1), k, k, -1.0 / ds, 1.0 / ds, 0.0};
+    }
+    const int jm = (j + nt - 1) % nt, jp = (j + 1) % nt;
+    const double dm = R * g.faceAngle(jm), dp = R * g.faceAngle(j);
+    if (dm == dp) return {g.index(i, jm), k, g.index(i, jp), -0.5 / dp, 0.0, 0.5 / dp};
+    const double s = dm + dp;
+    return {g.index(i, jm), k, g.index(i, jp), -(dp / dm) / s, (dp / dm - dm / dp) / s, (dm / dp) / s};
 }
 
 }  // namespace flexehd::lube

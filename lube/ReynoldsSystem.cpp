@@ -77,7 +77,7 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     const int n = grid.size();
     const int nz = grid.nAxial(), nt = grid.nTheta();
     const bool periodic = grid.periodic();
-    const double R = grid.radius(), arcD = R * grid.dTheta();
+    const double R = grid.radius();
     const double Uz = film.sumAxial(), Ut = film.sumCircumferential();
     const NodeKind* kind = grid.kinds();
     const double* pp = grid.prescribedPressures();
@@ -89,7 +89,11 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     double* st = st_.data();
     double* bv = b_.data();
     std::vector<double> colL(sj(nt));  // axial face length R·Δθ_j
-    for (int j = 0; j < nt; ++j) colL[sj(j)] = R * grid.angularWidth(j);
+    std::vector<double> faceD(sj(nt));  // circumferential node (or arc-end) distance R·Δθ_f
+    for (int j = 0; j < nt; ++j) {
+        colL[sj(j)] = R * grid.angularWidth(j);
+        faceD[sj(j)] = R * grid.faceAngle(j);
+    }
     std::vector<double> cUp(sj(nt), 0.0), mUp(sj(nt), 0.0), cDn(sj(nt), 0.0), mDn(sj(nt), 0.0),
         cT(sj(nt), 0.0), mT(sj(nt), 0.0);
     auto rhoAt = [&](int k) { return Constant ? rho[0] : rho[k]; };
@@ -98,14 +102,14 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     // q (constant ρ, η): ρ L / (12 η d) of the face, so c_f = h_f³ q without a division per face.
     auto face = [&](int a, int b, double U, double L, double d, double q, double& c, double& m) {
         double hf, rf, ef;
-        if (kind[a] == NodeKind::Void) {
-            hf = h[b]; rf = rhoAt(b); ef = etaAt(b);
-        } else if (kind[b] == NodeKind::Void) {
-            hf = h[a]; rf = rhoAt(a); ef = etaAt(a);
-        } else {
+        if (kind[a] != NodeKind::Void && kind[b] != NodeKind::Void) {
             hf = 0.5 * (h[a] + h[b]);
             rf = Constant ? rho[0] : 0.5 * (rho[a] + rho[b]);
             ef = Constant ? eta[0] : 0.5 * (eta[a] + eta[b]);
+        } else {  // the film ends at this face (faceValue: extrapolated at an arc's cut)
+            hf = faceValue(grid, h, a, b);
+            rf = Constant ? rho[0] : faceValue(grid, rho, a, b);
+            ef = Constant ? eta[0] : faceValue(grid, eta, a, b);
         }
         if constexpr (Constant) c = hf * hf * hf * q;
         else c = rf * hf * hf * hf * L / (12.0 * ef * d);
@@ -118,7 +122,7 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
         const double dz = hasDown ? grid.z(i + 1) - grid.z(i) : 0.0;
         const double Lt = grid.axialWidth(i);
         const double qz = Constant && hasDown ? rho[0] / (12.0 * eta[0] * dz) : 0.0;  // × colL[j]
-        const double qt = Constant ? rho[0] * Lt / (12.0 * eta[0] * arcD) : 0.0;
+        const double qt = Constant ? rho[0] * Lt / (12.0 * eta[0]) : 0.0;  // ÷ faceD[j]
         for (int j = 0; j < nt; ++j) {
             const int k = row + j;
             const bool kf = kind[k] == Film;
@@ -128,7 +132,7 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
             cT[sj(j)] = mT[sj(j)] = 0.0;
             if (j + 1 < nt || periodic) {
                 const int kr = j + 1 < nt ? k + 1 : row;
-                if (kf || kind[kr] == Film) face(k, kr, Ut, Lt, arcD, qt, cT[sj(j)], mT[sj(j)]);
+                if (kf || kind[kr] == Film) face(k, kr, Ut, Lt, faceD[sj(j)], qt / faceD[sj(j)], cT[sj(j)], mT[sj(j)]);
             }
         }
         for (int j = 0; j < nt; ++j) {

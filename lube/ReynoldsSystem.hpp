@@ -18,6 +18,7 @@
 //   residual = max_k |r_k| / max_k |p_k − p_ambient|.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -31,13 +32,13 @@ namespace flexehd::lube {
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 /// Visits every face of the node-centred control volumes once: visit(a, b, axial, L, d) with b
-/// the neighbour of a in +z (axial == true) or +θ, L the face length (m), d the distance (m).
+/// the neighbour of a in +z (axial == true) or +θ, L the face length (m), d the distance (m; to
+/// the arc end where a face borders a column cut by it, FilmGrid::faceAngle).
 /// Faces between two Void nodes carry no film and are skipped.
 template <class Visit>
 void forEachFace(const FilmGrid& g, Visit&& visit) {
     const int nz = g.nAxial(), nt = g.nTheta();
     const double R = g.radius();
-    const double arcD = R * g.dTheta();
     for (int i = 0; i < nz; ++i) {
         for (int j = 0; j < nt; ++j) {
             const int a = g.index(i, j);
@@ -49,18 +50,36 @@ void forEachFace(const FilmGrid& g, Visit&& visit) {
             if (j + 1 < nt || g.periodic()) {
                 const int b = g.index(i, (j + 1) % nt);
                 if (!(g.kind(a) == NodeKind::Void && g.kind(b) == NodeKind::Void))
-                    visit(a, b, false, g.axialWidth(i), arcD);
+                    visit(a, b, false, g.axialWidth(i), R * g.faceAngle(j));
             }
         }
     }
 }
 
-/// Face value of a nodal field: the mean of both nodes, or the non-Void node's value when the
-/// face borders a Void node (the film ends there; a mask's h is not used).
+/// Face value of a nodal field: the mean of both nodes, or, where the face borders a Void node
+/// (the film ends there; a mask's values are not used), the film node's value — extrapolated
+/// from its other circumferential neighbour to the face's middle on a grid restricted to arcs
+/// (FilmGrid::restrictToArcs), where the face reaches only to the arc's end: geometrically,
+/// v_f (v_f/v_2)^(d/2Δθ), second order like a linear extrapolation, positive and smooth in the
+/// values for the positive fields (h, η, ρ); v_f where either value is not positive
+/// (a cavitated film fraction; docs/lube.md §1).
+inline double faceValue(const FilmGrid& g, const double* v, int a, int b) {
+    const bool voidA = g.kind(a) == NodeKind::Void, voidB = g.kind(b) == NodeKind::Void;
+    if (!voidA && !voidB) return 0.5 * (v[a] + v[b]);
+    const int f = voidA ? b : a, o = voidA ? a : b;
+    const int nt = g.nTheta(), i = g.axialIndex(f), jf = g.thetaIndex(f), jo = g.thetaIndex(o);
+    if (g.arcs().empty() || g.axialIndex(o) != i) return v[f];
+    const bool voidEast = jo == (jf + 1) % nt;
+    const int j2 = voidEast ? jf - 1 : jf + 1;  // the film side's other neighbour
+    if (!g.periodic() && (j2 < 0 || j2 >= nt)) return v[f];
+    const int f2 = g.index(i, (j2 + nt) % nt);
+    if (g.kind(f2) == NodeKind::Void) return v[f];
+    if (!(v[f] > 0.0) || !(v[f2] > 0.0)) return v[f];
+    const double d = g.faceAngle(voidEast ? jf : jo);  // film node to the arc end
+    return v[f] * std::pow(v[f] / v[f2], 0.5 * d / g.dTheta());
+}
 inline double faceValue(const FilmGrid& g, const Eigen::VectorXd& v, int a, int b) {
-    if (g.kind(a) == NodeKind::Void) return v[b];
-    if (g.kind(b) == NodeKind::Void) return v[a];
-    return 0.5 * (v[a] + v[b]);
+    return faceValue(g, v.data(), a, b);
 }
 
 /// Throws std::invalid_argument unless the film state fits the grid: h of size N, finite and

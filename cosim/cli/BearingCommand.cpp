@@ -219,12 +219,12 @@ void runBearing(const BearingArgs& a) {
     const double S = (R / c) * (R / c) * mu * N / P;          // Sommerfeld number
     const double torque = -f.moment.z();                      // friction torque on the journal (opposes ω)
     const double frictionCoeff = torque / (R * W);
-    // Inlet flow: through the line at θ = Δθ/2 next to the maximum film; side leakage: through
-    // both ends (the scheme's own face fluxes, docs/lube.md §5).
+    // Inlet flow: through the line at θ = Δθ/2 next to the maximum film; side leakage: out of
+    // both ends (the face fluxes extrapolated to the ends, docs/lube.md §5).
     const double qIn = lube::circumferentialFlow(grid, film, oil, p, 0, phi);
     const double qSide = a.infinitelyLong ? 0.0
-                                          : lube::axialFlow(grid, film, oil, p, nZ - 2, phi) -
-                                                lube::axialFlow(grid, film, oil, p, 0, phi);
+                                          : lube::axialEdgeFlow(grid, film, oil, p, lube::Edge::AxialHigh, phi) -
+                                                lube::axialEdgeFlow(grid, film, oil, p, lube::Edge::AxialLow, phi);
     const double flowVariable = qIn / (R * c * N * L);
     const double pRatio = P / f.maxPressure;
     const double cavFraction = f.cavitatedArea / f.filmArea;

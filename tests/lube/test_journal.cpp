@@ -235,3 +235,43 @@ TEST(JournalFinite, GridSequencingAndWarmStart) {
     EXPECT_LT(r[1].iterations, r[0].iterations);
     EXPECT_LT((r[0].pressure - r[1].pressure).cwiseAbs().maxCoeff() / r[0].pressure.maxCoeff(), 1e-12);
 }
+
+// Flow out of an end (axialEdgeFlow): a journal of eccentricity 0.6, not turning, its film
+// closing at ∂h/∂t = −V(1 + 2z/L) + 0.5 V cos θ, the low end closed (zero flux), the high end
+// open, full film. Mass conservation makes the flow out of the open end the volume the film
+// loses, ∫ −∂h/∂t dA = V × 2πRL, whatever the pressure field. The face fluxes half a cell inside
+// the end miss the last half cell's share (first order: 2πR · 2V · Δz/2, Δz/L relative, the
+// film closing at 2V there); the extrapolated ones converge
+// at second order. Their error is known: the ring's flux Q(z) is quadratic (Q'' = 4πRV/L), so
+// extrapolating it linearly from Δz/2 and 3Δz/2 inside the end errs by (3/8) Q'' Δz², and the
+// closed end's half cell, weighting the source at its node, by Q'' Δz²/8: together (Δz/L)²
+// relative, which the test expects to 1 %.
+TEST(JournalSqueeze, FlowOutOfAnEndConvergesAtSecondOrder) {
+    Journal jb;
+    const double L = 0.05, V = 1e-3;
+    for (int nz : {9, 17, 33, 65}) {
+        ReynoldsOptions opt;
+        opt.cavitation = Cavitation::None;
+        opt.control.tolerance = 1e-12;
+        FilmGrid g = jb.finiteGrid(L, 64, nz);
+        g.setEdge(Edge::AxialLow, EdgeCondition::Symmetry);
+        ReynoldsSolver rs(std::move(g), Lubricant(jb.mu), opt);
+        const FilmGrid& grid = rs.grid();
+        FilmState st = jb.state(grid);
+        st.inner.circumferential = 0.0;
+        st.dhdt.resize(grid.size());
+        for (int k = 0; k < grid.size(); ++k)
+            st.dhdt[k] = -V * (1.0 + 2.0 * grid.z(grid.axialIndex(k)) / L) +
+                         0.5 * V * std::cos(grid.theta(grid.thetaIndex(k)));
+        const Eigen::VectorXd p = rs.solve(st).pressure;
+        const double out = axialEdgeFlow(grid, st, rs.lubricant(), p, Edge::AxialHigh);
+        const double inside = axialFlow(grid, st, rs.lubricant(), p, nz - 2);
+        const double exact = V * 2 * kPi * jb.R * L;
+        const double err = std::abs(out / exact - 1.0);
+        std::printf("  nz %2d: flow out of the end, error %.2e (half a cell inside it: %.2e)\n", nz, err,
+                    std::abs(inside / exact - 1.0));
+        const double dz = L / (nz - 1);
+        EXPECT_NEAR(err, dz * dz / (L * L), 0.01 * dz * dz / (L * L)) << "nz = " << nz;
+        EXPECT_NEAR(std::abs(inside / exact - 1.0), dz / L, 0.01 * dz / L) << "nz = " << nz;
+    }
+}
