@@ -6,32 +6,69 @@
 #include <iostream>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace flexehd::cli {
 
-const CLI::Validator kFinite(
-    [](std::string& text) -> std::string {
-        try {
+namespace {
+
+// A validator from a predicate on the parsed value and the words for what it expects.
+template <class Accept>
+CLI::Validator numberCheck(const std::string& expected, bool whole, Accept accept) {
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
             std::size_t used = 0;
-            const double v = std::stod(text, &used);
-            if (used == text.size() && std::isfinite(v)) return {};
-        } catch (const std::exception&) {
-        }
-        return "'" + text + "' is not a finite number";
-    },
-    "FINITE");
+            double v = 0.0;
+            try {
+                v = std::stod(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            const bool number = used == text.size() && !text.empty() && std::isfinite(v);
+            if (number && (!whole || v == std::floor(v)) && accept(v)) return {};
+            return "expected " + expected + ", got '" + text + "'";
+        },
+        whole ? "INT" : "NUMBER");
+}
+
+std::string plain(double v) { return fmt::format("{:g}", v); }
+
+}  // namespace
+
+CLI::Validator positiveNumber() {
+    return numberCheck("a number > 0", false, [](double v) { return v > 0.0; });
+}
+CLI::Validator nonNegativeNumber() {
+    return numberCheck("a number ≥ 0", false, [](double v) { return v >= 0.0; });
+}
+CLI::Validator numberFromTo(double lo, double hi) {
+    return numberCheck("a number from " + plain(lo) + " to " + plain(hi), false,
+                       [=](double v) { return v >= lo && v <= hi; });
+}
+CLI::Validator wholeNumberFromTo(long lo, long hi) {
+    return numberCheck("a whole number from " + std::to_string(lo) + " to " + std::to_string(hi), true,
+                       [=](double v) { return v >= double(lo) && v <= double(hi); });
+}
+CLI::Validator positiveWholeNumber() {
+    return numberCheck("a whole number ≥ 1", true, [](double v) { return v >= 1.0 && v <= 2147483647.0; });
+}
+
+std::string commandLineError(const CLI::ParseError& e) {
+    return std::string(e.what()) + " (flexehd --help, flexehd COMMAND --help: the commands and their options)";
+}
 
 void addMeshOptions(CLI::App* cmd, MeshArguments& mesh) {
     cmd->add_option("--mesh", mesh.path, "Mesh file: .msh (Gmsh 2.2 or 4.1) or .geo (meshed on load)")->required();
     cmd->add_option("--order", mesh.options.order, "Element order 1 or 2 (default: .geo → 2, .msh → as stored)")
         ->check(CLI::IsMember({1, 2}));
     cmd->add_option("--size", mesh.options.size, "Target element size for .geo files [m]")
-        ->check(kFinite & CLI::PositiveNumber);
+        ->check(positiveNumber());
 }
 
 void addMaterialOptions(CLI::App* cmd, fem::ElasticMaterial& material) {
-    cmd->add_option("--E", material.E, "Young's modulus [Pa]")->required()->check(kFinite & CLI::PositiveNumber);
-    cmd->add_option("--nu", material.nu, "Poisson's ratio [-]")->required()->check(kFinite & CLI::Range(-0.999, 0.499));
-    cmd->add_option("--rho", material.rho, "Density [kg/m^3]")->required()->check(kFinite & CLI::PositiveNumber);
+    cmd->add_option("--E", material.E, "Young's modulus [Pa]")->required()->check(positiveNumber());
+    cmd->add_option("--nu", material.nu, "Poisson's ratio [-]")->required()->check(numberFromTo(-0.999, 0.499));
+    cmd->add_option("--rho", material.rho, "Density [kg/m^3]")->required()->check(positiveNumber());
 }
 
 namespace {

@@ -22,8 +22,17 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
-/// Rejects NaN and infinities (CLI11's range checks let NaN through).
-extern const CLI::Validator kFinite;
+/// Number checks whose messages say what is expected, as people write it ("expected a number
+/// > 0, got 'abc'"): non-numbers, NaN and infinities are refused by each.
+CLI::Validator positiveNumber();                       ///< > 0
+CLI::Validator nonNegativeNumber();                    ///< ≥ 0
+CLI::Validator numberFromTo(double lo, double hi);     ///< lo ≤ x ≤ hi
+CLI::Validator wholeNumberFromTo(long lo, long hi);    ///< an integer, lo ≤ n ≤ hi
+CLI::Validator positiveWholeNumber();                  ///< an integer ≥ 1
+
+/// The message of a command-line error for `flexehd: error: …`: CLI11's text with the option
+/// first and the help hint.
+std::string commandLineError(const CLI::ParseError& e);
 
 /// The mesh options every mesh-reading subcommand shares: --mesh, --order, --size.
 struct MeshArguments {

@@ -108,7 +108,7 @@ void addModesCommand(CLI::App& app) {
     cmd->add_option("--fix", a->fix,
                     "Physical group to hold, all components (GROUP) or some (GROUP:xy); repeatable. "
                     "None: free body, six rigid-body modes included");
-    cmd->add_option("--count", a->count, "Number of modes, lowest first")->check(CLI::Range(1, 10000));
+    cmd->add_option("--count", a->count, "Number of modes, lowest first")->check(wholeNumberFromTo(1, 10000));
     cmd->add_option("--shift", a->shift,
                     "Spectral shift sigma [(rad/s)^2], below the lowest eigenvalue (default: automatic)");
     cmd->add_option("--out", a->out, "Directory for mode_NNN.vtu and modes.pvd (ParaView)");

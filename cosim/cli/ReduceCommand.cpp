@@ -107,21 +107,21 @@ void addReduceCommand(CLI::App& app) {
                     "rbe3 averaging; point in m, default: centroid of the set); repeatable")
         ->required();
     cmd->add_option("--modes", a->settings.normalModes, "Fixed-interface normal modes to keep")
-        ->check(CLI::NonNegativeNumber);
+        ->check(wholeNumberFromTo(0, 100000));
     cmd->add_option("--cutoff", a->settings.cutoffHz, "Keep the normal modes below this frequency [Hz] instead")
-        ->check(kFinite & CLI::PositiveNumber);
+        ->check(positiveNumber());
     cmd->add_option("--static-correction", a->settings.staticCorrection,
                     "Surface group with static-correction modes for pressure loads; repeatable");
     cmd->add_option("--axial-order", a->settings.axialOrder, "Load patterns: Legendre degree along z")
-        ->check(CLI::Range(0, 20));
+        ->check(wholeNumberFromTo(0, 20));
     cmd->add_option("--axial-hats", a->settings.axialHats,
                     "Load patterns: this many piecewise-linear hats along z instead (travelling loads, e.g. liner)")
-        ->check(CLI::Range(0, 200) & !CLI::IsMember({1}));
+        ->check(wholeNumberFromTo(0, 200) & !CLI::IsMember({1}));
     cmd->add_option("--circumferential-order", a->settings.circumferentialOrder,
                     "Load patterns: highest Fourier order in the angle")
-        ->check(CLI::Range(0, 40));
+        ->check(wholeNumberFromTo(0, 40));
     cmd->add_option("--damping", a->settings.dampingRatio, "Modal damping ratio of the elastic modes, in [0, 1) [-]")
-        ->check(kFinite & CLI::Range(0.0, 0.999999));
+        ->check(numberFromTo(0.0, 0.999999));
     cmd->add_option("--damping-band", a->dampingBands,
                     "Damping per band FMAX:ZETA [Hz:-]: elastic modes up to FMAX get ZETA (lowest band first), "
                     "modes above all bands get --damping; repeatable");

@@ -240,7 +240,7 @@ void addRunCommand(CLI::App& app) {
     cmd->add_option("case", a->casePath, "Case file (YAML, docs/case-file.md)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", a->out, "Results directory (default: the case's output.directory)");
     cmd->add_flag("--rigid", a->rigid, "Rigid piston and liner (hydrodynamic run), whatever the case says");
-    cmd->add_option("--cycles", a->cycles, "Cycles at most (overrides time.max_cycles)")->check(CLI::PositiveNumber);
+    cmd->add_option("--cycles", a->cycles, "Cycles at most (overrides time.max_cycles)")->check(positiveWholeNumber());
     cmd->add_flag("--json", a->json, "Print summary.json on stdout");
     cmd->add_flag("--quiet", a->quiet, "No progress output");
     cmd->callback([a] {

@@ -43,7 +43,9 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+        std::cerr << "flexehd: error: " << flexehd::cli::commandLineError(e) << std::endl;
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "flexehd: error: " << e.what() << std::endl;
         return 1;

@@ -167,3 +167,25 @@ TEST(CliRun, GlobalQuietSilencesTheProgress) {
     }
     fs::remove_all(dir);
 }
+
+// Command-line errors follow the error convention: "flexehd: error: OPTION: expected …, got …",
+// exit code 1, ranges as people write them; --help still exits 0.
+TEST(CliRun, CommandLineErrorsSayWhatIsExpected) {
+    const std::string example = std::string(FLEXEHD_SOURCE_DIR) + "/examples/engine86/hd.yaml";
+    const std::pair<std::string, std::string> cases[] = {
+        {"run --cycles 0 " + example, "flexehd: error: --cycles: expected a whole number ≥ 1, got '0'"},
+        {"run --cycles abc " + example, "flexehd: error: --cycles: expected a whole number ≥ 1, got 'abc'"},
+        {"run --cycles 2.5 " + example, "flexehd: error: --cycles: expected a whole number ≥ 1, got '2.5'"},
+        {"modes --mesh x.geo --E 2e11 --nu 0.6 --rho 7850", "flexehd: error: --nu: expected a number from -0.999 to 0.499, got '0.6'"},
+        {"run --no-such-option " + example, "flexehd: error: "},
+    };
+    for (const auto& [args, message] : cases) {
+        const auto r = runFlexehd(args);
+        EXPECT_EQ(r.status, 1) << args << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind(message, 0), 0u) << args << "\n" << r.err;
+        EXPECT_EQ(r.err.find("17976931348623157"), std::string::npos) << r.err;
+    }
+    const auto help = runFlexehd("run --help");
+    EXPECT_EQ(help.status, 0);
+    EXPECT_NE(help.out.find("--cycles"), std::string::npos);
+}
