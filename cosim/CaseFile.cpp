@@ -771,8 +771,11 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     }
     c.output.vtkEveryDeg = number(output, "vtk_every_deg", {"crank-angle spacing (0 = no VTK)", "deg"},
                                   Sign::NonNegative, c.output.vtkEveryDeg);
-    if (c.output.vtkEveryDeg > 720.0)
-        output.fail("vtk_every_deg", fmt::format("expected 0 to 720 deg, got {:g}", c.output.vtkEveryDeg));
+    if (c.output.vtkEveryDeg > 720.0 || (c.output.vtkEveryDeg > 0.0 && c.output.vtkEveryDeg < 0.01))
+        output.fail("vtk_every_deg",
+                    fmt::format("expected 0 (no VTK) or 0.01 to 720 deg, got {:g}: a snapshot every 0.01 deg is already "
+                                "72 000 files per cycle, and snapshots closer than the time steps only shorten them",
+                                c.output.vtkEveryDeg));
     c.output.modeShapes = boolean(output, "mode_shapes", c.output.modeShapes);
     return c;
 }

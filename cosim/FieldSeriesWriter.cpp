@@ -1,5 +1,6 @@
 #include "cosim/FieldSeriesWriter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -184,36 +185,66 @@ FieldSeriesWriter::FieldSeriesWriter(std::string directory) : directory_(std::mo
 void FieldSeriesWriter::write(const SnapshotTime& at, const FilmField& film, const BodyField* piston,
                               const BodyField* liner) {
     const double time = at.time;
-    if (!std::isfinite(time) || !std::isfinite(at.crankDeg)) throw std::runtime_error(fmt::format("snapshot time {} is not finite", time));
-    if (count_ > 0 && !(time > lastTime_))
+    if (!std::isfinite(time) || !std::isfinite(at.crankDeg))
+        throw std::runtime_error(fmt::format("snapshot time {} is not finite", time));
+    if (!staged_.empty() && !(time > staged_.back().time))
         throw std::runtime_error(fmt::format("snapshot time {} does not follow the previous snapshot's {}: "
                                              "the series must be strictly increasing",
-                                             time, lastTime_));
+                                             time, staged_.back().time));
     checkFilm(film, time);
     if (piston) checkBody("piston", *piston, time);
     if (liner) checkBody("liner", *liner, time);
 
     const fs::path dir(directory_);
     const std::string index = fmt::format("{:06d}", count_);
-    // Snapshots first, collections last: a collection only ever lists complete files.
-    const std::string filmFile = "vtk/film_" + index + ".vts";
-    writeFilm((dir / filmFile).string(), film, at);
-    const std::string pistonFile = "vtk/piston_" + index + ".vtu", linerFile = "vtk/liner_" + index + ".vtu";
-    if (piston) writeBody((dir / pistonFile).string(), *piston, at);
-    if (liner) writeBody((dir / linerFile).string(), *liner, at);
-
-    filmPvd_.add(time, filmFile);
-    filmPvd_.write((dir / "film.pvd").string());
-    if (piston) {
-        pistonPvd_.add(time, pistonFile);
-        pistonPvd_.write((dir / "piston.pvd").string());
-    }
-    if (liner) {
-        linerPvd_.add(time, linerFile);
-        linerPvd_.write((dir / "liner.pvd").string());
-    }
-    lastTime_ = time;
+    Staged s{time, "vtk/film_" + index + ".vts", piston ? "vtk/piston_" + index + ".vtu" : "",
+             liner ? "vtk/liner_" + index + ".vtu" : ""};
+    writeFilm((dir / s.film).string(), film, at);
+    if (piston) writeBody((dir / s.piston).string(), *piston, at);
+    if (liner) writeBody((dir / s.liner).string(), *liner, at);
+    staged_.push_back(std::move(s));
     ++count_;
+}
+
+void FieldSeriesWriter::commit() {
+    const fs::path dir(directory_);
+    PvdCollection film, piston, liner;
+    std::vector<std::string> files;
+    for (const Staged& s : staged_) {
+        film.add(s.time, s.film);
+        files.push_back(s.film);
+        if (!s.piston.empty()) {
+            piston.add(s.time, s.piston);
+            files.push_back(s.piston);
+        }
+        if (!s.liner.empty()) {
+            liner.add(s.time, s.liner);
+            files.push_back(s.liner);
+        }
+    }
+    const bool anyPiston = std::any_of(staged_.begin(), staged_.end(), [](const Staged& s) { return !s.piston.empty(); });
+    const bool anyLiner = std::any_of(staged_.begin(), staged_.end(), [](const Staged& s) { return !s.liner.empty(); });
+    if (!staged_.empty()) film.write((dir / "film.pvd").string());
+    if (anyPiston) piston.write((dir / "piston.pvd").string());
+    if (anyLiner) liner.write((dir / "liner.pvd").string());
+    // The collections no longer name the previous series: its files go.
+    std::error_code ec;
+    for (const std::string& f : committedFiles_)
+        if (std::find(files.begin(), files.end(), f) == files.end()) fs::remove(dir / f, ec);
+    if (!staged_.empty()) {
+        committedFiles_ = std::move(files);
+        committedCount_ = int(staged_.size());
+    }
+    staged_.clear();
+}
+
+void FieldSeriesWriter::discard() {
+    const fs::path dir(directory_);
+    std::error_code ec;
+    for (const Staged& s : staged_)
+        for (const std::string* f : {&s.film, &s.piston, &s.liner})
+            if (!f->empty()) fs::remove(dir / *f, ec);
+    staged_.clear();
 }
 
 }  // namespace flexehd::cosim

@@ -3,12 +3,15 @@
 //
 // Each write() adds one snapshot: DIR/vtk/film_NNNNNN.vts (the film grid as a structured grid,
 // closed at the periodic seam) and, when given, DIR/vtk/piston_NNNNNN.vtu and
-// DIR/vtk/liner_NNNNNN.vtu (the body meshes with displacement vectors for Warp By Vector), then
-// rewrites DIR/film.pvd, DIR/piston.pvd and DIR/liner.pvd. Every file is written atomically
-// (NAME.tmp, then renamed), snapshots first and collections last, so a run killed at any moment
-// leaves collections that list only complete snapshots. Only the collections' entry lists stay
-// in memory.
+// DIR/vtk/liner_NNNNNN.vtu (the body meshes with displacement vectors for Warp By Vector), written
+// at once: nothing is held in memory. commit() makes the snapshots written since the last commit
+// the series — it rewrites DIR/film.pvd, DIR/piston.pvd and DIR/liner.pvd to list them and then
+// deletes the files of the series they replace; discard() deletes them instead. flexehd run
+// commits every cycle, so the collections always list the last complete cycle. Every file is
+// written atomically (NAME.tmp, then renamed) and a collection lists only files that exist, so a
+// run killed at any moment leaves a valid series.
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -55,15 +58,25 @@ public:
     /// Throws std::runtime_error naming the field (and the node) on a size mismatch or a NaN/Inf
     /// value, before any file is written; or naming the file on an I/O error.
     void write(const SnapshotTime& at, const FilmField& film, const BodyField* piston, const BodyField* liner);
+    /// The snapshots written since the last commit (or discard) become the series.
+    void commit();
+    /// Deletes the snapshots written since the last commit; the series stays as it was.
+    void discard();
 
-    /// Number of snapshots written so far.
+    /// Number of snapshots written so far (file numbers run on over commits).
     int count() const { return count_; }
+    /// Snapshots in the committed series.
+    int committed() const { return committedCount_; }
 
 private:
+    struct Staged {
+        double time;
+        std::string film, piston, liner;  ///< relative paths; empty: no such body
+    };
     std::string directory_;
-    int count_ = 0;
-    double lastTime_ = 0.0;
-    PvdCollection filmPvd_, pistonPvd_, linerPvd_;
+    int count_ = 0, committedCount_ = 0;
+    std::vector<Staged> staged_;
+    std::vector<std::string> committedFiles_;  ///< relative paths of the committed series
 };
 
 }  // namespace flexehd::cosim

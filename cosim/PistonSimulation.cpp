@@ -679,22 +679,29 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         const double cycleEnd = spanDeg > 0.0 ? std::min(cycleStart + 720.0, T.startDeg + spanDeg) : cycleStart + 720.0;
         cycleRecords.clear();
         cycleSince.clear();
-        std::vector<Snapshot> snaps;
         progress.startCycle(cycle, seconds(tRun));
+        int snapshots = 0;
+        auto takeSnapshot = [&](const State& at, const Evaluation& e) {
+            ++snapshots;
+            if (cb.onSnapshot) cb.onSnapshot(snapshot(at, e, cycle));
+        };
         if (haveLast) {
             // The boundary point opens the new cycle's records too (its metrics and its 0° snapshot);
             // it is the last cycle's final step, written to the history once, there.
             StepRecord r = record(s, lastEv, cycle, 0.0, 0);
             cycleRecords.push_back(r);
             cycleSince.push_back(s.crankDeg - cycleStart);
-            if (every > 0.0) snaps.push_back(snapshot(s, lastEv, cycle));
+            if (every > 0.0) takeSnapshot(s, lastEv);
         }
         double nextProgress = cycleStart;
         while (s.crankDeg < cycleEnd - 1e-9) {
             double step = std::min(dtDeg, cycleEnd - s.crankDeg);
             bool atSnapshot = false;
             if (every > 0.0) {
-                const double next = cycleStart + every * (std::floor((s.crankDeg - cycleStart) / every + 1e-9) + 1.0);
+                // The next snapshot angle; those closer than time.min_step_deg to the present state
+                // are skipped (landing on them would need a step below the smallest allowed).
+                double next = cycleStart + every * (std::floor((s.crankDeg - cycleStart) / every + 1e-9) + 1.0);
+                if (next - s.crankDeg < T.minStepDeg) next += every * std::ceil((T.minStepDeg - (next - s.crankDeg)) / every);
                 if (next - s.crankDeg <= step + 1e-12) {
                     step = next - s.crankDeg;
                     atSnapshot = true;
@@ -768,7 +775,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             cycleRecords.push_back(rec);
             cycleSince.push_back(s.crankDeg - cycleStart);
             if (cb.onStep) cb.onStep(rec);
-            if (atSnapshot) snaps.push_back(snapshot(s, ev, cycle));
+            if (atSnapshot) takeSnapshot(s, ev);
             // Next step: grow with the error ratio, from the unclipped step size.
             const double grow = ratio > 0.0 ? std::min(2.0, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 2.0;
             dtDeg = std::min(T.maxStepDeg, std::max(step, std::min(dtDeg, T.maxStepDeg)) * grow);
@@ -803,13 +810,8 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             cb.progress(progress.cycleDoneLine(seconds(tRun), previousCycle.empty() ? std::nullopt
                                                                                    : std::optional(stats_.periodicityError)));
         const bool last = stats_.periodic || cycle == T.maxCycles || (spanDeg > 0.0 && cycleEnd >= T.startDeg + spanDeg - 1e-9);
-        if (last) {
-            if (cb.onSnapshot && !snaps.empty()) {
-                if (cb.progress) cb.progress(fmt::format("writing the {} VTK snapshots of cycle {}", snaps.size(), cycle));
-                for (const Snapshot& sn : snaps) cb.onSnapshot(sn);
-            }
-            break;
-        }
+        if (cb.onCycleEnd) cb.onCycleEnd(cycle, snapshots, last);
+        if (last) break;
         previousCycle = cycleRecords;
         previousSince = cycleSince;
     }

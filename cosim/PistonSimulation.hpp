@@ -88,7 +88,10 @@ struct ClearanceRange {
 
 struct SimulationCallbacks {
     std::function<void(const StepRecord&)> onStep;      ///< every accepted step
-    std::function<void(const Snapshot&)> onSnapshot;    ///< final cycle, every output.vtkEveryDeg
+    /// every output.vtkEveryDeg of every cycle, as it is taken (nothing is held back)
+    std::function<void(const Snapshot&)> onSnapshot;
+    /// after each cycle: its number, the snapshots it took, and whether it is the run's last
+    std::function<void(int cycle, int snapshots, bool last)> onCycleEnd;
     std::function<void(const std::string&)> progress;   ///< human-readable progress lines
 };
 

@@ -182,6 +182,13 @@ void runCase(const RunArgs& a) {
                      sim.liner() ? &liner : nullptr);
         outputInRun += w.seconds();
     };
+    cb.onCycleEnd = [&](int cycle, int snapshots, bool last) {
+        if (snapshots == 0) return;
+        const Stopwatch w;
+        fields.commit();  // the collections list this cycle from now on
+        outputInRun += w.seconds();
+        if (last) log(fmt::format("VTK series: the {} snapshots of cycle {} in {}/film.pvd", snapshots, cycle, dir));
+    };
     cb.progress = log;
     if (c.output.modeShapes) {
         const Stopwatch w;
@@ -206,6 +213,7 @@ void runCase(const RunArgs& a) {
     } catch (const std::exception& e) {
         status = "failed";
         message = e.what();
+        fields.discard();  // the unfinished cycle's snapshots; the last complete cycle's stay listed
     }
     if (cycle.empty() && status == "ok") status = "failed";
     const nlohmann::json doc = summaryJson(c, sim, cycle, outputSeconds, outputInRun, total.seconds(), status, message);

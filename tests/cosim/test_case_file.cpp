@@ -463,6 +463,8 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
                 AllOf(StartsWith(file + ": piston.profile"), HasSubstr("must cover the skirt")));
     EXPECT_THAT(caseError(dir, "    - [-0.010, 0.0]\n", "    - [-0.010, -60e-6]\n"),
                 AllOf(StartsWith(file + ": piston.profile[1]"), HasSubstr("touch the bore")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\noutput: {vtk_every_deg: 1.0e-9}"),
+                AllOf(StartsWith(file + ": output.vtk_every_deg"), HasSubstr("0 (no VTK) or 0.01 to 720 deg")));
     EXPECT_THAT(caseError(dir, "clearance: 5e-05", "clearance: 5e-05\n  skirt_half_angle_deg: 200"),
                 AllOf(StartsWith(file + ": piston.skirt_half_angle_deg"), HasSubstr("0 < angle <= 180")));
     EXPECT_THAT(caseError(dir, "clearance: 5e-05", "clearance: 5e-05\n  skirt_half_angle_deg: 0"),

@@ -228,6 +228,39 @@ TEST(PistonSimulation, OutputsGiveTheTrueCrankAngleWhateverTheStart) {
     }
 }
 
+// Snapshots closer together than time.min_step_deg do not shorten the steps below it: the
+// angles that would need it are skipped, the others are hit exactly, and every snapshot reaches
+// the callback as it is taken, followed by the cycle's end.
+TEST(PistonSimulation, SnapshotsNeverForceAStepBelowTheSmallest) {
+    EngineCase c = smallCase();
+    c.grid = {16, 48};
+    c.output.vtkEveryDeg = 0.01;
+    c.time.minStepDeg = 0.035;
+    PistonSimulation sim(c);
+    std::vector<double> angles;
+    int ends = 0, reported = 0;
+    SimulationCallbacks cb;
+    cb.onSnapshot = [&](const Snapshot& s) {
+        EXPECT_EQ(ends, 0) << "snapshots arrive before the cycle's end";
+        angles.push_back(s.continuousDeg);
+    };
+    cb.onCycleEnd = [&](int, int snapshots, bool last) {
+        ++ends;
+        reported = snapshots;
+        EXPECT_TRUE(last);
+    };
+    sim.run(cb, 5.0);
+    EXPECT_EQ(ends, 1);
+    EXPECT_EQ(reported, int(angles.size()));
+    EXPECT_GE(sim.statistics().minStepDeg, c.time.minStepDeg - 1e-12);
+    ASSERT_GT(angles.size(), 20u);
+    for (std::size_t i = 1; i < angles.size(); ++i) {
+        const double k = angles[i] / 0.01;
+        EXPECT_NEAR(k, std::round(k), 1e-6) << "snapshot " << i << " at " << angles[i] << " deg is on the 0.01° raster";
+        EXPECT_GE(angles[i] - angles[i - 1], c.time.minStepDeg - 1e-9) << i;
+    }
+}
+
 // The periodicity error (docs/coupling.md §1) compares the two cycles at the same crank angle
 // also when the written crank angle wraps (start_deg = 300: 300 … 720, 0 … 300). Recomputed
 // here from the records of both cycles, matched by time: the crank turns at constant speed, so

@@ -425,6 +425,9 @@ TEST(FieldSeriesWriter, BodiesAndCollectionsListTheSnapshotsInOrder) {
         w.write(at(times[s]), f.film, &piston, s % 2 == 0 ? &liner : nullptr);
     }
     EXPECT_EQ(w.count(), 4);
+    EXPECT_FALSE(fs::exists(dir / "film.pvd")) << "the collections wait for commit()";
+    w.commit();
+    EXPECT_EQ(w.committed(), 4);
 
     const auto film = readPvd(dir / "film.pvd");
     ASSERT_EQ(film.size(), 4u);
@@ -507,7 +510,38 @@ TEST(FieldSeriesWriter, BadSnapshotsAreRefusedBeforeAnyFileIsWritten) {
     w.write(at(5.0), f.film, &piston, nullptr);
     EXPECT_THAT([&] { w.write(at(5.0), f.film, &piston, nullptr); },
                 ThrowsMessage<std::runtime_error>(HasSubstr("strictly increasing")));
+    w.commit();
     EXPECT_EQ(readPvd(dir / "film.pvd").size(), 1u);
+}
+
+// One series per cycle: commit() lists the snapshots since the last commit and deletes the files
+// of the series it replaces; discard() deletes the unfinished ones and keeps the series. The
+// time axis starts again with each series.
+TEST(FieldSeriesWriter, EachCommitReplacesTheSeriesAndDiscardKeepsIt) {
+    const auto dir = test::scratchDir();
+    FilmFixture f(lube::FilmGrid::fullCircumference(0.043, kAxial, 8));
+    const fem::Mesh mesh = oneTet();
+    BodyField piston{&mesh, Eigen::Vector3d::Zero(), Eigen::VectorXd::Zero(12), Eigen::VectorXd()};
+    FieldSeriesWriter w(dir.string());
+    for (double t : {0.0, 360.0, 720.0}) w.write(at(t), f.film, &piston, nullptr);  // cycle 1
+    w.commit();
+    for (double t : {0.0, 360.0, 720.0}) w.write(at(t), f.film, &piston, nullptr);  // cycle 2
+    EXPECT_EQ(readPvd(dir / "film.pvd")[0].file, "vtk/film_000000.vts") << "cycle 1 until cycle 2 commits";
+    w.commit();
+    const auto film = readPvd(dir / "film.pvd"), body = readPvd(dir / "piston.pvd");
+    ASSERT_EQ(film.size(), 3u);
+    ASSERT_EQ(body.size(), 3u);
+    EXPECT_EQ(film[0].file, "vtk/film_000003.vts");
+    EXPECT_EQ(body[2].file, "vtk/piston_000005.vtu");
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_FALSE(fs::exists(dir / ("vtk/film_00000" + std::to_string(k) + ".vts"))) << k;
+        EXPECT_FALSE(fs::exists(dir / ("vtk/piston_00000" + std::to_string(k) + ".vtu"))) << k;
+    }
+    w.write(at(0.0), f.film, &piston, nullptr);  // an unfinished cycle 3
+    w.discard();
+    EXPECT_FALSE(fs::exists(dir / "vtk/film_000006.vts"));
+    EXPECT_EQ(readPvd(dir / "film.pvd").size(), 3u);
+    for (const auto& e : film) EXPECT_TRUE(fs::exists(dir / e.file)) << e.file;
 }
 
 // Mode shapes (ModeShapeExport): LZ4 files that VTK reads back; written once — an export of the
