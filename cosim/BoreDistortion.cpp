@@ -82,6 +82,7 @@ Table readTable(const std::string& path, const std::string& headerHelp,
     std::vector<std::size_t> numeric;  // parsed columns
     while (std::getline(in, raw)) {
         ++lineNo;
+        if (lineNo == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);  // UTF-8 byte-order mark
         const std::string line = trim(raw);
         if (line.empty() || line[0] == '#') continue;
         const std::vector<std::string> f = fields(line);

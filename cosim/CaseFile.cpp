@@ -227,7 +227,9 @@ std::string readWholeFile(const fs::path& path, std::string& error) {
     std::ostringstream ss;
     ss << in.rdbuf();
     if (in.bad()) error = "read error";
-    return ss.str();
+    std::string text = ss.str();
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark (spreadsheet CSV)
+    return text;
 }
 
 /// HDF5 files carry an 8-byte signature at offset 0, 512, 1024, 2048, … (after a user block).

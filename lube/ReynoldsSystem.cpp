@@ -97,7 +97,6 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     std::vector<double> cUp(sj(nt), 0.0), mUp(sj(nt), 0.0), cDn(sj(nt), 0.0), mDn(sj(nt), 0.0),
         cT(sj(nt), 0.0), mT(sj(nt), 0.0);
     auto rhoAt = [&](int k) { return Constant ? rho[0] : rho[k]; };
-    auto etaAt = [&](int k) { return Constant ? eta[0] : eta[k]; };
     // Face a–b: c_f and the Couette mass flux a → b (face values as faceValue()).
     // q (constant ρ, η): ρ L / (12 η d) of the face, so c_f = h_f³ q without a division per face.
     auto face = [&](int a, int b, double U, double L, double d, double q, double& c, double& m) {

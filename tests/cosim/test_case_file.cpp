@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <iostream>
 #include <regex>
 #include <sstream>
@@ -367,6 +368,20 @@ TEST(CaseFileErrors, ValidSmallCaseReadsWithDefaults) {
     ASSERT_EQ(c.cylinderPressure.size(), 5u);
     EXPECT_EQ(c.cylinderPressure[2].crankDeg, 360.0);
     EXPECT_EQ(c.cylinderPressure[2].pressure, 4.0e6);
+}
+
+// Spreadsheet programs and some editors start UTF-8 files with a byte-order mark: the case file
+// and the pressure table are read as without it.
+TEST(CaseFileErrors, ByteOrderMarksAreAccepted) {
+    const fs::path dir = scratchDir();
+    const std::string path = caseWith(dir, Edits{}, "\xEF\xBB\xBF" "0,1e5\n180,2e5\n360,4e6\n540,2e5\n720,1e5\n");
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    std::ofstream(path) << "\xEF\xBB\xBF" << text;
+    const EngineCase c = readCaseFile(path);
+    EXPECT_EQ(c.name, "small");
+    ASSERT_EQ(c.cylinderPressure.size(), 5u);
+    EXPECT_EQ(c.cylinderPressure[0].crankDeg, 0.0);
 }
 
 TEST(CaseFileErrors, NegativeValueNamesFileKeyAndLine) {
