@@ -18,7 +18,11 @@ void writeAtomically(const std::string& path, const std::function<void(const std
     }
     std::error_code ec;
     fs::rename(tmp, path, ec);
-    if (ec) throw std::runtime_error("cannot write '" + path + "': " + ec.message());
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(tmp, ignored);  // nothing half-done stays behind
+        throw std::runtime_error("cannot write '" + path + "': " + ec.message());
+    }
 }
 
 }  // namespace flexehd::fem
