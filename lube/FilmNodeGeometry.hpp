@@ -31,18 +31,20 @@ struct Stencil {
     double apply(const Eigen::VectorXd& v) const { return wm * v[m] + wo * v[o] + wp * v[p]; }
 };
 
+/// The one-sided differences at an open edge and the second-order 3-point difference with
+/// node spacings dm (to m) and dp (to p).
+inline Stencil forwardDifference(int o, int p, double d) { return {o, o, p, 0.0, -1.0 / d, 1.0 / d}; }
+inline Stencil backwardDifference(int m, int o, double d) { return {m, o, o, -1.0 / d, 1.0 / d, 0.0}; }
+inline Stencil threePointDifference(int m, int o, int p, double dm, double dp) {
+    const double s = dm + dp;
+    return {m, o, p, -(dp / dm) / s, (dp / dm - dm / dp) / s, (dm / dp) / s};
+}
+
 inline Stencil axialStencil(const FilmGrid& g, int i, int j) {
     const int nz = g.nAxial(), k = g.index(i, j);
-    if (i == 0) {
-        const double d = g.z(1) - g.z(0);
-        return {k, k, g.index(1, j), 0.0, -1.0 / d, 1.0 / d};
-    }
-    if (i == nz - 1) {
-        const double d = g.z(i) - g.z(i - 1);
-        return {g.index(i - 1, j), k, k, -1.0 / d, 1.0 / d, 0.0};
-    }
-    const double dm = g.z(i) - g.z(i - 1), dp = g.z(i + 1) - g.z(i), s = dm + dp;
-    return {g.index(i - 1, j), k, g.index(i + 1, j), -(dp / dm) / s, (dp / dm - dm / dp) / s, (dm / dp) / s};
+    if (i == 0) return forwardDifference(k, g.index(1, j), g.z(1) - g.z(0));
+    if (i == nz - 1) return backwardDifference(g.index(i - 1, j), k, g.z(i) - g.z(i - 1));
+    return threePointDifference(g.index(i - 1, j), k, g.index(i + 1, j), g.z(i) - g.z(i - 1), g.z(i + 1) - g.z(i));
 }
 
 /// (1/R) ∂p/∂θ: the non-uniform 3-point stencil when a neighbour is an arc end's Void column
@@ -50,19 +52,12 @@ inline Stencil axialStencil(const FilmGrid& g, int i, int j) {
 inline Stencil circumferentialStencil(const FilmGrid& g, int i, int j) {
     const int nt = g.nTheta(), k = g.index(i, j);
     const double R = g.radius();
-    if (!g.periodic() && j == 0) {
-        const double ds = R * g.faceAngle(0);
-        return {k, k, g.index(i, 1), 0.0, -1.0 / ds, 1.0 / ds};
-    }
-    if (!g.periodic() && j == nt - 1) {
-        const double ds = R * g.faceAngle(j - 1);
-        return {g.index(i, j - 1), k, k, -1.0 / ds, 1.0 / ds, 0.0};
-    }
+    if (!g.periodic() && j == 0) return forwardDifference(k, g.index(i, 1), R * g.faceAngle(0));
+    if (!g.periodic() && j == nt - 1) return backwardDifference(g.index(i, j - 1), k, R * g.faceAngle(j - 1));
     const int jm = (j + nt - 1) % nt, jp = (j + 1) % nt;
     const double dm = R * g.faceAngle(jm), dp = R * g.faceAngle(j);
     if (dm == dp) return {g.index(i, jm), k, g.index(i, jp), -0.5 / dp, 0.0, 0.5 / dp};
-    const double s = dm + dp;
-    return {g.index(i, jm), k, g.index(i, jp), -(dp / dm) / s, (dp / dm - dm / dp) / s, (dm / dp) / s};
+    return threePointDifference(g.index(i, jm), k, g.index(i, jp), dm, dp);
 }
 
 }  // namespace flexehd::lube

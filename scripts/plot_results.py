@@ -226,20 +226,26 @@ def plot_friction(runs, out_dir):
     save(fig, out_dir, "friction.png")
 
 
-def plot_contact(runs, out_dir):
-    fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 6.0))
+def plot_columns(runs, out_dir, name, title, panels, height=6.5):
+    """One panel per (column, scale, y label) over the crank angle, runs overlaid."""
+    fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(9, height))
     for k, (label, sel, _, _) in enumerate(runs):
         style = dict(color=COLORS[k % len(COLORS)], ls=STYLES[k % len(STYLES)], lw=1.3)
-        axes[0].plot(sel["crank_deg"], sel["contact_force_n"], label=label, **style)
-        axes[1].plot(sel["crank_deg"], sel["liner_friction_boundary_n"], label=label, **style)
-    axes[0].set_ylabel("lateral contact force\non the piston (N)")
-    axes[1].set_ylabel("boundary friction\non the liner (N)")
-    axes[0].set_title("Skirt–liner asperity contact" + cycle_note(runs), pad=14)
-    for ax in axes:
+        for ax, (column, scale, _) in zip(axes, panels):
+            ax.plot(sel["crank_deg"], sel[column] * scale, label=label, **style)
+    for ax, (_, _, ylabel) in zip(axes, panels):
+        ax.set_ylabel(ylabel)
         ax.legend(loc="best", fontsize=8)
+    axes[0].set_title(title + cycle_note(runs), pad=14)
     decorate_crank_axis(axes)
     fig.tight_layout()
-    save(fig, out_dir, "contact.png")
+    save(fig, out_dir, name)
+
+
+def plot_contact(runs, out_dir):
+    plot_columns(runs, out_dir, "contact.png", "Skirt–liner asperity contact",
+                 [("contact_force_n", 1.0, "lateral contact force\non the piston (N)"),
+                  ("liner_friction_boundary_n", 1.0, "boundary friction\non the liner (N)")], height=6.0)
 
 
 def read_film_snapshots(directory):
@@ -327,20 +333,9 @@ def safe_name(label):
 
 
 def plot_film(runs, out_dir):
-    fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 6.5))
-    for k, (label, sel, _, _) in enumerate(runs):
-        style = dict(color=COLORS[k % len(COLORS)], ls=STYLES[k % len(STYLES)], lw=1.3)
-        axes[0].plot(sel["crank_deg"], sel["min_film_m"] * 1e6, label=label, **style)
-        axes[1].plot(sel["crank_deg"], sel["max_pressure_pa"] * 1e-6, label=label, **style)
-    axes[0].set_ylabel("minimum film thickness (µm)")
-    axes[0].set_ylim(bottom=0)
-    axes[1].set_ylabel("maximum film pressure (MPa, gauge)")
-    axes[0].set_title("Oil film" + cycle_note(runs), pad=14)
-    for ax in axes:
-        ax.legend(loc="best", fontsize=8)
-    decorate_crank_axis(axes)
-    fig.tight_layout()
-    save(fig, out_dir, "film.png")
+    plot_columns(runs, out_dir, "film.png", "Oil film",
+                 [("min_film_m", 1e6, "minimum film thickness (µm)\n< 0: the surfaces overlap"),
+                  ("max_pressure_pa", 1e-6, "maximum film pressure (MPa, gauge)")])
 
 
 def cycle_note(runs):
