@@ -36,22 +36,17 @@ SkirtFilm::SkirtFilm(const EngineSpec& e, const PistonSpec& p, const GridSpec& g
     h0_.resize(n);
     z_.resize(n);
     cos_.resize(n);
-    const double pi = std::numbers::pi;
-    int film = 0;
     for (int k = 0; k < n; ++k) {
         const double th = grid_.theta(grid_.thetaIndex(k));
         const double z = grid_.z(grid_.axialIndex(k));
         z_[k] = z;
         cos_[k] = std::cos(th);
         h0_[k] = p.clearance + profileDrop(p.profile, z) + p.ovality * 0.5 * (1.0 - std::cos(2.0 * th));
-        // Angular distance from the nearer panel centre (θ = 0 or π).
-        const double a = std::remainder(th, pi);
-        if (std::abs(a) > p.skirtHalfAngle + 1e-12) {
-            grid_.voidNode(k);
-        } else {
-            ++film;
-        }
     }
+    // The two panels, centred on θ = 0 and π, at their true edges (docs/lube.md §1).
+    const double pi = std::numbers::pi, a = p.skirtHalfAngle;
+    if (a < 0.5 * pi) grid_.restrictToArcs({{-a, a}, {pi - a, pi + a}});
+    const int film = grid_.filmNodeCount();
     if (film == 0) throw std::invalid_argument("skirt film grid: no node lies on a skirt panel");
 }
 
