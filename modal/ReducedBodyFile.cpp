@@ -2,6 +2,7 @@
 
 #include "fem/AtomicFile.hpp"
 #include "modal/Hdf5Handle.hpp"
+#include "modal/ReducedBodyCheck.hpp"
 
 #include <hdf5.h>
 
@@ -576,6 +577,7 @@ ReducedBody readContent(const Reader& r) {
     b.dampingRatios = Eigen::Map<const Eigen::VectorXd>(zeta.data(), Eigen::Index(m));
     b.interfaceMotion =
         r.readMatrix("/modes/interface_motion", 6 * b.interfaces.size(), m, "6 x interfaces, modes");
+    if (const auto defect = reducedBodyDefect(b)) r.fail(*defect);
     return b;
 }
 

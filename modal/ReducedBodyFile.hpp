@@ -24,7 +24,9 @@ void writeReducedBody(const ReducedBody& body, const std::string& path);
 /// Reads a file written by writeReducedBody; every float64 array comes back bitwise
 /// identical. Throws std::runtime_error naming the file (and the object) if it is
 /// missing, not HDF5 or damaged, of another format or format version, or if a required
-/// group, attribute or dataset is missing or of inconsistent size.
+/// group, attribute or dataset is missing or of inconsistent size, or if a value is not what
+/// a body can have (reducedBodyDefect: non-finite, unphysical material, modal mass not
+/// positive definite, stiffness not symmetric positive semi-definite).
 ReducedBody readReducedBody(const std::string& path);
 
 /// 64-bit FNV-1a hash of the bytes of a file as 16 lower-case hex digits (the mesh

@@ -1,7 +1,9 @@
 #pragma once
 // A reduced body with a real mesh (the unit cube, TET10) but random, deterministic modal
-// data, for the file and command-line tests: the matrices are deliberately not
-// symmetric so that a transposed write or read cannot go unnoticed.
+// data, for the file and command-line tests: the mode shapes and interface motion are
+// non-square so that a transposed write or read cannot go unnoticed; the modal mass and
+// stiffness are random but, as every body's, symmetric, positive definite and positive
+// semi-definite (the reader checks that).
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -39,8 +41,9 @@ inline modal::ReducedBody syntheticBody(int modes = 9, int rigid = 6) {
         return Eigen::MatrixXd(Eigen::MatrixXd::NullaryExpr(rows, cols, [&] { return normal(rng); }));
     };
     b.shapes = random(3 * b.mesh.numNodes(), modes);
-    b.massMatrix = Eigen::MatrixXd::Identity(modes, modes) + 1e-3 * random(modes, modes);
-    b.stiffnessMatrix = random(modes, modes);
+    const Eigen::MatrixXd dm = random(modes, modes), dk = random(modes, modes);
+    b.massMatrix = Eigen::MatrixXd::Identity(modes, modes) + 0.5e-3 * (dm + dm.transpose());
+    b.stiffnessMatrix = Eigen::MatrixXd::Zero(modes, modes);
     b.frequenciesHz.resize(modes);
     b.dampingRatios.resize(modes);
     for (int k = 0; k < modes; ++k) {
@@ -50,6 +53,13 @@ inline modal::ReducedBody syntheticBody(int modes = 9, int rigid = 6) {
         b.rigidBody.push_back(isRigid ? 1 : 0);
         b.dampingRatios(k) = isRigid ? 0.0 : 0.02 + 1e-3 * normal(rng);
     }
+    // Weak symmetric coupling of the elastic modes: K = Ω (I + 1e-3 S) Ω with Ω = diag(ω), so
+    // positive definite on them, and the rigid-body rows zero but for their tiny diagonal.
+    for (int i = rigid; i < modes; ++i)
+        for (int j = rigid; j < modes; ++j)
+            if (i != j)
+                b.stiffnessMatrix(i, j) = 0.5e-3 * (dk(i, j) + dk(j, i)) * std::sqrt(b.stiffnessMatrix(i, i)) *
+                                          std::sqrt(b.stiffnessMatrix(j, j));
     b.interfaceMotion = random(6 * Eigen::Index(b.interfaces.size()), modes);
     return b;
 }
