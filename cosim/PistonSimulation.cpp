@@ -4,7 +4,7 @@
 #include "cosim/ClearanceTerms.hpp"
 #include "cosim/PistonSimulationState.hpp"
 #include "lube/FilmIntegrals.hpp"
-#include "modal/ReducedBodyFile.hpp"
+#include "cosim/FlexibleBodyLoader.hpp"
 
 #include <Eigen/LU>
 
@@ -80,9 +80,7 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
                                                                           c.contact.coatingThickness));
     }
     if (c.pistonBody.model == BodyModel::Flexible) {
-        piston_ = std::make_unique<FlexibleSurface>(modal::readReducedBody(c.pistonBody.file),
-                                                    FlexibleSurface::Side::Piston, c.pistonBody.surface,
-                                                    c.pistonBody.interfaces, film_.grid());
+        piston_ = loadFlexibleSurface(c, c.pistonBody, "piston", FlexibleSurface::Side::Piston, film_.grid());
         mp_ = piston_->modes();
     }
     if (c.linerBody.model == BodyModel::Flexible) {
@@ -90,10 +88,8 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
         const double lo = std::min(linerOffset(180.0), linerOffset(0.0));
         const double hi = std::max(linerOffset(180.0), linerOffset(0.0));
         const double margin = 2.0 * film_.grid().length() / (film_.grid().nAxial() - 1);
-        liner_ = std::make_unique<FlexibleSurface>(modal::readReducedBody(c.linerBody.file),
-                                                   FlexibleSurface::Side::Liner, c.linerBody.surface,
-                                                   c.linerBody.interfaces, film_.grid(),
-                                                   lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
+        liner_ = loadFlexibleSurface(c, c.linerBody, "liner", FlexibleSurface::Side::Liner, film_.grid(),
+                                     lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
         ml_ = liner_->modes();
     }
     if (c.coupling.response == ElasticResponse::Dynamic) {

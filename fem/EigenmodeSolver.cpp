@@ -92,8 +92,15 @@ Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const E
         op, Bop, opt.count, ncv, out.shift);
     const auto t0 = Clock::now();
     eigs.init();
-    const Eigen::Index nconv = eigs.compute(Spectra::SortRule::LargestMagn, opt.maxIterations, opt.tolerance,
-                                            Spectra::SortRule::SmallestAlge);
+    Eigen::Index nconv = 0;
+    try {
+        nconv = eigs.compute(Spectra::SortRule::LargestMagn, opt.maxIterations, opt.tolerance,
+                             Spectra::SortRule::SmallestAlge);
+    } catch (const std::exception&) {  // Spectra's own words name its internals, not the problem
+        throw std::runtime_error(
+            "eigenmodes: the Lanczos iteration broke down on numbers that are not finite: the stiffness or "
+            "mass matrix is out of range (check the material constants and the mesh's size and units)");
+    }
     if (eigs.info() != Spectra::CompInfo::Successful)
         throw std::runtime_error("eigenmodes: Lanczos did not converge (" + std::to_string(nconv) + " of " +
                                  std::to_string(opt.count) + " modes after " +

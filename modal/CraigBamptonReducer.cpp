@@ -106,6 +106,10 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
         settings.circumferentialOrder < 0)
         throw std::invalid_argument("reduction: load patterns need orders >= 0 and axial hats 0 or >= 2");
     for (const auto& surface : settings.staticCorrection) fem::BoundarySurface(mesh_, surface);
+    for (const auto& s : specs)
+        if (mesh_.group(s.group).dim != 2)
+            throw std::invalid_argument("interface '" + s.group + "' is a volume group of mesh '" + mesh_.source +
+                                        "'; an interface is a surface group (the surfaces where the body is held)");
     ReducedBody body;
     body.mesh = mesh_;
     body.material = material_;

@@ -31,7 +31,15 @@ CLI::Validator numberCheck(const std::string& expected, bool whole, Accept accep
         whole ? "INT" : "NUMBER");
 }
 
-std::string plain(double v) { return fmt::format("{:g}", v); }
+// As people write numbers: 0.499, 100, 1e5, 1e-3 (no "e+05").
+std::string plain(double v) {
+    if (v != 0.0 && (std::abs(v) >= 1e5 || std::abs(v) < 1e-3)) {
+        const int e = int(std::floor(std::log10(std::abs(v))));
+        const double m = v / std::pow(10.0, e);
+        return fmt::format("{:g}e{}", m, e);
+    }
+    return fmt::format("{:g}", v);
+}
 
 }  // namespace
 
@@ -66,9 +74,11 @@ void addMeshOptions(CLI::App* cmd, MeshArguments& mesh) {
 }
 
 void addMaterialOptions(CLI::App* cmd, fem::ElasticMaterial& material) {
-    cmd->add_option("--E", material.E, "Young's modulus [Pa]")->required()->check(positiveNumber());
+    // Physical ranges: from soft foams (0.1 MPa, 10 kg/m³) to diamond (1.2e12 Pa) and the
+    // densest metals (22 600 kg/m³); outside them the eigensolvers work with meaningless numbers.
+    cmd->add_option("--E", material.E, "Young's modulus [Pa], 1e5 to 1e13")->required()->check(numberFromTo(1e5, 1e13));
     cmd->add_option("--nu", material.nu, "Poisson's ratio [-]")->required()->check(numberFromTo(-0.999, 0.499));
-    cmd->add_option("--rho", material.rho, "Density [kg/m^3]")->required()->check(positiveNumber());
+    cmd->add_option("--rho", material.rho, "Density [kg/m^3], 10 to 1e5")->required()->check(numberFromTo(10.0, 1e5));
 }
 
 namespace {

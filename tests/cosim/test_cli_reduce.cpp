@@ -53,3 +53,18 @@ TEST(CliReduce, UnknownInterfaceGroupFails) {
     EXPECT_THAT(r.err, HasSubstr("no physical group 'pin_bore'"));
     EXPECT_FALSE(std::filesystem::exists("/tmp/x.h5"));
 }
+
+TEST(CliReduce, VolumeInterfaceAndUnphysicalMaterialAreRefusedWhereTheyEnter) {
+    const std::string mesh = dataPath("beam.geo");
+    const auto volume = runFlexehd("reduce --mesh " + mesh + " --E 2.1e11 --nu 0.3 --rho 7850 --interface beam:rbe2 --out /tmp/x.h5");
+    EXPECT_EQ(volume.status, 1);
+    EXPECT_THAT(volume.err, HasSubstr("interface 'beam' is a volume group of mesh"));
+    EXPECT_THAT(volume.err, HasSubstr("an interface is a surface group"));
+    const auto stiff = runFlexehd("reduce --mesh " + mesh + " --E 1e300 --nu 0.3 --rho 7850 --interface clamped:rbe2 --out /tmp/x.h5");
+    EXPECT_EQ(stiff.status, 1);
+    EXPECT_THAT(stiff.err, HasSubstr("flexehd: error: --E: expected a number from 1e5 to 1e13, got '1e300'"));
+    const auto light = runFlexehd("modes --mesh " + mesh + " --E 2.1e11 --nu 0.3 --rho 1e-3");
+    EXPECT_EQ(light.status, 1);
+    EXPECT_THAT(light.err, HasSubstr("--rho: expected a number from 10 to 1e5, got '1e-3'"));
+    EXPECT_FALSE(std::filesystem::exists("/tmp/x.h5"));
+}

@@ -101,11 +101,39 @@ TEST(CliRun, FlexiblePistonCoarse) {
     // The skirt receives the film's load. The mapping itself is exact for the bilinear field
     // (test_mapping, 1e-12); what summary.json reports is its difference from the film force
     // the dynamics uses (trapezoidal sum over the grid's control volumes), which is a
-    // discretisation difference at the panel edges, O(cell width): measured 4.9 % of the peak
-    // film force on this 16 × 48 grid, 0.18 % on the default 48 × 144 grid. Bound: one
+    // discretisation difference at the panel edges, O(cell width): measured 2.3 % of the peak
+    // film force on this 16 × 48 grid, 0.19 % on the default 48 × 144 grid. Bound: one
     // 7.5° cell's share of a ±40° panel, 7.5 / 80 ≈ 9 %.
     EXPECT_LT(s["load_mapping_conservation_error_max"].get<double>(), 7.5 / 80.0);
     EXPECT_TRUE(fs::exists(dir / "results" / "piston.pvd"));
+    // A surface or interface the body does not have: the error names the case file, the case
+    // key and the .h5, and lists what the body has.
+    const std::string file = coarseCase("case.yaml", dir, body);
+    const auto withLine = [&](const std::string& from, const std::string& to) {
+        std::ifstream in(file);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        std::string t = ss.str();
+        replace(t, from, to);
+        const std::string bad = (dir / "bad.yaml").string();
+        std::ofstream(bad) << t;
+        return runFlexehd("run " + bad + " --quiet");
+    };
+    const auto surface = withLine("surface: skirt", "surface: skrit");
+    EXPECT_EQ(surface.status, 1);
+    EXPECT_NE(surface.err.find("bad.yaml: bodies.piston.surface: 'skrit' is not a physical group of the reduced body " +
+                               body + " (its surface groups: "),
+              std::string::npos)
+        << surface.err;
+    const auto volume = withLine("surface: skirt", "surface: piston");
+    EXPECT_NE(volume.err.find("bodies.piston.surface: 'piston' of the reduced body " + body + " is a volume group"),
+              std::string::npos)
+        << volume.err;
+    const auto itf = withLine("interface: pin_bore", "interface: pin_bor");
+    EXPECT_NE(itf.err.find("bodies.piston.interface: 'pin_bor' is not an interface of the reduced body " + body +
+                           " (its interfaces: pin_bore)"),
+              std::string::npos)
+        << itf.err;
     fs::remove_all(dir);
 }
 
