@@ -53,6 +53,8 @@ void FilmGrid::resetColumnGeometry() {
     cvWidth_.assign(nt, dTheta_);
     if (!periodic_) cvWidth_.front() = cvWidth_.back() = 0.5 * dTheta_;
     coveredWidth_ = cvWidth_;
+    coveredBelow_.assign(nt, 0.5 * dTheta_);
+    if (!periodic_) coveredBelow_.front() = 0.0;
     faceAngle_.assign(nt, dTheta_);
 }
 
@@ -136,21 +138,23 @@ void FilmGrid::restrictToArcs(std::vector<std::pair<double, double>> arcs) {
         const std::size_t jr = std::size_t((j + 1) % nTheta_), jl = std::size_t((j + nTheta_ - 1) % nTheta_);
         double cv = 0.0, covered = 0.0;
         bool onEdge = false;
+        // Adds the side's control volume and covered width; returns the covered width.
         auto side = [&](bool exists, std::size_t nb, double distance, std::size_t face) {
-            if (!exists) return;  // open-arc end: the half control volume of the grid
+            if (!exists) return 0.0;  // open-arc end: the half control volume of the grid
             distance = std::max(0.0, distance);
             if (arcOf[nb] >= 0) {
                 cv += 0.5 * dTheta_;
                 covered += 0.5 * dTheta_;
-                return;
+                return 0.5 * dTheta_;
             }
             cv += 0.5 * distance;
             covered += distance;
             faceAngle_[face] = std::max(distance, 1e-6 * dTheta_);
             onEdge = onEdge || distance < 1e-6 * dTheta_;
+            return distance;
         };
         side(hasRight, jr, hi - pos[sj], sj);
-        side(hasLeft, jl, pos[sj] - lo, jl);
+        coveredBelow_[sj] = side(hasLeft, jl, pos[sj] - lo, jl);
         cvWidth_[sj] = cv;
         coveredWidth_[sj] = covered;
         if (onEdge)

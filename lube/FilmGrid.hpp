@@ -65,6 +65,9 @@ public:
     /// The part of the bearing surface column j stands for (rad): its control volume plus, next
     /// to an arc end, the strip from there to the end (where the pressure falls to ambient).
     double coveredAngularWidth(int j) const { return coveredWidth_[static_cast<std::size_t>(j)]; }
+    /// The part of coveredAngularWidth(j) on the −θ side of column j (the rest is on the +θ side):
+    /// Δθ/2 towards a neighbour on the surface, the distance to the arc end towards one outside.
+    double coveredWidthBelow(int j) const { return coveredBelow_[static_cast<std::size_t>(j)]; }
     /// Angular distance across the face between columns j and j + 1 (wrapped): Δθ, or from a
     /// column to the arc end it borders when the other column is outside the arcs.
     double faceAngle(int j) const { return faceAngle_[static_cast<std::size_t>(j)]; }
@@ -139,7 +142,7 @@ private:
     std::vector<NodeKind> kind_;
     std::vector<double> fixedPressure_;
     // Column geometry (rad), per column j: control-volume width, covered width, face j | j + 1.
-    std::vector<double> cvWidth_, coveredWidth_, faceAngle_;
+    std::vector<double> cvWidth_, coveredWidth_, coveredBelow_, faceAngle_;
     std::vector<std::pair<double, double>> arcs_;
 };
 

@@ -88,7 +88,9 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
             out.boundaryFrictionForce += fb;
             out.moment += (r - opt.referencePoint).cross(fp + fc + fs + fb);
             out.viscousDissipation +=
-                (couette * dV * dV + h * h * h * (dpdz * dpdz + dpdy * dpdy) / (12.0 * eta[k])) * S;
+                (couette * dV * dV + h * h * h * (axialDerivativeSquared(g, i, j, p) +
+                                                  circumferentialDerivativeSquared(g, i, j, p)) /
+                                         (12.0 * eta[k])) * S;
             out.boundaryFrictionPower += opt.boundaryFriction * pc * dV * S;
             out.contactLoad += pc * S;
             out.minFilm = std::min(out.minFilm, h);

@@ -2,7 +2,8 @@
 // FilmNodeGeometry: what the film integrals and their gradient (FilmIntegrals, FilmLoadGradient)
 // need at one grid node — its area, the local frame e_r, e_θ, e_z and position, and the
 // 3-point stencils of ∂p/∂z and (1/R) ∂p/∂θ (second order on the non-uniform axial spacing,
-// periodic wrap, one-sided at open edges; docs/lube.md §5).
+// periodic wrap, one-sided at open edges; docs/lube.md §5), and the squares of these derivatives
+// as the dissipation integral needs them.
 #include <Eigen/Core>
 
 #include <cmath>
@@ -58,6 +59,42 @@ inline Stencil circumferentialStencil(const FilmGrid& g, int i, int j) {
     const double dm = R * g.faceAngle(jm), dp = R * g.faceAngle(j);
     if (dm == dp) return {g.index(i, jm), k, g.index(i, jp), -0.5 / dp, 0.0, 0.5 / dp};
     return threePointDifference(g.index(i, jm), k, g.index(i, jp), dm, dp);
+}
+
+/// A squared derivative over a node's control volume: the squares of the one-sided differences
+/// to m (spacing dm) and to p (spacing dp), weighted by the parts wm and wp of the surface the
+/// node stands for on each side. Second order where the field is smooth, like the square of the
+/// 3-point difference, and also where the derivative jumps at the node (film reformation after
+/// a cavitated zone), where the square of the central difference would take (½ jump)² for the
+/// mean of the squares.
+inline double squaredDerivative(double vm, double vo, double vp, double dm, double dp, double wm, double wp) {
+    const double gm = (vo - vm) / dm, gp = (vp - vo) / dp;
+    return (wm * gm * gm + wp * gp * gp) / (wm + wp);
+}
+
+/// (∂p/∂z)² at node (i, j): one-sided at the open axial edges.
+inline double axialDerivativeSquared(const FilmGrid& g, int i, int j, const Eigen::VectorXd& v) {
+    const int nz = g.nAxial();
+    if (i == 0 || i == nz - 1) {
+        const double d = axialStencil(g, i, j).apply(v);
+        return d * d;
+    }
+    const double dm = g.z(i) - g.z(i - 1), dp = g.z(i + 1) - g.z(i);
+    return squaredDerivative(v[g.index(i - 1, j)], v[g.index(i, j)], v[g.index(i + 1, j)], dm, dp, dm, dp);
+}
+
+/// ((1/R) ∂p/∂θ)² at node (i, j): one-sided at the ends of an open arc; a column cut by an arc
+/// end weights the side towards the end by the strip it covers there.
+inline double circumferentialDerivativeSquared(const FilmGrid& g, int i, int j, const Eigen::VectorXd& v) {
+    const int nt = g.nTheta();
+    if (!g.periodic() && (j == 0 || j == nt - 1)) {
+        const double d = circumferentialStencil(g, i, j).apply(v);
+        return d * d;
+    }
+    const int jm = (j + nt - 1) % nt, jp = (j + 1) % nt;
+    const double R = g.radius(), below = g.coveredWidthBelow(j);
+    return squaredDerivative(v[g.index(i, jm)], v[g.index(i, j)], v[g.index(i, jp)], R * g.faceAngle(jm),
+                             R * g.faceAngle(j), below, g.coveredAngularWidth(j) - below);
 }
 
 }  // namespace flexehd::lube

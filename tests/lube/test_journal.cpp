@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "lube/FilmIntegrals.hpp"
 #include "lube/ReynoldsSolver.hpp"
@@ -19,6 +20,9 @@ struct LongResult {
     double Wr, Wt;  // film force on the journal along +x (line of centres) and −y, per unit
                     // length, in units of 6 μ ω R³ / c²
     int iterations;
+    // Reference only: ∫ H P' dθ and ∫ H³ P'² dθ over the full film (the Poiseuille parts of
+    // the friction torque and of the dissipation).
+    double poiseuilleTorque = 0.0, poiseuilleDissipation = 0.0;
 };
 
 LongResult solveLong(const Journal& jb, int nTheta, Cavitation cav, SolverKind solver) {
@@ -60,7 +64,9 @@ LongResult reynoldsLongReference(double eps) {
     const double tc = 0.5 * (lo + hi), hs = H(tc);
     auto dP = [&](double t) { return (H(t) - hs) / std::pow(H(t), 3); };
     return {simpson([&](double t) { return dP(t) * std::sin(t); }, 0.0, tc),
-            simpson([&](double t) { return dP(t) * std::cos(t); }, 0.0, tc), 0};
+            simpson([&](double t) { return dP(t) * std::cos(t); }, 0.0, tc), 0,
+            simpson([&](double t) { return H(t) * dP(t); }, 0.0, tc),
+            simpson([&](double t) { return std::pow(H(t), 3) * dP(t) * dP(t); }, 0.0, tc)};
 }
 
 }  // namespace
@@ -123,6 +129,47 @@ TEST(JournalLong, ReynoldsConditionMatchesShooting) {
             EXPECT_LT(err, n == 480 ? 5e-3 : 2e-2) << "eps " << eps << " n " << n;
             EXPECT_LT(err, prev) << "eps " << eps;
             prev = err;
+        }
+    }
+}
+
+// Friction across a cavitation boundary: the infinitely long bearing with the Reynolds
+// condition (cavitated film: p = p_cav, full Couette shear) against the shooting solution above.
+// With p = 6μω(R/c)² P and h = c H the torque on the journal and the dissipation are
+//   T = −(μωR³L/c) [∫ dθ/H + 3 ∫ H P' dθ],   D = (μω²R³L/c) [∫ dθ/H + 3 ∫ H³ P'² dθ],
+// ∫₀^2π dθ/H = 2π/√(1−ε²) (the full-Sommerfeld case of FrictionTorqueAndFlow, these with the
+// integrals over the whole circumference). The pressure gradient is continuous at rupture
+// (P' = 0 there) but jumps at reformation (θ = 0, where P' goes from 0 to (H(0) − H*)/H(0)³):
+// the dissipation's |∇p|² must take the mean of the squares there, not the square of the mean,
+// for both to converge at second order.
+TEST(JournalLong, FrictionAcrossTheCavitationBoundaryConvergesAtSecondOrder) {
+    for (double eps : {0.3, 0.6, 0.8}) {
+        Journal jb;
+        jb.eps = eps;
+        const LongResult ref = reynoldsLongReference(eps);
+        const double couette = 2 * kPi / std::sqrt(1 - eps * eps);
+        double prevT = 0.0, prevD = 0.0;
+        for (int n : {120, 240, 480}) {
+            ReynoldsOptions opt;
+            opt.cavitation = Cavitation::Reynolds;
+            opt.control.tolerance = 1e-12;
+            ReynoldsSolver rs(jb.longGrid(n), Lubricant(jb.mu), opt);
+            const FilmState st = jb.state(rs.grid());
+            const ReynoldsResult r = rs.solve(st);
+            const FilmLoads f = integrateFilm(rs.grid(), st, rs.lubricant(), r.pressure);
+            const double unit = jb.mu * jb.omega * std::pow(jb.R, 3) * rs.grid().length() / jb.c;
+            const double T = -unit * (couette + 3 * ref.poiseuilleTorque);
+            const double D = unit * jb.omega * (couette + 3 * ref.poiseuilleDissipation);
+            const double eT = std::abs(f.moment.z() / T - 1), eD = std::abs(f.viscousDissipation / D - 1);
+            std::printf("  eps %.1f n %d: torque error %.3e, dissipation error %.3e\n", eps, n, eT, eD);
+            EXPECT_LT(eT, 5e-4) << "eps " << eps << " n " << n;
+            EXPECT_LT(eD, 5e-4) << "eps " << eps << " n " << n;
+            if (prevT > 0) {
+                EXPECT_GT(prevT / eT, 3.0) << "torque not second order, eps " << eps << " n " << n;
+                EXPECT_GT(prevD / eD, 3.0) << "dissipation not second order, eps " << eps << " n " << n;
+            }
+            prevT = eT;
+            prevD = eD;
         }
     }
 }
