@@ -163,14 +163,14 @@ double number(const Section& s, const std::string& key, Quantity q, Sign sign, d
     return v;
 }
 
-int integer(const Section& s, const std::string& key, int minimum, int def, const char* what) {
+int integer(const Section& s, const std::string& key, int minimum, int maximum, int def, const char* what) {
     if (!s.has(key)) return def;
     const YAML::Node n = s.get(key);
     long long v = 0;
-    const std::string expected = fmt::format("an integer number of {} >= {}", what, minimum);
+    const std::string expected = fmt::format("a whole number{}{} from {} to {}", *what ? " of " : "", what, minimum, maximum);
     if (!n.IsScalar() || !parseInt(n.Scalar(), v))
         s.fail(key, fmt::format("expected {}, got {}", expected, describe(n)));
-    if (v < minimum || v > 100000000) s.fail(key, fmt::format("expected {}, got {}", expected, trim(n.Scalar())));
+    if (v < minimum || v > maximum) s.fail(key, fmt::format("expected {}, got {}", expected, trim(n.Scalar())));
     return static_cast<int>(v);
 }
 
@@ -471,8 +471,8 @@ void readLiner(const Section& top, const EngineSpec& engine, LinerSpec& l) {
         if (e.has("z") == e.has("depth"))
             e.fail(e.has("z") ? "depth" : "z", "give exactly one of z (m, liner frame) and depth (m below the liner top)");
         t.z = e.has("z") ? number(e, "z", kLength, Sign::Any, 0.0) : -number(e, "depth", kLength, Sign::Any, 0.0);
-        if (!e.has("order")) e.missing("order", "an integer Fourier order >= 0");
-        t.order = integer(e, "order", 0, 0, "order");
+        if (!e.has("order")) e.missing("order", "a whole number from 0 to 100 (the Fourier order)");
+        t.order = integer(e, "order", 0, 100, 0, "");
         t.amplitude = number(e, "amplitude", {"radial amplitude", "m"}, Sign::Any, 0.0, true);
         if (e.has("phase") == e.has("phase_deg"))
             e.fail(e.has("phase") ? "phase_deg" : "phase", "give exactly one of phase (rad) and phase_deg (deg)");
@@ -706,8 +706,8 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     }
 
     const Section grid(ctx, top.get("grid"), "grid", {"axial_nodes", "circumferential_nodes"});
-    c.grid.axialNodes = integer(grid, "axial_nodes", 3, c.grid.axialNodes, "nodes");
-    c.grid.circumferentialNodes = integer(grid, "circumferential_nodes", 8, c.grid.circumferentialNodes, "nodes");
+    c.grid.axialNodes = integer(grid, "axial_nodes", 3, 100000, c.grid.axialNodes, "nodes");
+    c.grid.circumferentialNodes = integer(grid, "circumferential_nodes", 8, 100000, c.grid.circumferentialNodes, "nodes");
     {
         // Each skirt panel (2 × half angle wide) must hold at least 3 grid columns.
         const double spacing = 2 * kPi / c.grid.circumferentialNodes;
@@ -738,7 +738,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
         number(time, "lateral_tolerance", {"length", "m"}, Sign::Positive, c.time.lateralTolerance);
     if (time.has("tilt_tolerance_deg"))
         c.time.tiltTolerance = number(time, "tilt_tolerance_deg", {"angle", "deg"}, Sign::Positive, 0.0) * kDeg;
-    c.time.maxCycles = integer(time, "max_cycles", 1, c.time.maxCycles, "cycles");
+    c.time.maxCycles = integer(time, "max_cycles", 1, 1000, c.time.maxCycles, "cycles");
     c.time.periodicityTolerance =
         number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, c.time.periodicityTolerance);
 
@@ -748,7 +748,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     if (!(c.coupling.tolerance < 1.0))
         coupling.fail("tolerance",
                       fmt::format("expected a relative tolerance below 1, got {:g}", c.coupling.tolerance));
-    c.coupling.maxIterations = integer(coupling, "max_iterations", 1, c.coupling.maxIterations, "iterations");
+    c.coupling.maxIterations = integer(coupling, "max_iterations", 1, 10000, c.coupling.maxIterations, "iterations");
     c.coupling.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0
                                   ? CouplingAcceleration::IqnIls
                                   : CouplingAcceleration::Aitken;

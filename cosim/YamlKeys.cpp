@@ -54,7 +54,7 @@ std::string joinedKeys(const std::vector<std::string>& items) {
 std::string describeNode(const YAML::Node& n) {
     if (!n.IsDefined() || n.IsNull()) return "nothing";
     if (n.IsMap()) return "a mapping";
-    if (n.IsSequence()) return "a list";
+    if (n.IsSequence()) return n.size() == 0 ? "an empty list" : "a list";
     return "'" + n.Scalar() + "'";
 }
 

@@ -428,7 +428,13 @@ TEST(CaseFileErrors, WrongTypes) {
     EXPECT_THAT(caseError(dir, "bore: 0.086", "bore:"),
                 AllOf(StartsWith(file + ": engine.bore"), HasSubstr("got nothing")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\ngrid: {axial_nodes: 40.5}"),
-                AllOf(StartsWith(file + ": grid.axial_nodes"), HasSubstr("integer")));
+                AllOf(StartsWith(file + ": grid.axial_nodes"),
+                      HasSubstr("expected a whole number of nodes from 3 to 100000, got '40.5'")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncoupling: {max_iterations: 2147483648}"),
+                AllOf(StartsWith(file + ": coupling.max_iterations"),
+                      HasSubstr("expected a whole number of iterations from 1 to 10000, got 2147483648")));
+    EXPECT_THAT(caseError(dir, "bore: 0.086", "bore: []"),
+                AllOf(StartsWith(file + ": engine.bore"), HasSubstr("got an empty list")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\noutput: {mode_shapes: maybe}"),
                 AllOf(StartsWith(file + ": output.mode_shapes"), HasSubstr("true or false")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\ncoupling: {elastic_squeeze: 1e-3}"),
