@@ -137,9 +137,17 @@ void runCase(const RunArgs& a) {
     cosim::PistonSimulation sim(c);
     if (sim.piston()) {
         log(fmt::format("piston: {} modes from {}", sim.piston()->modes(), c.pistonBody.file));
-        if (!sim.piston()->outsideNodes().empty())
-            spdlog::warn("{} skirt film nodes lie outside the surface '{}' of {}: no elastic motion there",
-                         sim.piston()->outsideNodes().size(), c.pistonBody.surface, c.pistonBody.file);
+        const std::size_t outside = sim.piston()->outsideNodes().size();
+        const int film = sim.film().grid().filmNodeCount();
+        if (2 * outside > std::size_t(film))
+            spdlog::warn("{} of the {} skirt film nodes ({:.0f} %) lie outside the surface '{}' of {}: most of the "
+                         "skirt does not deform; is {} the piston's reduced body, made from the mesh the case's "
+                         "piston geometry describes?",
+                         outside, film, 100.0 * double(outside) / film, c.pistonBody.surface, c.pistonBody.file,
+                         c.pistonBody.file);
+        else if (outside > 0)
+            spdlog::warn("{} of the {} skirt film nodes lie outside the surface '{}' of {}: no elastic motion there",
+                         outside, film, c.pistonBody.surface, c.pistonBody.file);
     }
     if (sim.liner()) log(fmt::format("liner: {} modes from {}", sim.liner()->modes(), c.linerBody.file));
 

@@ -109,16 +109,17 @@ TEST(CliRun, FlexiblePistonCoarse) {
     // A surface or interface the body does not have: the error names the case file, the case
     // key and the .h5, and lists what the body has.
     const std::string file = coarseCase("case.yaml", dir, body);
-    const auto withLine = [&](const std::string& from, const std::string& to) {
+    const auto withLines = [&](const std::vector<std::pair<std::string, std::string>>& edits) {
         std::ifstream in(file);
         std::stringstream ss;
         ss << in.rdbuf();
         std::string t = ss.str();
-        replace(t, from, to);
+        for (const auto& [from, to] : edits) replace(t, from, to);
         const std::string bad = (dir / "bad.yaml").string();
         std::ofstream(bad) << t;
         return runFlexehd("run " + bad + " --quiet");
     };
+    const auto withLine = [&](const std::string& from, const std::string& to) { return withLines({{from, to}}); };
     const auto surface = withLine("surface: skirt", "surface: skrit");
     EXPECT_EQ(surface.status, 1);
     EXPECT_NE(surface.err.find("bad.yaml: bodies.piston.surface: 'skrit' is not a physical group of the reduced body " +
@@ -129,6 +130,17 @@ TEST(CliRun, FlexiblePistonCoarse) {
     EXPECT_NE(volume.err.find("bodies.piston.surface: 'piston' of the reduced body " + body + " is a volume group"),
               std::string::npos)
         << volume.err;
+    // A film grid that the body's skirt surface mostly misses (the case's skirt 106 mm long, the
+    // mesh's 36 mm): the run goes on, and the warning says how much of the skirt does not deform
+    // and asks whether the body is the right one.
+    const auto lands = withLines({{"skirt_bottom: -0.025", "skirt_bottom: -0.095"},
+                                  {"- [-0.0250, 20.0e-6]", "- [-0.0950, 20.0e-6]\n    - [-0.0250, 20.0e-6]"}});
+    EXPECT_EQ(lands.status, 0) << lands.err;
+    EXPECT_NE(lands.err.find(" skirt film nodes ("), std::string::npos) << lands.err;
+    EXPECT_NE(lands.err.find("lie outside the surface 'skirt' of " + body + ": most of the skirt does not "
+                             "deform; is " + body + " the piston's reduced body"),
+              std::string::npos)
+        << lands.err;
     const auto itf = withLine("interface: pin_bore", "interface: pin_bor");
     EXPECT_NE(itf.err.find("bodies.piston.interface: 'pin_bor' is not an interface of the reduced body " + body +
                            " (its interfaces: pin_bore)"),
