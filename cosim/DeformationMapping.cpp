@@ -91,8 +91,7 @@ DeformationMapping::DeformationMapping(const fem::Mesh& mesh, const std::string&
     }
     const double spread = (rMax - rMin) / (rSum / static_cast<double>(nodes.size()));
     if (!(spread <= radiusTolerance))
-        throw std::invalid_argument("DeformationMapping: surface '" + surface + "' of mesh '" +
-                                    mesh.source + "' is not a cylinder about z (relative radius spread " +
+        throw std::invalid_argument("surface '" + surface + "' is not a cylinder about z (relative radius spread " +
                                     std::to_string(spread) + " > tolerance " +
                                     std::to_string(radiusTolerance) + ")");
 
@@ -137,9 +136,9 @@ DeformationMapping::DeformationMapping(const fem::Mesh& mesh, const std::string&
         }
         const Eigen::MatrixXd Pinv = A.completeOrthogonalDecomposition().pseudoInverse();
         if (A.completeOrthogonalDecomposition().rank() < 6)
-            throw std::runtime_error("DeformationMapping: too few surface nodes around node " +
+            throw std::runtime_error("too few nodes of surface '" + surface + "' around its node " +
                                      std::to_string(mesh.nodeTags[static_cast<std::size_t>(v)]) +
-                                     " of surface '" + surface + "' for a quadratic gradient fit");
+                                     " for a quadratic gradient fit");
         auto& st = grad[static_cast<std::size_t>(v)].terms;
         for (std::size_t r = 0; r < ids.size(); ++r)
             st.emplace_back(ids[r], V2(Pinv(1, static_cast<Eigen::Index>(r)) / h,
@@ -208,8 +207,7 @@ DeformationMapping::DeformationMapping(const fem::Mesh& mesh, const std::string&
     for (int k = 0; k < grid.size(); ++k)
         if (!done[static_cast<std::size_t>(k)]) outside_.push_back(k);
     if (static_cast<int>(outside_.size()) == grid.size())
-        throw std::invalid_argument("DeformationMapping: no grid node lies on surface '" + surface +
-                                    "' of mesh '" + mesh.source + "'");
+        throw std::invalid_argument("no film grid node lies on surface '" + surface + "'");
     S_.resize(grid.size(), nn);
     S_.setFromTriplets(trip.begin(), trip.end());
     S_.prune(0.0);

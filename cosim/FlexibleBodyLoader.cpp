@@ -55,8 +55,7 @@ std::unique_ptr<FlexibleSurface> loadFlexibleSurface(const EngineCase& c, const 
     try {
         return std::make_unique<FlexibleSurface>(std::move(body), side, spec.surface, spec.interfaces, grid, zMin, zMax);
     } catch (const std::exception& e) {
-        fail("surface", fmt::format("surface '{}' of the reduced body {} cannot face the film: {}", spec.surface,
-                                    spec.file, e.what()));
+        fail("surface", fmt::format("the reduced body {} cannot face the film: {}", spec.file, e.what()));
     }
     return nullptr;  // not reached
 }

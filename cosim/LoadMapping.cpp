@@ -164,11 +164,10 @@ void Setup::run() {
         const double det = J.determinant();
         double tLo = std::min({P[0](1), P[1](1), P[2](1)}), tHi = std::max({P[0](1), P[1](1), P[2](1)});
         if (tHi - tLo >= kPi)
-            throw std::runtime_error("LoadMapping: triangle " + std::to_string(mesh.surface.tags[t]) +
-                                     " of surface '" + surf.name() + "' spans half a turn or more");
+            throw std::runtime_error("triangle " + std::to_string(mesh.surface.tags[t]) + " of surface '" + surf.name() +
+                                     "' spans half a turn or more");
         if (std::abs(det) <= 1e-14 * (J.col(0).norm() * J.col(1).norm()))
-            throw std::invalid_argument("LoadMapping: triangle " + std::to_string(mesh.surface.tags[t]) +
-                                        " of surface '" + surf.name() +
+            throw std::invalid_argument("triangle " + std::to_string(mesh.surface.tags[t]) + " of surface '" + surf.name() +
                                         "' has a degenerate (z, θ) image: the surface is not a "
                                         "cylinder about z there");
         const Eigen::Matrix2d Jinv = J.inverse();
@@ -294,7 +293,7 @@ LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
     : surface_(surface) {
     const fem::BoundarySurface surf(mesh, surface);
     if (surf.triangles().empty())
-        throw std::invalid_argument("LoadMapping: surface '" + surface + "' has no triangles");
+        throw std::invalid_argument("surface '" + surface + "' has no triangles");
 
     // Cylindricity: radii of all surface nodes (vertices and mid-nodes).
     double rMin = std::numeric_limits<double>::infinity(), rMax = 0.0, rSum = 0.0;
@@ -309,8 +308,7 @@ LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
     stats_.radiusSpread = (rMax - rMin) / stats_.surfaceRadius;
     if (!(stats_.radiusSpread <= options.radiusTolerance))
         throw std::invalid_argument(
-            "LoadMapping: surface '" + surface + "' of mesh '" + mesh.source +
-            "' is not a cylinder about z: node radii from " + mm(rMin) + " to " + mm(rMax) +
+            "surface '" + surface + "' is not a cylinder about z: node radii from " + mm(rMin) + " to " + mm(rMax) +
             " mm (relative spread " + std::to_string(stats_.radiusSpread) + " > tolerance " +
             std::to_string(options.radiusTolerance) + ")");
 
@@ -326,8 +324,7 @@ LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
         (dot > 0.0 ? inside : outside) += 1;
     }
     if (inside > 0 && outside > 0)
-        throw std::invalid_argument("LoadMapping: surface '" + surface + "' of mesh '" + mesh.source +
-                                    "' faces the axis on " + std::to_string(outside) +
+        throw std::invalid_argument("surface '" + surface + "' faces the axis on " + std::to_string(outside) +
                                     " triangles and away from it on " + std::to_string(inside) +
                                     "; one side of a cylinder is needed");
     stats_.outward = inside > 0 ? 1.0 : -1.0;
@@ -348,11 +345,10 @@ LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
     if (stats_.fragments == 0) {
         std::ostringstream m;
         m.precision(4);
-        m << "LoadMapping: the grid (z from " << grid.axial().front() * 1e3 << " to "
+        m << "the film grid (z from " << grid.axial().front() * 1e3 << " to "
           << grid.axial().back() * 1e3 << " mm, axial offset " << options.axialOffset * 1e3
           << " mm; θ from " << grid.theta(0) << " rad over " << grid.angularExtent()
-          << " rad) does not overlap surface '" << surface << "' of mesh '" << mesh.source
-          << "' (z from " << (s.zMin + options.axialOffset) * 1e3 << " to "
+          << " rad) does not overlap surface '" << surface << "' (z from " << (s.zMin + options.axialOffset) * 1e3 << " to "
           << (s.zMax + options.axialOffset) * 1e3 << " mm)";
         throw std::invalid_argument(m.str());
     }

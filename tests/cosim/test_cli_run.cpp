@@ -133,14 +133,22 @@ TEST(CliRun, FlexiblePistonCoarse) {
     // A film grid that the body's skirt surface mostly misses (the case's skirt 106 mm long, the
     // mesh's 36 mm): the run goes on, and the warning says how much of the skirt does not deform
     // and asks whether the body is the right one.
-    const auto lands = withLines({{"skirt_bottom: -0.025", "skirt_bottom: -0.095"},
+    const auto longer = withLines({{"skirt_bottom: -0.025", "skirt_bottom: -0.095"},
                                   {"- [-0.0250, 20.0e-6]", "- [-0.0950, 20.0e-6]\n    - [-0.0250, 20.0e-6]"}});
-    EXPECT_EQ(lands.status, 0) << lands.err;
-    EXPECT_NE(lands.err.find(" skirt film nodes ("), std::string::npos) << lands.err;
-    EXPECT_NE(lands.err.find("lie outside the surface 'skirt' of " + body + ": most of the skirt does not "
-                             "deform; is " + body + " the piston's reduced body"),
+    EXPECT_EQ(longer.status, 0) << longer.err;
+    EXPECT_NE(longer.err.find(" skirt film nodes ("), std::string::npos) << longer.err;
+    EXPECT_NE(longer.err.find("lie outside the surface 'skirt' of " + body + ": most of the skirt does not "
+                              "deform; is " + body + " the piston's reduced body"),
+              std::string::npos)
+        << longer.err;
+    const auto lands = withLine("surface: skirt", "surface: ring_lands");
+    EXPECT_EQ(lands.status, 1);
+    EXPECT_NE(lands.err.find("bad.yaml: bodies.piston.surface: the reduced body " + body + " cannot face the film: "
+                             "surface 'ring_lands' is not a cylinder about z: node radii from 42.55 to 42.7 mm"),
               std::string::npos)
         << lands.err;
+    EXPECT_EQ(lands.err.find("Mapping"), std::string::npos) << lands.err;
+    EXPECT_EQ(lands.err.find(".geo"), std::string::npos) << lands.err;
     const auto itf = withLine("interface: pin_bore", "interface: pin_bor");
     EXPECT_NE(itf.err.find("bodies.piston.interface: 'pin_bor' is not an interface of the reduced body " + body +
                            " (its interfaces: pin_bore)"),
