@@ -317,7 +317,7 @@ TEST(LoadMapping, DegenerateInputsGiveClearErrors) {
     const FilmGrid g = FilmGrid::fullCircumference(0.043, FilmGrid::uniform(-0.02, 0.01, 5), 16);
     EXPECT_THAT([&] { LoadMapping(m, "ends", g); },
                 ::testing::ThrowsMessage<std::invalid_argument>(
-                    ::testing::HasSubstr("surface 'ends' of mesh")));
+                    ::testing::HasSubstr("surface 'ends' is not a cylinder about z")));
     EXPECT_THAT([&] { LoadMapping(m, "ends", g); },
                 ::testing::ThrowsMessage<std::invalid_argument>(::testing::HasSubstr("not a cylinder")));
     EXPECT_THROW(LoadMapping(m, "nonexistent", g), std::invalid_argument);
