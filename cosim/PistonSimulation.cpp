@@ -1,4 +1,6 @@
 #include "cosim/PistonSimulation.hpp"
+
+#include "cosim/MemoryBudget.hpp"
 #include "cosim/RunProgress.hpp"
 
 #include "cosim/ClearanceTerms.hpp"
@@ -57,10 +59,18 @@ double cycleCrankDeg(double continuousDeg, int cycle) {
     const double a = continuousDeg - 720.0 * (cycle - 1);
     return a > 720.0 + 1e-9 ? a - 720.0 : a;
 }
+
+std::string gridKey(const EngineCase& c) { return c.path.empty() ? std::string("grid") : c.path + ": grid"; }
+
+/// The case, once its film grid is known to fit into memory (before any of it is allocated).
+const EngineCase& withinMemory(const EngineCase& c) {
+    requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, 0);
+    return c;
+}
 }  // namespace
 
 PistonSimulation::PistonSimulation(const EngineCase& c)
-    : case_(c),
+    : case_(withinMemory(c)),
       kin_(c.engine.stroke, c.engine.rodLength, c.engine.pinOffset, c.engine.speedRpm),
       dyn_(c.piston, c.engine),
       pressure_(c.cylinderPressure),
@@ -92,6 +102,7 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
                                      lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
         ml_ = liner_->modes();
     }
+    if (mp_ + ml_ > 0) requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, mp_ + ml_);
     if (c.coupling.response == ElasticResponse::Dynamic) {
         if (piston_)
             pistonDynamics_ = std::make_unique<modal::HeldModalDynamics>(piston_->body(), piston_->heldInterfaces());

@@ -6,6 +6,7 @@
 #include "cosim/HistoryWriter.hpp"
 #include "CliRunner.hpp"
 
+#include <array>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -170,6 +171,50 @@ TEST(CliRun, BadCaseNamesTheKey) {
     const auto r = runFlexehd("run " + file + " --quiet");
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("piston.clearance"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
+// A grid too large for the machine is refused before it is allocated, with the nodes, the
+// memory they need (the documented lower bound: 500 bytes per node on a rigid run) and what is
+// available; under an address-space limit of 2 GB a grid of 9 million nodes (≥ 4.5 GB) is too.
+TEST(CliRun, GridTooLargeForTheMemoryIsRefusedBeforeItIsAllocated) {
+    const fs::path dir = fs::temp_directory_path() / ("flexehd_run_huge_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string file = coarseCase("hd.yaml", dir);
+    const auto withGrid = [&](const std::string& nz, const std::string& nt) {
+        std::ifstream in(file);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        std::string t = ss.str();
+        replace(t, "axial_nodes: 16", "axial_nodes: " + nz);
+        replace(t, "circumferential_nodes: 48", "circumferential_nodes: " + nt);
+        const std::string big = (dir / ("grid_" + nz + ".yaml")).string();
+        std::ofstream(big) << t;
+        return big;
+    };
+    const std::string huge = withGrid("100000", "100000");
+    const auto r = runFlexehd("run " + huge + " --quiet");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("flexehd: error: " + huge + ": grid: the film grid of 100000 × 100000 = 10000000000 nodes "
+                         "needs at least 5.0 TB of memory; "),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find(" are available: use a coarser grid"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos) << r.err;
+
+    const std::string big = withGrid("3000", "3000");
+    const std::string cmd = "sh -c 'ulimit -v 2000000 && exec " + std::string(FLEXEHD_BINARY) + " run " + big +
+                            " --quiet' 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string out;
+    std::array<char, 4096> buf;
+    while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+    EXPECT_EQ(WEXITSTATUS(pclose(p)), 1) << out;
+    EXPECT_NE(out.find(": grid: the film grid of 3000 × 3000 = 9000000 nodes needs at least 4.5 GB of memory; 2.0 GB "
+                       "are available"),
+              std::string::npos)
+        << out;
     fs::remove_all(dir);
 }
 
