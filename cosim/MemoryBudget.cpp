@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -63,6 +64,12 @@ std::string formatBytes(double bytes) {
 
 void requireFilmMemory(const std::string& where, int axialNodes, int circumferentialNodes, int modes) {
     const double nodes = double(axialNodes) * double(circumferentialNodes);
+    // The film solvers index nodes (and 5 matrix entries per node) with 32-bit integers.
+    if (5.0 * nodes > double(std::numeric_limits<int>::max()))
+        throw std::runtime_error(fmt::format("{}: the film grid of {} × {} = {:.0f} nodes is larger than the film "
+                                             "solvers can index (at most {} nodes): use a coarser grid",
+                                             where, axialNodes, circumferentialNodes, nodes,
+                                             std::numeric_limits<int>::max() / 5));
     const double need = filmMemoryEstimateBytes(nodes, modes);
     const std::uint64_t avail = availableMemoryBytes();
     if (avail == 0 || need <= double(avail)) return;

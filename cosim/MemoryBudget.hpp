@@ -18,7 +18,8 @@ double filmMemoryEstimateBytes(double nodes, int modes);
 /// "3.2 GB", "310 MB": a byte count as people write it.
 std::string formatBytes(double bytes);
 
-/// Throws std::runtime_error, starting with `where`, when the estimate exceeds what is available.
+/// Throws std::runtime_error, starting with `where`, when the grid has more nodes than the film
+/// solvers can index or the estimate exceeds what is available.
 void requireFilmMemory(const std::string& where, int axialNodes, int circumferentialNodes, int modes);
 
 }  // namespace flexehd::cosim

@@ -13,6 +13,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "cosim/MemoryBudget.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "lube/FilmIntegrals.hpp"
@@ -132,6 +133,7 @@ void runBearing(const BearingArgs& a) {
     const Model model = parseCavitation(a.cavitation);
     const lube::SolverKind solverKind = parseSolver(a.solver);
     const auto [nTheta, nZgiven] = parseGrid(a.grid);
+    cosim::requireFilmMemory("--grid " + a.grid, nTheta, nZgiven, 0);  // reads as NTHETA × NZ
 
     const double R = a.radius, c = a.clearance, eps = a.eccentricity, mu = a.viscosity;
     const double D = 2 * R;

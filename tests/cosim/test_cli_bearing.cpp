@@ -153,6 +153,12 @@ TEST(CliBearing, BadInputFailsClearly) {
                           Case{"--eccentricity 0.5 --solver gmres", "unknown solver 'gmres'"},
                           Case{"--eccentricity 0.5 --cavitation elrod", "unknown cavitation model 'elrod'"},
                           Case{"--eccentricity 0.5 --grid 64", "expected NTHETAxNZ"},
+                          Case{"--eccentricity 0.5 --grid 100000x100000",
+                               "--grid 100000x100000: the film grid of 100000 × 100000 = 10000000000 nodes is larger "
+                               "than the film solvers can index"},
+                          Case{"--eccentricity 0.5 --grid 100000x4000",
+                               "--grid 100000x4000: the film grid of 100000 × 4000 = 400000000 nodes needs at least "
+                               "200 GB of memory"},
                           Case{"--eccentricity 0.5 --length 0.1 --length-over-diameter 1", "not both"}}) {
         const CommandResult r = runFlexehd(std::string("bearing ") + k.args);
         EXPECT_EQ(r.status, 1) << k.args;
