@@ -467,6 +467,10 @@ TEST(CaseFileErrors, MissingRequiredKeys) {
     EXPECT_THAT(
         caseError(dir, "name: small", "name: small\nbodies: {liner: {file: l.h5}}", kPressureCsv, noBodyFiles()),
         AllOf(StartsWith(file + ": engine.pin_tdc_depth"), HasSubstr("flexible liner")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\nbodies: {piston: {file: p.h5, interface: []}}",
+                          kPressureCsv, noBodyFiles()),
+                AllOf(StartsWith(file + ": bodies.piston.interface (line 2): "),
+                      HasSubstr("expected an interface name or a list of them, got an empty list")));
 }
 
 TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
