@@ -77,6 +77,7 @@ std::vector<std::string> writeModeShapes(const std::string& directory, const fem
         throw std::invalid_argument("mode shapes do not match the mesh (" + std::to_string(shapes.rows()) +
                                     " rows for " + std::to_string(mesh.numNodes()) + " nodes)");
     fs::create_directories(directory);
+    fem::removeStaleTemporaries(directory);
     const fs::path dir(directory);
     std::vector<std::string> files;
     for (Eigen::Index k = 0; k < shapes.cols(); ++k) files.push_back(fmt::format("mode_{:03d}.vtu", k + 1));

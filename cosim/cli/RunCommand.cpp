@@ -124,6 +124,8 @@ void runCase(const RunArgs& a) {
     auto log = [&](const std::string& s) {
         if (!a.quiet) fmt::print(stderr, "{}\n", s);
     };
+    if (const int stale = fem::removeStaleTemporaries(dir))
+        log(fmt::format("removed {} unfinished .tmp file(s) that an interrupted run left in {}", stale, dir));
     const bool anyFlexible =
         c.pistonBody.model == cosim::BodyModel::Flexible || c.linerBody.model == cosim::BodyModel::Flexible;
     log(fmt::format("flexehd run {}: piston {}, liner {}{}, grid {} x {}, {} rpm -> {}", c.path,

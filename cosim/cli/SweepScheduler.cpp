@@ -1,4 +1,5 @@
 #include "cosim/cli/SweepScheduler.hpp"
+#include "fem/AtomicFile.hpp"
 
 #define OMPI_SKIP_MPICXX 1  // the C API only (Open MPI's mpi.h pulls in the deprecated C++ bindings)
 #define MPICH_SKIP_MPICXX 1
@@ -156,6 +157,7 @@ SweepReport runStudy(const cosim::Study& study, bool quiet) {
         }
     }
     fs::create_directories(study.directory);
+    fem::removeStaleTemporaries(study.directory);
     cosim::writeStudyTables(study, results);
     log(fmt::format("flexehd sweep {}: {} variants ({} complete already), {} rank{} -> {}", study.path, n, rep.resumed,
                     mpi.size(), mpi.size() > 1 ? "s" : "", study.directory));

@@ -72,6 +72,7 @@ void runThermal(const ThermalArgs& a) {
 
     Stopwatch w;
     fs::create_directories(dir);
+    fem::removeStaleTemporaries(dir);
     nlohmann::json doc;
     doc["case"] = a.casePath;
     doc["name"] = c.name;

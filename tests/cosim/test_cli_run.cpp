@@ -232,8 +232,14 @@ TEST(CliRun, OneCycleSaysPeriodicityIsNotChecked) {
     const fs::path dir = fs::temp_directory_path() / ("flexehd_run_once_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string file = coarseCase("hd.yaml", dir);
+    // What a killed run into the same directory left is cleaned up, and said so.
+    fs::create_directories(dir / "results" / "vtk");
+    std::ofstream(dir / "results" / "vtk" / "film_0002.vts.tmp") << "half";
     const auto once = runFlexehd("run " + file + " --cycles 1");
     ASSERT_EQ(once.status, 0) << once.err;
+    EXPECT_FALSE(fs::exists(dir / "results" / "vtk" / "film_0002.vts.tmp"));
+    EXPECT_NE(once.err.find("removed 1 unfinished .tmp file(s) that an interrupted run left in"), std::string::npos)
+        << once.err;
     EXPECT_NE(once.out.find("1 cycle (periodicity not checked: it needs two cycles)"), std::string::npos) << once.out;
     const auto twice = runFlexehd("run " + file + " --cycles 2");
     ASSERT_EQ(twice.status, 0) << twice.err;

@@ -33,3 +33,25 @@ TEST(AtomicFile, LeavesNoTemporaryFileBehind) {
     EXPECT_FALSE(fs::exists(dir / "b.txt.tmp"));
     fs::remove_all(dir);
 }
+
+// What a killed run leaves (NAME.EXT.tmp of an output format, also in subdirectories) is removed
+// by the next run into the directory; other .tmp files are not ours and stay.
+TEST(AtomicFile, StaleTemporariesOfOutputsAreRemoved) {
+    const fs::path dir = fs::temp_directory_path() / ("flexehd_stale_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "vtk");
+    fs::create_directories(dir / "modes");
+    for (const char* f : {"summary.json.tmp", "history.csv.tmp", "vtk/film_0003.vts.tmp", "modes/mode_007.vtu.tmp",
+                          "modes/modes.pvd.tmp", "modes/modes.fingerprint.tmp", "notes.tmp", "draft.txt.tmp",
+                          "summary.json"})
+        std::ofstream(dir / f) << "x";
+    fs::create_directories(dir / "kept.vtu.tmp");  // a directory, not a file
+    EXPECT_EQ(flexehd::fem::removeStaleTemporaries(dir.string()), 6);
+    for (const char* f : {"summary.json.tmp", "history.csv.tmp", "vtk/film_0003.vts.tmp", "modes/mode_007.vtu.tmp",
+                          "modes/modes.pvd.tmp", "modes/modes.fingerprint.tmp"})
+        EXPECT_FALSE(fs::exists(dir / f)) << f;
+    for (const char* f : {"notes.tmp", "draft.txt.tmp", "summary.json", "kept.vtu.tmp"})
+        EXPECT_TRUE(fs::exists(dir / f)) << f;
+    EXPECT_EQ(flexehd::fem::removeStaleTemporaries((dir / "absent").string()), 0);
+    fs::remove_all(dir);
+}
