@@ -1,6 +1,11 @@
 #include "cosim/cli/CliSupport.hpp"
 
+#include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
+#include <unistd.h>
+
+#include <cstdlib>
 
 #include <cmath>
 #include <iostream>
@@ -87,6 +92,21 @@ bool quietFlag = false;
 
 void setGlobalQuiet(bool quiet) { quietFlag = quiet; }
 bool globalQuiet() { return quietFlag; }
+
+namespace {
+int exitCodeValue = 0;
+}
+void setExitCode(int code) { exitCodeValue = code; }
+int exitCode() { return exitCodeValue; }
+
+void followParentProcess() {
+    const char* parent = std::getenv("FLEXEHD_PARENT_PID");
+    if (!parent) return;
+    const long pid = std::strtol(parent, nullptr, 10);
+    if (pid <= 1) return;
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != pid) std::_Exit(143);  // the parent died before the request: as SIGTERM would
+}
 
 double peakMemoryMiB() {
     rusage u{};

@@ -49,6 +49,16 @@ void addMaterialOptions(CLI::App* cmd, fem::ElasticMaterial& material);
 void setGlobalQuiet(bool quiet);
 bool globalQuiet();
 
+/// The exit code of a command that ran to its end but wants to report a partial result (sweep:
+/// 2 when some variants failed); errors still exit with 1. main returns it.
+void setExitCode(int code);
+int exitCode();
+
+/// A process that `flexehd sweep` started (FLEXEHD_PARENT_PID set) ends when its parent does,
+/// also when the parent was killed with SIGKILL and could not stop it: it asks the kernel for
+/// SIGTERM on the parent's death, and exits at once if the parent is already gone.
+void followParentProcess();
+
 /// Peak resident memory of this process so far, MiB (getrusage).
 double peakMemoryMiB();
 

@@ -36,6 +36,7 @@ void runSweep(const SweepArgs& a) {
     }
     const SweepReport r = runStudy(study, a.quiet);
     if (r.rank != 0) return;
+    if (r.failed > 0) setExitCode(2);
     if (a.json) {
         printJson({{"study", study.name},
                    {"directory", study.directory},

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     // sparse factorizations allocate and free blocks of megabytes in every pass (page faults were
     // 40 % of the run time on a virtual machine, docs/coupling.md §4).
     flexehd::lube::retainFreedHeapMemory();
+    flexehd::cli::followParentProcess();
     // Progress and diagnostics go to stderr so that stdout stays clean for --json.
     auto logger = spdlog::stderr_color_mt("flexehd");
     spdlog::set_default_logger(logger);
@@ -50,5 +51,5 @@ int main(int argc, char** argv) {
         std::cerr << "flexehd: error: " << e.what() << std::endl;
         return 1;
     }
-    return 0;
+    return flexehd::cli::exitCode();
 }

@@ -11,10 +11,15 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace fs = std::filesystem;
 using flexehd::test::CommandResult;
@@ -226,7 +231,7 @@ TEST(CliSweep, ResumesWithOnlyTheMissingVariantAndRecordsAFailingOne) {
                                                  "  - {piston.clearance: 60e-6}\n");
     const fs::path dir = t.path / "results";
     const auto first = runFlexehd("sweep " + study + " --quiet --json");
-    ASSERT_EQ(first.status, 0) << first.err;
+    ASSERT_EQ(first.status, 2) << first.err;  // the study ran to its end, a variant failed
     auto j = nlohmann::json::parse(first.out);
     EXPECT_EQ(j["ok"], 2);
     EXPECT_EQ(j["failed"], 1);
@@ -240,7 +245,7 @@ TEST(CliSweep, ResumesWithOnlyTheMissingVariantAndRecordsAFailingOne) {
     const auto kept = fs::last_write_time(dir / "variants/v0000/summary.json");
     fs::remove_all(dir / "variants/v0002");
     const auto again = runFlexehd("sweep " + study + " --json");  // progress lines on stderr
-    ASSERT_EQ(again.status, 0) << again.err;
+    ASSERT_EQ(again.status, 2) << again.err;
     j = nlohmann::json::parse(again.out);
     EXPECT_EQ(j["resumed"], 1);  // v0000
     EXPECT_EQ(j["ran"], 2);      // v0002, and v0001 that failed
@@ -258,7 +263,7 @@ TEST(CliSweep, AVariantOverItsTimeLimitIsStoppedAndRecorded) {
     TempDir t("timeout");
     const std::string study = writeStudy(t.path, "parameters:\n  engine.pin_offset: [0.0]\nrun: {timeout_s: 0.2}\n");
     const auto r = runFlexehd("sweep " + study + " --quiet --json");
-    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(r.status, 2) << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out)["failed"], 1);
     const auto s = studyJson(t.path / "results");
     EXPECT_EQ(s["variants"][0]["status"], "failed");
@@ -286,4 +291,59 @@ TEST(CliSweep, VariantsWithTheSameBodyRecipeShareOneBuild) {
     EXPECT_THAT(readText(t.path / "results/variants/v0001/run.log"), Not(HasSubstr("reducing")));
     const auto summary = nlohmann::json::parse(readText(t.path / "results/variants/v0001/summary.json"));
     EXPECT_EQ(summary["bodies"]["piston"], "flexible");
+}
+
+namespace {
+
+/// Parent pid and state of process `pid` from /proc (state 0 when it is gone).
+std::pair<long, char> processStatus(long pid) {
+    std::ifstream f("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    if (!std::getline(f, line)) return {0, 0};
+    const auto close = line.rfind(')');  // the command name may hold spaces
+    std::istringstream rest(line.substr(close + 2));
+    char state = 0;
+    long ppid = 0;
+    rest >> state >> ppid;
+    return {ppid, state};
+}
+
+long childOf(long parent) {
+    for (const auto& e : fs::directory_iterator("/proc")) {
+        const std::string name = e.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (processStatus(std::stol(name)).first == parent) return std::stol(name);
+    }
+    return 0;
+}
+
+}  // namespace
+
+// kill -9 of the sweep cannot stop its running variant itself: the variant notices that its
+// parent is gone and ends too.
+TEST(CliSweep, AVariantEndsWhenTheSweepIsKilled) {
+    TempDir t("orphan");
+    const std::string study = writeStudy(t.path, "parameters:\n  time.max_cycles: [200]\n"
+                                                 "  time.periodicity_tolerance: [1.0e-30]\n");
+    FILE* p = popen((std::string(FLEXEHD_BINARY) + " sweep " + study + " --quiet >/dev/null 2>&1 & echo $!").c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    long sweep = 0;
+    ASSERT_EQ(fscanf(p, "%ld", &sweep), 1);
+    pclose(p);
+    long child = 0;
+    for (int i = 0; i < 1000 && !child; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        child = childOf(sweep);
+    }
+    ASSERT_NE(child, 0) << "the sweep started no variant";
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the variant is running
+    ::kill(sweep, SIGKILL);
+    bool ended = false;
+    for (int i = 0; i < 500 && !ended; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        const char state = processStatus(child).second;
+        ended = state == 0 || state == 'Z';
+    }
+    if (!ended) ::kill(child, SIGKILL);
+    EXPECT_TRUE(ended) << "variant " << child << " still runs 5 s after its sweep was killed";
 }
