@@ -40,7 +40,15 @@ public:
         const Eigen::Map<const Eigen::VectorXd> in(x, rows());
         Eigen::Map<Eigen::VectorXd>(y, rows()) = external_ ? external_->solve(Eigen::VectorXd(in)) : llt_.solve(in);
         ++operations;
+        if (progress && since(lastReport) >= progressSeconds) {
+            lastReport = Clock::now();
+            progress(operations, since(started));
+        }
     }
+    std::function<void(int, double)> progress;
+    double progressSeconds = 5.0;
+    Clock::time_point started = Clock::now();
+    mutable Clock::time_point lastReport = Clock::now();
     double factorSeconds = 0.0;
     mutable int operations = 0;
 
@@ -60,6 +68,10 @@ double automaticShift(const SparseMatrix& K, const SparseMatrix& M) {
 }
 
 }  // namespace
+
+Eigen::Index lanczosBasisSize(Eigen::Index n, int count) {
+    return std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * Eigen::Index(count) + 1, 20));
+}
 
 double rigidBodyThreshold(const SparseMatrix& K, const SparseMatrix& M) {
     return 1e-10 * K.diagonal().sum() / M.diagonal().sum();
@@ -86,11 +98,14 @@ Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const E
     out.shift = factorOfK ? 0.0 : opt.shift != 0.0 ? opt.shift : automaticShift(K, M);
 
     CholmodShiftInvert op(K, M, factorOfK);
+    op.progress = opt.progress;
+    op.progressSeconds = opt.progressSeconds;
     Spectra::SparseSymMatProd<double, Eigen::Upper> Bop(M);
-    const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * opt.count + 1, 20));
+    const Eigen::Index ncv = lanczosBasisSize(n, opt.count);
     Spectra::SymGEigsShiftSolver<CholmodShiftInvert, decltype(Bop), Spectra::GEigsMode::ShiftInvert> eigs(
         op, Bop, opt.count, ncv, out.shift);
     const auto t0 = Clock::now();
+    op.started = op.lastReport = t0;
     eigs.init();
     Eigen::Index nconv = 0;
     try {

@@ -3,6 +3,7 @@
 // the operator (K - σM)⁻¹ M is applied through one CHOLMOD factorization of K - σM.
 // A shift σ < 0 keeps K - σM positive definite for free bodies (λ = 0 rigid-body
 // modes), so they are found with everything else.
+#include <functional>
 #include <Eigen/Core>
 
 #include "fem/SparsityPattern.hpp"
@@ -15,7 +16,16 @@ struct EigenmodeOptions {
     double shift = 0.0;        ///< σ in (rad/s)^2; 0 = automatic (small negative, see docs)
     double tolerance = 1e-10;  ///< relative Ritz-value tolerance
     int maxIterations = 1000;  ///< Lanczos restarts
+    /// Called during the iteration about every `progressSeconds` of wall time with the
+    /// applications of (K − σM)⁻¹ so far and the seconds since the iteration began (progress
+    /// output of long solves); empty = silent.
+    std::function<void(int operations, double seconds)> progress;
+    double progressSeconds = 5.0;
 };
+
+/// Size of the Lanczos basis for `count` modes of an n-DOF model: min(n, max(2 count + 1, 20))
+/// vectors (the basis holds n × that many doubles).
+Eigen::Index lanczosBasisSize(Eigen::Index n, int count);
 
 struct Eigenmodes {
     Eigen::VectorXd eigenvalues;  ///< λ = ω², (rad/s)^2, ascending

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "cosim/MemoryBudget.hpp"
 #include "cosim/ModeShapeExport.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
@@ -42,7 +43,19 @@ void runModes(const ModesArgs& a) {
     fem::EigenmodeOptions opt;
     opt.count = a.count;
     opt.shift = a.shift;
-    spdlog::info("assembling and solving for {} modes ({} DOFs)", a.count, 3 * mesh.numNodes());
+    const Eigen::Index dofs = 3 * Eigen::Index(mesh.numNodes());
+    const double basisBytes = 8.0 * double(dofs) * double(fem::lanczosBasisSize(dofs, a.count));
+    if (const std::uint64_t avail = cosim::availableMemoryBytes(); avail > 0 && 2.0 * basisBytes > double(avail))
+        throw std::runtime_error(fmt::format(
+            "--count {}: the Lanczos basis for {} modes of {} DOFs needs at least {} of memory (twice {} vectors of "
+            "{} values); {} are available: ask for fewer modes",
+            a.count, a.count, dofs, cosim::formatBytes(2.0 * basisBytes), fem::lanczosBasisSize(dofs, a.count), dofs,
+            cosim::formatBytes(double(avail))));
+    spdlog::info("assembling and solving for {} modes ({} DOFs, Lanczos basis {} vectors, {})", a.count, dofs,
+                 fem::lanczosBasisSize(dofs, a.count), cosim::formatBytes(basisBytes));
+    opt.progress = [](int solves, double seconds) {
+        spdlog::info("  Lanczos: {} solves, {:.0f} s so far", solves, seconds);
+    };
     const fem::ModalAnalysis result = fem::analyseModes(mesh, a.material, fixed, opt);
     spdlog::info("assembly {:.2f} s, factorization {:.2f} s, Lanczos {:.2f} s ({} restarts, {} solves)",
                  result.assembleSeconds, result.modes.factorSeconds, result.modes.solveSeconds,

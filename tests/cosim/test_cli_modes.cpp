@@ -1,4 +1,5 @@
 // The `flexehd modes` command as a user runs it: JSON output, ParaView files, errors.
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -94,4 +95,19 @@ TEST(CliModes, MissingMeshAndBadArgumentsFail) {
     r = runFlexehd("modes --mesh " + dataPath("beam.geo") + kSteel + " --fix clamped:q");
     EXPECT_NE(r.status, 0);
     EXPECT_THAT(r.err, HasSubstr("components 'q'"));
+}
+
+// Many modes of a model: a basis the machine cannot hold is refused before the solve (under an
+// address-space limit of 1 GB, 3000 modes of the cube's DOFs need 2 × 6001 × DOFs doubles).
+TEST(CliModes, TooManyModesForTheMemoryAreRefused) {
+    const std::string cmd = "sh -c 'ulimit -v 1000000 && exec " + std::string(FLEXEHD_BINARY) + " modes --mesh " +
+                            dataPath("beam.geo") + kSteel + " --count 3000' 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string out;
+    std::array<char, 4096> buf;
+    while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+    EXPECT_EQ(WEXITSTATUS(pclose(p)), 1) << out;
+    EXPECT_THAT(out, HasSubstr("flexehd: error: --count 3000: the Lanczos basis for 3000 modes of "));
+    EXPECT_THAT(out, HasSubstr("are available: ask for fewer modes"));
 }

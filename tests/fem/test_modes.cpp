@@ -104,3 +104,26 @@ TEST(EigenmodeSolver, AgreesWithDenseSolverOnSmallFreeBody) {
     EXPECT_LT((P.transpose() * M * P - Eigen::MatrixXd::Identity(15, 15)).norm(), 1e-8);
     EXPECT_LT((P.transpose() * K * P - Eigen::MatrixXd(r.modes.eigenvalues.asDiagonal())).norm(), 1e-6 * scale);
 }
+
+// Progress of a long solve: with a reporting interval of 0 every application of (K − σM)⁻¹ is
+// reported, counted from 1, with non-decreasing times, as many as the solve reports it made.
+TEST(EigenmodeSolver, ReportsProgressOfTheIteration) {
+    const Mesh m = readMesh(dataPath("cube.geo"), {1, 0.5});
+    EigenmodeOptions opt;
+    opt.count = 15;
+    opt.progressSeconds = 0.0;
+    std::vector<int> solves;
+    std::vector<double> times;
+    opt.progress = [&](int n, double s) {
+        solves.push_back(n);
+        times.push_back(s);
+    };
+    const ModalAnalysis r = analyseModes(m, kSteel, {}, opt);
+    ASSERT_FALSE(solves.empty());
+    EXPECT_EQ(int(solves.size()), r.modes.operations);
+    for (std::size_t i = 0; i < solves.size(); ++i) EXPECT_EQ(solves[i], int(i) + 1);
+    EXPECT_TRUE(std::is_sorted(times.begin(), times.end()));
+    EXPECT_EQ(lanczosBasisSize(1000, 15), 31);
+    EXPECT_EQ(lanczosBasisSize(1000, 3), 20);
+    EXPECT_EQ(lanczosBasisSize(25, 15), 25);
+}
