@@ -34,7 +34,7 @@ struct Hash {
             word(w);
         }
         std::uint64_t tail = 0;
-        std::memcpy(&tail, p + i, n - i);
+        if (n > i) std::memcpy(&tail, p + i, n - i);  // an empty field's data() may be null
         word(tail);
     }
     template <typename M>
