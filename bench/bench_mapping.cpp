@@ -18,10 +18,10 @@
 
 #include <Eigen/Core>
 
-#include "cosim/DeformationMapping.hpp"
-#include "cosim/LoadMapping.hpp"
-#include "cosim/ModalMapping.hpp"
-#include "cosim/MovingGridMapping.hpp"
+#include "cosim/mapping/DeformationMapping.hpp"
+#include "cosim/mapping/LoadMapping.hpp"
+#include "cosim/mapping/ModalMapping.hpp"
+#include "cosim/mapping/MovingGridMapping.hpp"
 #include "fem/MeshReader.hpp"
 #include "modal/CraigBamptonReducer.hpp"
 

@@ -1,6 +1,6 @@
 #include "fem/EigenmodeSolver.hpp"
+#include "fem/Stopwatch.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -12,9 +12,6 @@
 
 namespace flexehd::fem {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Spectra operator y = (K - σM)⁻¹ x on a CHOLMOD supernodal factorization.
 class CholmodShiftInvert {
@@ -28,27 +25,27 @@ public:
     Eigen::Index cols() const { return K_.cols(); }
     void set_shift(double sigma) {
         if (external_) return;  // σ = 0: the caller's factorization of K
-        const auto t0 = Clock::now();
+        const Stopwatch t0;
         llt_.compute(K_ - sigma * M_);
         if (llt_.info() != Eigen::Success)
             throw std::runtime_error("eigenmodes: K - sigma*M with sigma = " + std::to_string(sigma) +
                                      " is not positive definite; choose a shift below the lowest "
                                      "eigenvalue");
-        factorSeconds = since(t0);
+        factorSeconds = t0.seconds();
     }
     void perform_op(const double* x, double* y) const {
         const Eigen::Map<const Eigen::VectorXd> in(x, rows());
         Eigen::Map<Eigen::VectorXd>(y, rows()) = external_ ? external_->solve(Eigen::VectorXd(in)) : llt_.solve(in);
         ++operations;
-        if (progress && since(lastReport) >= progressSeconds) {
-            lastReport = Clock::now();
-            progress(operations, since(started));
+        if (progress && lastReport.seconds() >= progressSeconds) {
+            lastReport.restart();
+            progress(operations, started.seconds());
         }
     }
     std::function<void(int, double)> progress;
     double progressSeconds = 5.0;
-    Clock::time_point started = Clock::now();
-    mutable Clock::time_point lastReport = Clock::now();
+    Stopwatch started;
+    mutable Stopwatch lastReport;
     double factorSeconds = 0.0;
     mutable int operations = 0;
 
@@ -104,7 +101,7 @@ Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const E
     const Eigen::Index ncv = lanczosBasisSize(n, opt.count);
     Spectra::SymGEigsShiftSolver<CholmodShiftInvert, decltype(Bop), Spectra::GEigsMode::ShiftInvert> eigs(
         op, Bop, opt.count, ncv, out.shift);
-    const auto t0 = Clock::now();
+    const Stopwatch t0;
     op.started = op.lastReport = t0;
     eigs.init();
     Eigen::Index nconv = 0;
@@ -130,7 +127,7 @@ Eigenmodes solveEigenmodes(const SparseMatrix& K, const SparseMatrix& M, const E
     out.iterations = static_cast<int>(eigs.num_iterations());
     out.operations = op.operations;
     out.factorSeconds = op.factorSeconds;
-    out.solveSeconds = since(t0);
+    out.solveSeconds = t0.seconds();
     return out;
 }
 

@@ -1,7 +1,7 @@
 #include "fem/ModalAnalysis.hpp"
+#include "fem/Stopwatch.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -34,7 +34,7 @@ Eigen::VectorXd ModalAnalysis::frequenciesHz() const {
 ModalAnalysis analyseModes(const Mesh& mesh, const ElasticMaterial& material,
                            const std::vector<FixedGroup>& fixed, const EigenmodeOptions& options) {
     material.validate();
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     ElasticityAssembler assembler(mesh);
     const SparseMatrix K = assembler.stiffness(material);
     const SparseMatrix M = assembler.mass(material.rho);
@@ -48,7 +48,7 @@ ModalAnalysis analyseModes(const Mesh& mesh, const ElasticMaterial& material,
     const SparseMatrix Kf = constrained ? dofs.reduce(K) : K;
     const SparseMatrix Mf = constrained ? dofs.reduce(M) : M;
     out.rigidThreshold = rigidBodyThreshold(Kf, Mf);
-    out.assembleSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.assembleSeconds = t0.seconds();
     out.modes = solveEigenmodes(Kf, Mf, options);
     if (constrained) out.modes.shapes = dofs.expandHomogeneous(out.modes.shapes);
     return out;

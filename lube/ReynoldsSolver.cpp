@@ -78,6 +78,13 @@ ReynoldsSolver::ReynoldsSolver(FilmGrid grid, Lubricant lubricant, ReynoldsOptio
             g = &coarse_.back().grid;
         }
     }
+    if (options_.fallback && *options_.fallback != options_.solver) {
+        ReynoldsOptions f = options_;
+        f.solver = *options_.fallback;
+        f.fallback.reset();
+        f.control.maxIterations = SolverControl{}.maxIterations;  // the solver of last resort
+        fallback_ = std::make_unique<ReynoldsSolver>(grid_, lubricant_, f);
+    }
 }
 
 Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coarseIterations) {
@@ -134,6 +141,17 @@ SolveReport ReynoldsSolver::solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd
 }
 
 ReynoldsResult ReynoldsSolver::solve(const FilmState& film, const Eigen::VectorXd* warmStart) {
+    if (!fallback_) return solveWithPrimary(film, warmStart);
+    try {
+        return solveWithPrimary(film, warmStart);
+    } catch (const std::runtime_error&) {
+        ReynoldsResult r = fallback_->solve(film, warmStart);
+        r.fellBack = true;
+        return r;
+    }
+}
+
+ReynoldsResult ReynoldsSolver::solveWithPrimary(const FilmState& film, const Eigen::VectorXd* warmStart) {
     const int n = grid_.size();
     ReynoldsResult res;
     if (warmStart && warmStart->size() == n && warmStart->allFinite()) res.pressure = *warmStart;

@@ -12,6 +12,8 @@
 // dependent Lubricant makes the problem nonlinear; it is solved by Picard iteration on ρ(p),
 // η(p), each step a full solve warm-started from the previous one.
 #include <Eigen/Core>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "lube/ActiveSetSolver.hpp"
@@ -42,6 +44,12 @@ struct ReynoldsOptions {
     /// cell or two of the answer (the active set moves one cell per iteration otherwise); for
     /// multigrid this is nested iteration (full multigrid start).
     bool gridSequencing = true;
+    /// The solver that redoes a solve the primary one stops without converging (a stalled
+    /// multigrid iteration, seen near the dead centres in pure squeeze): the active-set method
+    /// gives the same complementarity solution on a sparse factorization. The fallback has the
+    /// same options but its own (default) iteration limit. Unset: the stall is thrown
+    /// (std::runtime_error).
+    std::optional<SolverKind> fallback;
 };
 
 struct ReynoldsResult {
@@ -50,6 +58,7 @@ struct ReynoldsResult {
     int picardIterations = 0;  ///< 1 for a constant-property lubricant
     int coarseIterations = 0;  ///< solver iterations on the coarse grids (grid sequencing)
     double residual = 0.0;     ///< final relative natural residual (before half-Sommerfeld clip)
+    bool fellBack = false;     ///< solved by options.fallback after the primary solver stalled
 };
 
 class ReynoldsSolver {
@@ -64,6 +73,7 @@ public:
     const ReynoldsOptions& options() const { return options_; }
 
 private:
+    ReynoldsResult solveWithPrimary(const FilmState& film, const Eigen::VectorXd* warmStart);
     SolveReport solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd& p);
     /// Grid-sequenced starting pressure on the fine grid (empty if unavailable).
     Eigen::VectorXd sequencedStart(const FilmState& film, int& coarseIterations);
@@ -82,6 +92,7 @@ private:
     ActiveSetSolver fast_;
     MultigridSolver multigrid_;
     std::vector<Level> coarse_;  // coarse_[0] is 2× coarser than grid_, coarse_[1] 4×, ...
+    std::unique_ptr<ReynoldsSolver> fallback_;  // options_.fallback's solver
 };
 
 }  // namespace flexehd::lube

@@ -1,7 +1,7 @@
 #include "modal/CraigBamptonReducer.hpp"
+#include "fem/Stopwatch.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -19,14 +19,6 @@
 
 namespace flexehd::modal {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point& t) {
-    const auto now = Clock::now();
-    const double s = std::chrono::duration<double>(now - t).count();
-    t = now;
-    return s;
-}
 
 // Lowest fixed-interface modes: `count` of them, or, with a cut-off, all below it
 // (computed in growing batches).
@@ -95,7 +87,7 @@ CraigBamptonReducer::CraigBamptonReducer(const fem::Mesh& mesh, const fem::Elast
 ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs, const ReductionSettings& settings,
                                         ReductionReport* report) const {
     ReductionReport rep;
-    auto t = Clock::now();
+    fem::Stopwatch t;
     if (specs.empty())
         throw std::invalid_argument("reduction: no interface given; the body must be held at an interface");
     // Cheap checks first: everything below can take minutes on a production mesh.
@@ -145,7 +137,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     const fem::SparseMatrix Kii = Kr.topLeftCorner(ni, ni), Mii = Mr.topLeftCorner(ni, ni);
     const Eigen::MatrixXd Kib = Eigen::MatrixXd(Kr.topRightCorner(ni, nb));
     const Eigen::MatrixXd Mib = Eigen::MatrixXd(Mr.topRightCorner(ni, nb));
-    rep.assembleSeconds = since(t);
+    rep.assembleSeconds = t.lap();
 
     std::unique_ptr<fem::StaticSolver> factor;
     try {
@@ -155,16 +147,16 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
             "reduction: the interfaces do not hold the body (interior stiffness singular): a part of the "
             "mesh is disconnected from every interface, or an interface cannot stop rigid motion");
     }
-    rep.factorSeconds = since(t);
+    rep.factorSeconds = t.lap();
     const Eigen::MatrixXd Psi = -factor->solve(Kib);
     rep.constraintModes = int(nb);
-    rep.constraintModeSeconds = since(t);
+    rep.constraintModeSeconds = t.lap();
 
     const fem::Eigenmodes fixed = normalModes(Kii, Mii, *factor, settings);
     const Eigen::MatrixXd& Phi = fixed.shapes;
     rep.normalModes = int(Phi.cols());
     body.settings.normalModes = rep.normalModes;
-    rep.normalModeSeconds = since(t);
+    rep.normalModeSeconds = t.lap();
 
     // --- static correction: residual attachment modes, M-orthogonal to Φ ---
     // Always: inertia relief, the interior's static response to the inertia forces of a
@@ -188,7 +180,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
         X.rightCols(Xs.cols()) = Xs;
     }
     rep.staticCorrectionModes = int(X.cols()) - rep.inertiaReliefModes;
-    rep.staticCorrectionSeconds = since(t);
+    rep.staticCorrectionSeconds = t.lap();
 
     // --- basis in the free DOFs and its projected matrices ---
     const Eigen::Index m0 = nb + Phi.cols() + X.cols();
@@ -250,7 +242,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
             body.dampingRatios(k) = 0.0;
         }
     }
-    rep.orthonormaliseSeconds = since(t);
+    rep.orthonormaliseSeconds = t.lap();
     if (report) *report = rep;
     return body;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds flexehd with AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ and
 # runs the whole test suite under them. Any report fails the run; nothing is suppressed.
-# Takes about 30 min on 2 cores (a full build without the compiler cache, then the suite at a
+# Takes about 35 min on 2 cores (a 15-min build without the compiler cache, then the suite at a
 # few times its normal cost). README, "Tests".
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -1,6 +1,5 @@
 #pragma once
 // Small pieces shared by the subcommands: timing and the JSON / table output conventions.
-#include <chrono>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -8,19 +7,11 @@
 
 #include "fem/Material.hpp"
 #include "fem/MeshReader.hpp"
+#include "fem/Stopwatch.hpp"
 
 namespace flexehd::cli {
 
-/// Wall-clock stopwatch for the timings every subcommand reports.
-class Stopwatch {
-public:
-    Stopwatch() : start_(std::chrono::steady_clock::now()) {}
-    double seconds() const {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-private:
-    std::chrono::steady_clock::time_point start_;
-};
+using fem::Stopwatch;
 
 /// Number checks whose messages say what is expected, as people write it ("expected a number
 /// > 0, got 'abc'"): non-numbers, NaN and infinities are refused by each.

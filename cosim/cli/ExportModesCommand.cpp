@@ -5,7 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "cosim/ModeShapeExport.hpp"
+#include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "modal/ReducedBodyFile.hpp"

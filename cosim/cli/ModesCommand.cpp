@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "cosim/MemoryBudget.hpp"
-#include "cosim/ModeShapeExport.hpp"
+#include "cosim/case/MemoryBudget.hpp"
+#include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "fem/MeshReader.hpp"

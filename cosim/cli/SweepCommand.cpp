@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "cosim/StudyFile.hpp"
+#include "cosim/study/StudyFile.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "cosim/cli/SweepScheduler.hpp"

@@ -1,4 +1,5 @@
 #include "cosim/cli/SweepScheduler.hpp"
+#include "fem/Stopwatch.hpp"
 #include "fem/AtomicFile.hpp"
 
 #define OMPI_SKIP_MPICXX 1  // the C API only (Open MPI's mpi.h pulls in the deprecated C++ bindings)
@@ -20,9 +21,9 @@
 
 #include <fmt/format.h>
 
-#include "cosim/BodyCache.hpp"
-#include "cosim/StudyTable.hpp"
-#include "cosim/VariantCase.hpp"
+#include "cosim/study/BodyCache.hpp"
+#include "cosim/study/StudyTable.hpp"
+#include "cosim/study/VariantCase.hpp"
 #include "cosim/cli/VariantJob.hpp"
 
 namespace flexehd::cli {
@@ -128,7 +129,7 @@ bool launchedByMpi() {
 SweepReport runStudy(const cosim::Study& study, bool quiet) {
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
-    const auto start = std::chrono::steady_clock::now();
+    const fem::Stopwatch start;
     MpiSession mpi;
     SweepReport rep;
     rep.rank = mpi.rank();
@@ -213,7 +214,7 @@ SweepReport runStudy(const cosim::Study& study, bool quiet) {
         }
         if (!busy) std::this_thread::sleep_for(kPollInterval);
     }
-    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    rep.seconds = start.seconds();
     return rep;
 }
 

@@ -6,7 +6,7 @@
 // after each one. The only part of flexehd that knows MPI (docs/sweep.md).
 #include <string>
 
-#include "cosim/StudyFile.hpp"
+#include "cosim/study/StudyFile.hpp"
 
 namespace flexehd::cli {
 

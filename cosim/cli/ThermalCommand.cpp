@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "cosim/ThermalAnalysis.hpp"
-#include "cosim/ThermalCaseFile.hpp"
-#include "cosim/ThermalFileWriter.hpp"
-#include "cosim/VtuWriter.hpp"
+#include "cosim/thermal/ThermalAnalysis.hpp"
+#include "cosim/thermal/ThermalCaseFile.hpp"
+#include "cosim/thermal/ThermalFileWriter.hpp"
+#include "cosim/io/VtuWriter.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "fem/AtomicFile.hpp"

@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "cosim/BodyCache.hpp"
-#include "cosim/VariantCase.hpp"
+#include "cosim/study/BodyCache.hpp"
+#include "cosim/study/VariantCase.hpp"
 #include "fem/AtomicFile.hpp"
 
 namespace flexehd::cli {
@@ -18,8 +18,7 @@ namespace flexehd::cli {
 namespace fs = std::filesystem;
 
 VariantJob::VariantJob(const cosim::Study& study, const cosim::StudyVariant& variant, int rank, std::string executable)
-    : study_(study), dir_(cosim::variantDirectory(study, variant)), log_(dir_ + "/run.log"),
-      start_(std::chrono::steady_clock::now()) {
+    : study_(study), dir_(cosim::variantDirectory(study, variant)), log_(dir_ + "/run.log") {
     result_.rank = rank;
     try {
         fs::create_directories(dir_);
@@ -62,7 +61,7 @@ void VariantJob::finish(const std::string& status, const std::string& message) {
         result_.message = message;
         result_.outputs.assign(study_.outputs.size(), "");
     }
-    result_.runSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    result_.runSeconds = start_.seconds();
     done_ = true;
 }
 
@@ -80,7 +79,7 @@ std::string VariantJob::lastError() const {
 bool VariantJob::poll() {
     if (done_) return true;
     if (study_.run.timeoutSeconds > 0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() > study_.run.timeoutSeconds) {
+        start_.seconds() > study_.run.timeoutSeconds) {
         stop();
         finish("failed", fmt::format("timed out after {} s ({})", study_.run.timeoutSeconds, current_.what));
         return true;

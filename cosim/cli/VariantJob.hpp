@@ -3,14 +3,14 @@
 // file, builds the reduced bodies it needs that are not in the cache yet (`flexehd reduce`),
 // then runs it (`flexehd run`), each as a child process logging to VARIANT_DIR/run.log.
 // Every failure — bad values, a crashed or timed-out process — ends in a failed result.
-#include <chrono>
 #include <deque>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "cosim/StudyFile.hpp"
-#include "cosim/StudyTable.hpp"
+#include "cosim/study/StudyFile.hpp"
+#include "fem/Stopwatch.hpp"
+#include "cosim/study/StudyTable.hpp"
 #include "cosim/cli/ChildProcess.hpp"
 
 namespace flexehd::cli {
@@ -39,7 +39,7 @@ private:
     std::deque<Step> steps_;
     std::unique_ptr<ChildProcess> child_;
     Step current_;
-    std::chrono::steady_clock::time_point start_;
+    fem::Stopwatch start_;
     cosim::VariantResult result_;
     bool done_ = false;
 };

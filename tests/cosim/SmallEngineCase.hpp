@@ -1,7 +1,7 @@
 #pragma once
 // The example engine (examples/engine86, 86 × 86 mm at 1000 rpm) in a small form for the
 // co-simulation tests: a synthetic firing pressure trace, rigid bodies, one cycle.
-#include "cosim/EngineCase.hpp"
+#include "cosim/case/EngineCase.hpp"
 
 #include <cmath>
 #include <numbers>

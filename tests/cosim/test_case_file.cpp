@@ -18,8 +18,8 @@
 
 #include <Eigen/LU>
 
-#include "cosim/CaseFile.hpp"
-#include "cosim/CylinderPressure.hpp"
+#include "cosim/case/CaseFile.hpp"
+#include "cosim/engine/CylinderPressure.hpp"
 #include "fem/MeshReader.hpp"
 #include "fem/Quadrature.hpp"
 #include "fem/ShapeFunctions.hpp"

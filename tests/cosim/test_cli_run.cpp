@@ -3,7 +3,7 @@
 // seed paper reports for this engine (Dlugoš et al. 2016, §4: lateral displacement of the order
 // of ±0.06 mm, tilt within a few tenths of a degree, slap at firing TDC) — a regression check
 // on a 16 × 48 grid, one cycle.
-#include "cosim/HistoryWriter.hpp"
+#include "cosim/results/HistoryWriter.hpp"
 #include "CliRunner.hpp"
 
 #include <array>

@@ -1,9 +1,9 @@
 // `flexehd sweep`: study files (designs, errors), and small studies of the coarse rigid example
 // (16 × 48 grid, one cycle): one process and two MPI ranks give the same study.csv, a killed
 // study resumes with only the missing variant, a failing variant is recorded with its error.
-#include "cosim/BodyCache.hpp"
-#include "cosim/StudyFile.hpp"
-#include "cosim/VariantCase.hpp"
+#include "cosim/study/BodyCache.hpp"
+#include "cosim/study/StudyFile.hpp"
+#include "cosim/study/VariantCase.hpp"
 #include "CliRunner.hpp"
 
 #include <gmock/gmock.h>

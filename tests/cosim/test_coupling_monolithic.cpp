@@ -12,7 +12,7 @@
 // by damped semismooth Newton (primal–dual active set) with the exact derivative in p and finite
 // differences in q, on a dense LU. This uses neither the multigrid solver nor the coupling
 // accelerator; only the discretisation (ReynoldsSystem) and the body (FlexibleSurface) are shared.
-#include "cosim/PistonSimulation.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/ReynoldsSystem.hpp"
 #include "CliRunner.hpp"
 #include "SmallEngineCase.hpp"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "cosim/DeformationMapping.hpp"
-#include "cosim/MovingGridMapping.hpp"
+#include "cosim/mapping/DeformationMapping.hpp"
+#include "cosim/mapping/MovingGridMapping.hpp"
 #include "fem/MeshReader.hpp"
 
 using namespace flexehd;

@@ -7,7 +7,7 @@
 //    below 1 Hz) cannot follow the load over the 70 ms of the run: its elastic film change must
 //    stay a small fraction, (ω t)²/2 ≈ 1e-2, of the quasi-static one. This fails if the response
 //    is not the dynamic one.
-#include "cosim/PistonSimulation.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "modal/ReducedBodyFile.hpp"
 #include "CliRunner.hpp"
 #include "SmallEngineCase.hpp"

@@ -8,7 +8,7 @@
 // quasi-static response q = C Φᵀ A (p + p_c) must reproduce the run's modal coordinates y to the
 // coupling tolerance. The same check with the rigid rate only must fail — the elastic rate is
 // not negligible in this run — so the check can tell the two equations apart.
-#include "cosim/PistonSimulation.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "CliRunner.hpp"
 #include "SmallEngineCase.hpp"

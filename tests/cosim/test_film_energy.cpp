@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cosim/PistonSimulation.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "SmallEngineCase.hpp"
 
 using namespace flexehd;

@@ -9,8 +9,8 @@
 
 #include <Eigen/Geometry>
 
-#include "cosim/LoadMapping.hpp"
-#include "cosim/MovingGridMapping.hpp"
+#include "cosim/mapping/LoadMapping.hpp"
+#include "cosim/mapping/MovingGridMapping.hpp"
 #include "fem/MeshReader.hpp"
 
 using namespace flexehd;

@@ -12,7 +12,7 @@
 
 #include <Eigen/Geometry>
 
-#include "cosim/ModalMapping.hpp"
+#include "cosim/mapping/ModalMapping.hpp"
 #include "fem/DofMap.hpp"
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/MeshReader.hpp"

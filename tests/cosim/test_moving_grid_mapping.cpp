@@ -14,9 +14,9 @@
 
 #include <Eigen/Geometry>
 
-#include "cosim/DeformationMapping.hpp"
-#include "cosim/LoadMapping.hpp"
-#include "cosim/MovingGridMapping.hpp"
+#include "cosim/mapping/DeformationMapping.hpp"
+#include "cosim/mapping/LoadMapping.hpp"
+#include "cosim/mapping/MovingGridMapping.hpp"
 #include "fem/DofMap.hpp"
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/MeshReader.hpp"

@@ -19,9 +19,9 @@
 //  * the contact load split is consistent with the reported gap: a hard-contact force only
 //    where the minimum film thickness is negative (the surfaces overlap), never more than the
 //    whole contact force.
-#include "cosim/CaseFile.hpp"
-#include "cosim/CycleMetrics.hpp"
-#include "cosim/PistonSimulation.hpp"
+#include "cosim/case/CaseFile.hpp"
+#include "cosim/results/CycleMetrics.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "CliRunner.hpp"
 #include "SmallEngineCase.hpp"
 

@@ -2,10 +2,10 @@
 // and the rigid-body (HD) co-simulation: no-motion limit, force and moment balance at every step
 // (recomputed from history.csv quantities), time-step convergence, the kinetic energy of the
 // secondary motion against a point-mass model, and the crank angle of the outputs.
-#include "cosim/CrankKinematics.hpp"
-#include "cosim/CycleMetrics.hpp"
-#include "cosim/PistonDynamics.hpp"
-#include "cosim/PistonSimulation.hpp"
+#include "cosim/engine/CrankKinematics.hpp"
+#include "cosim/results/CycleMetrics.hpp"
+#include "cosim/engine/PistonDynamics.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "SmallEngineCase.hpp"
 
 #include <Eigen/Geometry>
@@ -170,7 +170,7 @@ TEST(PistonSimulation, TimeStepConvergence) {
         c.output.vtkEveryDeg = 5.0;     // snapshot angles are hit exactly
         PistonSimulation sim(c);
         std::vector<double> e;
-        sim.run({.onStep = {}, .onSnapshot = [&](const Snapshot& s) { e.push_back(s.lateral); }, .progress = {}}, 120.0);
+        sim.run({.onStep = {}, .onSnapshot = [&](const Snapshot& s) { e.push_back(s.lateral); }, .onCycleEnd = {}, .progress = {}}, 120.0);
         return e;
     };
     const auto ref = runAt(0.03125), e1 = runAt(0.5), e2 = runAt(0.25), e3 = runAt(0.125);
@@ -200,7 +200,7 @@ TEST(PistonSimulation, OutputsGiveTheTrueCrankAngleWhateverTheStart) {
     c.output.vtkEveryDeg = 10.0;
     PistonSimulation sim(c);
     std::vector<Snapshot> snaps;
-    const auto rec = sim.run({.onStep = {}, .onSnapshot = [&](const Snapshot& s) { snaps.push_back(s); }, .progress = {}},
+    const auto rec = sim.run({.onStep = {}, .onSnapshot = [&](const Snapshot& s) { snaps.push_back(s); }, .onCycleEnd = {}, .progress = {}},
                              40.0);
     ASSERT_GT(rec.size(), 20u);
     auto expected = [&](double time) {
@@ -274,7 +274,7 @@ TEST(PistonSimulation, PeriodicityErrorComparesTheSameCrankAngle) {
     c.output.vtkEveryDeg = 0.0;
     PistonSimulation sim(c);
     std::vector<StepRecord> all;
-    sim.run({.onStep = [&](const StepRecord& r) { all.push_back(r); }, .onSnapshot = {}, .progress = {}});
+    sim.run({.onStep = [&](const StepRecord& r) { all.push_back(r); }, .onSnapshot = {}, .onCycleEnd = {}, .progress = {}});
     ASSERT_EQ(sim.statistics().cycles, 2);
     std::vector<StepRecord> one, two;
     for (const auto& r : all) (r.cycle == 1 ? one : two).push_back(r);

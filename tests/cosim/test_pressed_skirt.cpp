@@ -13,9 +13,9 @@
 // body (shift, tilt and true minimum gap, an interference), and that within the Ritz error at
 // the full model's shift and tilt; the rigid skirt's solution of the same problem is far from
 // both, so the test sees whether the body's compliance takes part.
-#include "cosim/DeformationMapping.hpp"
-#include "cosim/LoadMapping.hpp"
-#include "cosim/PistonSimulation.hpp"
+#include "cosim/mapping/DeformationMapping.hpp"
+#include "cosim/mapping/LoadMapping.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "fem/DofMap.hpp"
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/StaticSolver.hpp"

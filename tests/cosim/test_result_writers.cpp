@@ -23,9 +23,9 @@
 #include <vtkXMLStructuredGridReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include "cosim/FieldSeriesWriter.hpp"
-#include "cosim/HistoryWriter.hpp"
-#include "cosim/ModeShapeExport.hpp"
+#include "cosim/results/FieldSeriesWriter.hpp"
+#include "cosim/results/HistoryWriter.hpp"
+#include "cosim/results/ModeShapeExport.hpp"
 #include "tests/fem/TestData.hpp"
 
 namespace flexehd::cosim {

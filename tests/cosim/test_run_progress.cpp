@@ -4,7 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "cosim/RunProgress.hpp"
+#include "cosim/coupling/RunProgress.hpp"
 
 using flexehd::cosim::RunProgress;
 using ::testing::HasSubstr;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "SmallEngineCase.hpp"
-#include "cosim/SkirtFilm.hpp"
+#include "cosim/engine/SkirtFilm.hpp"
 #include "lube/FilmIntegrals.hpp"
 #include "lube/ReynoldsSolver.hpp"
 

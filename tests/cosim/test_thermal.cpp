@@ -14,11 +14,11 @@
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.hpp"
-#include "cosim/CaseFile.hpp"
-#include "cosim/CylindricalSurfaceSampler.hpp"
-#include "cosim/LinerTemperature.hpp"
-#include "cosim/PistonSimulation.hpp"
-#include "cosim/ThermalDisplacementFile.hpp"
+#include "cosim/case/CaseFile.hpp"
+#include "cosim/thermal/CylindricalSurfaceSampler.hpp"
+#include "cosim/thermal/LinerTemperature.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
+#include "cosim/clearance/ThermalDisplacementFile.hpp"
 #include "fem/MeshReader.hpp"
 #include "fem/ThermalDeformation.hpp"
 

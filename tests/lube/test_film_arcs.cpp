@@ -185,6 +185,8 @@ TEST(FilmArcs, PanelForceChangesSmoothlyWithThePanelWidth) {
     ASSERT_LT(mean, 0.0) << "a wider thrust panel carries more load (force towards −x)";
     for (std::size_t k = 0; k < step.size(); ++k) {
         EXPECT_LT(step[k], 0.0) << "step " << k;
-        if (k > 0) EXPECT_LT(std::abs(step[k] - step[k - 1]), 0.5 * std::abs(mean)) << "step " << k;
+        if (k > 0) {
+            EXPECT_LT(std::abs(step[k] - step[k - 1]), 0.5 * std::abs(mean)) << "step " << k;
+        }
     }
 }

@@ -176,6 +176,30 @@ TEST(Multigrid, NotConvergedThrows) {
     }
 }
 
+// ReynoldsOptions::fallback: the solve multigrid cannot finish within its iteration limit is
+// redone by the active-set method, whose answer is exact to round-off: the result equals an
+// active-set solve of its own and says that it fell back.
+TEST(Multigrid, AStalledSolveIsRedoneByTheFallbackSolver) {
+    Journal jb;
+    jb.eps = 0.7;
+    ReynoldsOptions opt;
+    opt.solver = SolverKind::Multigrid;
+    opt.gridSequencing = false;
+    opt.control.tolerance = 1e-12;
+    opt.control.maxIterations = 1;
+    opt.fallback = SolverKind::ActiveSet;
+    ReynoldsSolver rs(jb.finiteGrid(2 * jb.R, 64, 17), Lubricant(jb.mu), opt);
+    const FilmState st = jb.state(rs.grid());
+    const ReynoldsResult r = rs.solve(st);
+    EXPECT_TRUE(r.fellBack);
+    const ReynoldsResult as = solveWith(rs.grid(), st, SolverKind::ActiveSet, 1e-12);
+    EXPECT_LT(maxDiff(r, as), 1e-12);
+    EXPECT_GT(as.pressure.maxCoeff(), 1e5);
+    opt.control.maxIterations = 200;
+    ReynoldsSolver converging(rs.grid(), Lubricant(jb.mu), opt);
+    EXPECT_FALSE(converging.solve(st).fellBack) << "a converged multigrid solve is kept";
+}
+
 // The ReynoldsSystem stencil lives in LargeArrayAllocator storage, which does not zero new
 // memory, so assembly must write every entry: on a masked skirt grid large enough for the
 // huge-page path (5 doubles × 128×256 nodes ≥ 1 MiB), built right after a block of the same

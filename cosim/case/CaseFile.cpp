@@ -1,0 +1,716 @@
+#include "cosim/case/CaseFile.hpp"
+#include "cosim/io/YamlKeys.hpp"
+#include "cosim/io/YamlSection.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "cosim/clearance/BoreDistortion.hpp"
+#include "cosim/engine/CylinderPressure.hpp"
+#include "cosim/clearance/ThermalDisplacementFile.hpp"
+
+namespace flexehd::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+// ---- small text helpers ---------------------------------------------------------------------
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r\n");
+    if (b == std::string::npos) return "";
+    const auto e = s.find_last_not_of(" \t\r\n");
+    return s.substr(b, e - b + 1);
+}
+
+/// Strict number: the whole text (a leading '+' allowed), finite.
+bool parseDouble(const std::string& text, double& value) {
+    std::string t = trim(text);
+    if (!t.empty() && t[0] == '+') t.erase(0, 1);
+    if (t.empty()) return false;
+    const char* end = t.data() + t.size();
+    const auto [ptr, ec] = std::from_chars(t.data(), end, value);
+    return ec == std::errc() && ptr == end && std::isfinite(value);
+}
+
+bool parseInt(const std::string& text, long long& value) {
+    std::string t = trim(text);
+    if (!t.empty() && t[0] == '+') t.erase(0, 1);
+    if (t.empty()) return false;
+    const char* end = t.data() + t.size();
+    const auto [ptr, ec] = std::from_chars(t.data(), end, value);
+    return ec == std::errc() && ptr == end;
+}
+
+const auto& closest = closestKey;
+const auto& joined = joinedKeys;
+const auto& describe = describeNode;
+
+std::string withArticle(const std::string& phrase) {
+    const bool vowel = !phrase.empty() && std::strchr("aeiou", phrase[0]) != nullptr;
+    return (vowel ? "an " : "a ") + phrase;
+}
+
+// ---- typed values ---------------------------------------------------------------------------
+
+enum class Sign { Any, Positive, NonNegative };
+
+struct Quantity {
+    const char* what;  ///< "length"
+    const char* unit;  ///< "m"
+};
+
+std::string expectation(Quantity q, Sign sign) {
+    const std::string adj = sign == Sign::Positive ? "positive " : sign == Sign::NonNegative ? "non-negative " : "";
+    return withArticle(adj + q.what) + (q.unit[0] ? std::string(" in ") + q.unit : std::string());
+}
+
+/// Number at `key`; `def` if absent (and not required).
+double number(const YamlSection& s, const std::string& key, Quantity q, Sign sign, double def, bool required = false) {
+    if (!s.has(key)) {
+        if (required) s.missing(key, expectation(q, sign));
+        return def;
+    }
+    const YAML::Node n = s.get(key);
+    double v = 0.0;
+    if (!n.IsScalar() || !parseDouble(n.Scalar(), v))
+        s.fail(key, fmt::format("expected {}, got {}", expectation(q, sign), describe(n)));
+    if ((sign == Sign::Positive && !(v > 0.0)) || (sign == Sign::NonNegative && !(v >= 0.0)))
+        s.fail(key, fmt::format("expected {}, got {}", expectation(q, sign), trim(n.Scalar())));
+    return v;
+}
+
+int integer(const YamlSection& s, const std::string& key, int minimum, int maximum, int def, const char* what) {
+    if (!s.has(key)) return def;
+    const YAML::Node n = s.get(key);
+    long long v = 0;
+    const std::string expected = fmt::format("a whole number{}{} from {} to {}", *what ? " of " : "", what, minimum, maximum);
+    if (!n.IsScalar() || !parseInt(n.Scalar(), v))
+        s.fail(key, fmt::format("expected {}, got {}", expected, describe(n)));
+    if (v < minimum || v > maximum) s.fail(key, fmt::format("expected {}, got {}", expected, trim(n.Scalar())));
+    return static_cast<int>(v);
+}
+
+bool boolean(const YamlSection& s, const std::string& key, bool def) {
+    if (!s.has(key)) return def;
+    const YAML::Node n = s.get(key);
+    bool v = false;
+    if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v)) s.fail(key, "expected true or false, got " + describe(n));
+    return v;
+}
+
+std::string text(const YamlSection& s, const std::string& key, const std::string& def, const std::string& what,
+                 bool required = false) {
+    if (!s.has(key)) {
+        if (required) s.missing(key, what);
+        return def;
+    }
+    const YAML::Node n = s.get(key);
+    if (!n.IsScalar() || trim(n.Scalar()).empty()) s.fail(key, "expected " + what + ", got " + describe(n));
+    return trim(n.Scalar());
+}
+
+/// One of `options` (the YAML spelling), returned as its index.
+std::size_t choice(const YamlSection& s, const std::string& key, const std::vector<std::string>& options, std::size_t def) {
+    if (!s.has(key)) return def;
+    const YAML::Node n = s.get(key);
+    const std::string expected = "one of " + joined(options);
+    if (!n.IsScalar()) s.fail(key, "expected " + expected + ", got " + describe(n));
+    const std::string v = trim(n.Scalar());
+    for (std::size_t i = 0; i < options.size(); ++i)
+        if (v == options[i]) return i;
+    const std::string guess = closest(v, options);
+    s.fail(key, fmt::format("expected {}, got '{}'{}", expected, v,
+                            guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
+}
+
+// ---- files ----------------------------------------------------------------------------------
+
+std::string readWholeFile(const fs::path& path, std::string& error) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+        error = "no such file";
+        return {};
+    }
+    if (fs::is_directory(path, ec)) {
+        error = "is a directory, not a file";
+        return {};
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = "cannot be opened for reading";
+        return {};
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) error = "read error";
+    std::string text = ss.str();
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark (spreadsheet CSV)
+    return text;
+}
+
+/// HDF5 files carry an 8-byte signature at offset 0, 512, 1024, 2048, … (after a user block).
+bool looksLikeHdf5(const fs::path& path) {
+    static const char kSignature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (!in || ec) return false;
+    for (std::uintmax_t offset = 0; offset + 8 <= size; offset = offset == 0 ? 512 : 2 * offset) {
+        char buf[8];
+        in.seekg(static_cast<std::streamoff>(offset));
+        if (!in.read(buf, 8)) return false;
+        if (std::memcmp(buf, kSignature, 8) == 0) return true;
+    }
+    return false;
+}
+
+// ---- sections -------------------------------------------------------------------------------
+
+const Quantity kLength{"length", "m"};
+const Quantity kMass{"mass", "kg"};
+const Quantity kPressure{"pressure", "Pa"};
+
+void readEngine(const YamlSection& s, EngineSpec& e) {
+    e.bore = number(s, "bore", kLength, Sign::Positive, e.bore, true);
+    e.stroke = number(s, "stroke", kLength, Sign::Positive, e.stroke, true);
+    e.rodLength =
+        number(s, "rod_length", {"length (connecting rod, centre to centre)", "m"}, Sign::Positive, e.rodLength, true);
+    e.pinOffset = number(s, "pin_offset", {"length (towards +x, the major thrust side)", "m"}, Sign::Any, e.pinOffset);
+    e.speedRpm = number(s, "speed_rpm", {"crankshaft speed", "rev/min"}, Sign::Positive, e.speedRpm, true);
+    e.crankcasePressure =
+        number(s, "crankcase_pressure", {"absolute pressure", "Pa"}, Sign::Positive, e.crankcasePressure);
+    e.pinTdcDepth =
+        number(s, "pin_tdc_depth", {"depth of the pin axis below the deck at TDC", "m"}, Sign::Positive, e.pinTdcDepth);
+    if (e.bore > 2.0) s.fail("bore", fmt::format("a bore of {:g} m is above 2 m: check the units (m)", e.bore));
+    if (e.stroke > 4.0) s.fail("stroke", fmt::format("a stroke of {:g} m is above 4 m: check the units (m)", e.stroke));
+    if (std::abs(e.pinOffset) >= e.bore / 2)
+        s.fail("pin_offset", fmt::format("|pin_offset| = {:g} m must be smaller than the bore radius {:g} m",
+                                         std::abs(e.pinOffset), e.bore / 2));
+    if (!(e.rodLength > e.stroke / 2 + std::abs(e.pinOffset)))
+        s.fail("rod_length",
+               fmt::format("the crank cannot turn: rod_length ({:g} m) must exceed stroke/2 + |pin_offset| = {:g} m",
+                           e.rodLength, e.stroke / 2 + std::abs(e.pinOffset)));
+}
+
+void readPiston(const YamlSection& s, const EngineSpec& engine, PistonSpec& p) {
+    p.mass = number(s, "mass", {"mass (piston without pin)", "kg"}, Sign::Positive, p.mass, true);
+    p.pinMass = number(s, "pin_mass", kMass, Sign::NonNegative, p.pinMass, true);
+    p.inertia = number(s, "inertia", {"rotary inertia about the pin-parallel axis through the CG", "kg m^2"},
+                       Sign::Positive, p.inertia, true);
+    p.cgX = number(s, "cg_x", kLength, Sign::Any, p.cgX);
+    p.cgZ = number(s, "cg_z", kLength, Sign::Any, p.cgZ);
+    p.skirtTop = number(s, "skirt_top", {"length (piston frame z)", "m"}, Sign::Any, p.skirtTop, true);
+    p.skirtBottom = number(s, "skirt_bottom", {"length (piston frame z)", "m"}, Sign::Any, p.skirtBottom, true);
+    p.clearance = number(s, "clearance", kLength, Sign::Positive, p.clearance);
+    const double halfDeg = number(s, "skirt_half_angle_deg", {"angle", "deg"}, Sign::Positive, p.skirtHalfAngle / kDeg);
+    p.ovality = number(s, "ovality", kLength, Sign::NonNegative, p.ovality);
+
+    if (std::abs(p.cgX) >= engine.bore / 2)
+        s.fail("cg_x", fmt::format("the CG must lie inside the bore: |cg_x| = {:g} m >= bore/2", std::abs(p.cgX)));
+    if (!(p.skirtBottom < p.skirtTop))
+        s.fail("skirt_bottom",
+               fmt::format("expected skirt_bottom < skirt_top = {:g} m, got {:g} m", p.skirtTop, p.skirtBottom));
+    if (p.skirtTop - p.skirtBottom > 2 * engine.bore)
+        s.fail("skirt_bottom", fmt::format("a skirt {:g} m long is longer than twice the bore: check the units (m)",
+                                           p.skirtTop - p.skirtBottom));
+    if (p.clearance > 0.01 * engine.bore)
+        s.fail("clearance", fmt::format("expected a radial clearance below 1% of the bore ({:g} m), got {:g} m: "
+                                        "check the units (m; 50 um = 5e-05)",
+                                        0.01 * engine.bore, p.clearance));
+    if (!(halfDeg <= 180.0))
+        s.fail("skirt_half_angle_deg", fmt::format("expected 0 < angle <= 180 deg, got {:g}", halfDeg));
+    if (s.has("skirt_half_angle_deg")) p.skirtHalfAngle = halfDeg * kDeg;
+    if (p.ovality > 0.01 * engine.bore)
+        s.fail("ovality", fmt::format("expected an ovality below 1% of the bore ({:g} m), got {:g} m",
+                                      0.01 * engine.bore, p.ovality));
+
+    p.profile.clear();
+    if (s.has("profile")) {
+        const YAML::Node list = s.get("profile");
+        const std::string expected = "a list of [z, drop] pairs in m, z ascending";
+        if (!list.IsSequence()) s.fail("profile", "expected " + expected + ", got " + describe(list));
+        const std::string path = s.keyPath("profile");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const YAML::Node row = list[i];
+            const std::string rowPath = fmt::format("{}[{}]", path, i);
+            double z = 0.0, drop = 0.0;
+            if (!row.IsSequence() || row.size() != 2 || !row[0].IsScalar() || !row[1].IsScalar() ||
+                !parseDouble(row[0].Scalar(), z) || !parseDouble(row[1].Scalar(), drop))
+                s.source().fail(rowPath, row,
+                     "expected a pair [z, drop] of numbers in m, got " + describe(row) +
+                         (row.IsSequence() ? fmt::format(" with {} entries", row.size()) : ""));
+            if (!p.profile.empty() && !(z > p.profile.back().z))
+                s.source().fail(rowPath, row,
+                     fmt::format("profile z must be strictly ascending: {:g} m follows {:g} m", z, p.profile.back().z));
+            if (!(drop > -p.clearance))
+                s.source().fail(rowPath, row,
+                     fmt::format("a drop of {:g} m makes the skirt touch the bore (clearance {:g} m)", drop,
+                                 p.clearance));
+            if (std::abs(drop) > 0.01 * engine.bore)
+                s.source().fail(rowPath, row,
+                     fmt::format("a drop of {:g} m is more than 1% of the bore: check the units (m)", drop));
+            p.profile.push_back({z, drop});
+        }
+        if (p.profile.size() == 1) s.fail("profile", "a profile needs at least two points (or none: cylindrical)");
+        if (!p.profile.empty()) {
+            const double tol = 1e-9;
+            if (p.profile.front().z > p.skirtBottom + tol || p.profile.back().z < p.skirtTop - tol)
+                s.fail("profile",
+                       fmt::format("the profile (z from {:g} to {:g} m) must cover the skirt, skirt_bottom = {:g} m to "
+                                   "skirt_top = {:g} m",
+                                   p.profile.front().z, p.profile.back().z, p.skirtBottom, p.skirtTop));
+        }
+    }
+}
+
+void readLubricant(const YamlSection& s, const EngineSpec& engine, LubricantSpec& l) {
+    l.viscosity = number(s, "viscosity", {"dynamic viscosity", "Pa s"}, Sign::Positive, l.viscosity);
+    l.density = number(s, "density", {"density", "kg/m^3"}, Sign::Positive, l.density);
+    l.barusAlpha =
+        number(s, "barus_alpha", {"pressure-viscosity coefficient", "1/Pa"}, Sign::NonNegative, l.barusAlpha);
+    l.cavitationPressure = number(s, "cavitation_pressure", {"gauge pressure", "Pa"}, Sign::Any, l.cavitationPressure);
+    if (l.viscosity > 10.0)
+        s.fail("viscosity", fmt::format("{:g} Pa s is not an engine oil (0.002-0.1 Pa s): check the units (Pa s, "
+                                        "not cP or mm^2/s)",
+                                        l.viscosity));
+    if (l.barusAlpha > 1e-7)
+        s.fail("barus_alpha", fmt::format("expected a pressure-viscosity coefficient below 1e-7 1/Pa (oils: 1e-8 to "
+                                          "3e-8), got {:g}",
+                                          l.barusAlpha));
+    if (l.cavitationPressure > 0.0 || l.cavitationPressure < -engine.crankcasePressure)
+        s.fail("cavitation_pressure",
+               fmt::format("expected a gauge pressure between -crankcase_pressure ({:g} Pa) and 0, got {:g} Pa",
+                           -engine.crankcasePressure, l.cavitationPressure));
+}
+
+void readContact(const YamlSection& s, ContactSpec& c) {
+    c.sigma = number(s, "sigma", {"composite rms roughness", "m"}, Sign::Positive, c.sigma);
+    c.beta = number(s, "beta", {"asperity tip radius", "m"}, Sign::Positive, c.beta);
+    c.asperityDensity = number(s, "asperity_density", {"asperity density", "1/m^2"}, Sign::Positive, c.asperityDensity);
+    c.boundaryFriction =
+        number(s, "boundary_friction", {"friction coefficient", ""}, Sign::NonNegative, c.boundaryFriction);
+    if (c.boundaryFriction > 1.0)
+        s.fail("boundary_friction",
+               fmt::format("expected a friction coefficient between 0 and 1, got {:g}", c.boundaryFriction));
+    if (c.sigma > 1e-4)
+        s.fail("sigma", fmt::format("a roughness of {:g} m is above 100 um: check the units (m)", c.sigma));
+
+    // E*: given directly, or from the two surfaces' elastic constants (Hertz: 1/E* = Σ (1−ν²)/E).
+    const std::vector<std::string> materialKeys{"piston_youngs_modulus", "piston_poisson_ratio", "liner_youngs_modulus",
+                                                "liner_poisson_ratio"};
+    const bool anyMaterial =
+        std::any_of(materialKeys.begin(), materialKeys.end(), [&](const auto& k) { return s.has(k); });
+    if (s.has("composite_modulus") && anyMaterial)
+        s.fail("composite_modulus",
+               "give either composite_modulus or the four piston_/liner_ youngs_modulus and "
+               "poisson_ratio keys, not both");
+    if (anyMaterial) {
+        double compliance = 0.0;
+        for (const char* body : {"piston", "liner"}) {
+            const std::string e = std::string(body) + "_youngs_modulus", nu = std::string(body) + "_poisson_ratio";
+            const double E = number(s, e, {"Young's modulus", "Pa"}, Sign::Positive, 0.0, true);
+            const double v = number(s, nu, {"Poisson's ratio", ""}, Sign::Any, 0.0, true);
+            if (!(v > -1.0 && v < 0.5)) s.fail(nu, fmt::format("expected a Poisson's ratio in (-1, 0.5), got {:g}", v));
+            compliance += (1.0 - v * v) / E;
+        }
+        c.compositeModulus = 1.0 / compliance;
+    } else {
+        c.compositeModulus = number(s, "composite_modulus", {"composite modulus E* (0 = contact off)", "Pa"},
+                                    Sign::NonNegative, c.compositeModulus);
+    }
+
+    // Hard contact below h = 0: the coating as a bonded elastic layer, or the stiffness directly.
+    const bool anyCoating = s.has("coating_thickness") || s.has("coating_youngs_modulus") || s.has("coating_poisson_ratio");
+    if (s.has("hard_contact_stiffness") && anyCoating)
+        s.fail("hard_contact_stiffness",
+               "give either hard_contact_stiffness or the coating_ thickness / youngs_modulus / poisson_ratio keys, "
+               "not both");
+    c.coatingThickness = number(s, "coating_thickness", {"coating thickness", "m"}, Sign::Positive, c.coatingThickness);
+    if (c.coatingThickness > 1e-3)
+        s.fail("coating_thickness",
+               fmt::format("a coating of {:g} m is thicker than 1 mm: check the units (m)", c.coatingThickness));
+    c.coatingModulus =
+        number(s, "coating_youngs_modulus", {"Young's modulus", "Pa"}, Sign::Positive, c.coatingModulus);
+    c.coatingPoisson = number(s, "coating_poisson_ratio", {"Poisson's ratio", ""}, Sign::Any, c.coatingPoisson);
+    if (!(c.coatingPoisson > -1.0 && c.coatingPoisson < 0.5))
+        s.fail("coating_poisson_ratio",
+               fmt::format("expected a Poisson's ratio in (-1, 0.5), got {:g}", c.coatingPoisson));
+    c.hardContactStiffness = number(s, "hard_contact_stiffness", {"contact stiffness", "Pa/m"}, Sign::Positive,
+                                    c.hardContactStiffness);
+}
+
+// ---- liner bore distortion and thermal displacements (BoreDistortion, ClearanceTerms) --
+
+/// liner.bore_distortion: {format: fourier, file: CSV} | {format: fourier, orders: [...]} |
+/// {format: nodal, file: CSV}. Tables are read and checked here; errors name the key.
+void readLiner(const YamlSection& top, const EngineSpec& engine, LinerSpec& l) {
+    const YamlSection s(top.source(), top.get("liner"), "liner", {"bore_distortion"});
+    if (!s.has("bore_distortion")) return;
+    const YamlSection d(s.source(), s.get("bore_distortion"), s.keyPath("bore_distortion"),
+                    {"format", "file", "orders", "field"});
+    BoreDistortionSpec& b = l.boreDistortion;
+    if (!d.has("format")) d.missing("format", "fourier (orders per axial position) or nodal (an FE result)");
+    const bool fourier = choice(d, "format", {"fourier", "nodal"}, 0) == 0;
+    if (d.has("file") && d.has("orders"))
+        d.fail("orders", "give either file (a CSV table) or orders (an inline table), not both");
+    if (!fourier && d.has("orders"))
+        d.fail("orders", "an inline table needs format: fourier; a nodal FE result is read from a file");
+    if (!d.has("file") && !d.has("orders"))
+        d.missing("file", fourier ? "the Fourier table (CSV), or an inline table under orders"
+                                  : "the FE result on the bore (CSV: x, y, z, ux, uy, uz or ur; or a .vtu)");
+    if (d.has("file")) {
+        b.file = d.source().resolve(text(d, "file", "", "a file path")).string();
+        if (d.has("field") && (fourier || !isVtuFile(b.file)))
+            d.fail("field", "names the point-data array of a nodal result in a .vtu file; this table is a CSV");
+        const std::string field = text(d, "field", "displacement", "the point-data array of the .vtu file");
+        try {
+            if (fourier)
+                b.fourier = readFourierTable(b.file, engine.bore);
+            else
+                b.nodes = readBoreNodes(b.file, engine.bore, field);
+        } catch (const std::exception& e) {
+            d.fail("file", e.what());
+        }
+        b.format = fourier ? BoreDistortionFormat::Fourier : BoreDistortionFormat::Nodal;
+        return;
+    }
+    const YAML::Node list = d.get("orders");
+    const std::string expected = "a list of {z or depth, order, amplitude, phase or phase_deg} mappings";
+    if (!list.IsSequence() || list.size() == 0) d.fail("orders", "expected " + expected + ", got " + describe(list));
+    std::vector<std::string> paths;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        paths.push_back(fmt::format("{}[{}]", d.keyPath("orders"), i));
+        const YamlSection e(d.source(), list[i], paths.back(), {"z", "depth", "order", "amplitude", "phase", "phase_deg"});
+        if (!list[i].IsMap())
+            d.source().fail(paths.back(), list[i], "expected " + expected + ", got " + describe(list[i]));
+        FourierTerm t;
+        if (e.has("z") == e.has("depth"))
+            e.fail(e.has("z") ? "depth" : "z", "give exactly one of z (m, liner frame) and depth (m below the liner top)");
+        t.z = e.has("z") ? number(e, "z", kLength, Sign::Any, 0.0) : -number(e, "depth", kLength, Sign::Any, 0.0);
+        if (!e.has("order")) e.missing("order", "a whole number from 0 to 100 (the Fourier order)");
+        t.order = integer(e, "order", 0, 100, 0, "");
+        t.amplitude = number(e, "amplitude", {"radial amplitude", "m"}, Sign::Any, 0.0, true);
+        if (e.has("phase") == e.has("phase_deg"))
+            e.fail(e.has("phase") ? "phase_deg" : "phase", "give exactly one of phase (rad) and phase_deg (deg)");
+        t.phase = e.has("phase") ? number(e, "phase", {"angle", "rad"}, Sign::Any, 0.0)
+                                 : number(e, "phase_deg", {"angle", "deg"}, Sign::Any, 0.0) * kDeg;
+        b.fourier.push_back(t);
+    }
+    if (const auto problem = checkFourierTerms(b.fourier, engine.bore))
+        d.source().fail(paths[problem->index], list[problem->index],
+             problem->message + (problem->first != problem->index ? " (first at " + paths[problem->first] + ")" : ""));
+    sortFourierTerms(b.fourier);
+    b.format = BoreDistortionFormat::Fourier;
+}
+
+/// thermal: {file: thermal.h5}. With options.checkBodyFiles the file is read and validated.
+void readThermal(const YamlSection& top, const CaseFileOptions& options, ThermalSpec& t) {
+    if (!top.has("thermal")) return;
+    const YamlSection s(top.source(), top.get("thermal"), "thermal", {"file"});
+    const std::string file =
+        text(s, "file", "", "the thermal-displacement file (HDF5, from `flexehd thermal`)", true);
+    t.file = s.source().resolve(file).string();
+    if (options.checkBodyFiles) {
+        try {
+            (void)readThermalDisplacementFile(t.file);
+        } catch (const std::exception& e) {
+            s.fail("file", e.what());
+        }
+    }
+}
+
+BodySpec readBody(const YamlSection& bodies, const std::string& key, const std::string& defSurface,
+                  const std::vector<std::string>& defInterfaces, const CaseFileOptions& options) {
+    BodySpec b;
+    if (!bodies.has(key)) return b;  // rigid
+    const YAML::Node n = bodies.get(key);
+    const std::string path = bodies.keyPath(key);
+    const YamlSource& ctx = bodies.source();
+    if (n.IsScalar()) {
+        const std::string v = trim(n.Scalar());
+        if (v == "rigid") return b;
+        ctx.fail(path, n,
+             fmt::format("expected 'rigid' or a mapping {{file: ..., surface: ..., interface: ...}} for a flexible "
+                         "body, got '{}'",
+                         v));
+    }
+    if (!n.IsMap())
+        ctx.fail(path, n,
+             "expected 'rigid' or a mapping {file: ..., surface: ..., interface: ...}, got " + describe(n));
+    const YamlSection s(ctx, n, path, {"file", "surface", "interface"});
+    b.model = BodyModel::Flexible;
+    const std::string file = text(s, "file", "", "the reduced-body file (HDF5, from `flexehd reduce`)", true);
+    const fs::path resolved = ctx.resolve(file);
+    b.file = resolved.string();
+    if (options.checkBodyFiles) {
+        std::error_code ec;
+        if (!fs::exists(resolved, ec))
+            s.fail("file", fmt::format("reduced-body file {} does not exist (make it with `flexehd reduce`)", b.file));
+        if (fs::is_directory(resolved, ec))
+            s.fail("file", fmt::format("{} is a directory, not a reduced-body file", b.file));
+        if (!std::ifstream(resolved, std::ios::binary))
+            s.fail("file", fmt::format("reduced-body file {} cannot be opened for reading", b.file));
+        if (!looksLikeHdf5(resolved))
+            s.fail("file",
+                   fmt::format("{} is not an HDF5 file (expected a reduced body from `flexehd reduce`)", b.file));
+    }
+    b.surface = text(s, "surface", defSurface, "the name of a physical surface");
+    b.interfaces = defInterfaces;
+    if (s.has("interface")) {
+        const YAML::Node itf = s.get("interface");
+        const std::string expected = "an interface name or a list of them";
+        b.interfaces.clear();
+        if (itf.IsScalar() && !trim(itf.Scalar()).empty()) {
+            b.interfaces.push_back(trim(itf.Scalar()));
+        } else if (itf.IsSequence() && itf.size() > 0) {
+            for (std::size_t i = 0; i < itf.size(); ++i) {
+                if (!itf[i].IsScalar() || trim(itf[i].Scalar()).empty())
+                    ctx.fail(fmt::format("{}[{}]", s.keyPath("interface"), i), itf[i],
+                         "expected an interface name, got " + describe(itf[i]));
+                const std::string name = trim(itf[i].Scalar());
+                if (std::find(b.interfaces.begin(), b.interfaces.end(), name) != b.interfaces.end())
+                    ctx.fail(fmt::format("{}[{}]", s.keyPath("interface"), i), itf[i], "interface listed twice");
+                b.interfaces.push_back(name);
+            }
+        } else {
+            s.fail("interface", "expected " + expected + ", got " + describe(itf));
+        }
+    }
+    b.interface = b.interfaces.empty() ? std::string() : b.interfaces.front();
+    return b;
+}
+
+}  // namespace
+
+std::vector<PressureSample> readPressureTable(const std::string& path) {
+    std::string error;
+    const std::string content = readWholeFile(path, error);
+    if (!error.empty()) throw std::runtime_error(path + ": " + error);
+    std::vector<PressureSample> samples;
+    std::vector<int> lines;
+    std::istringstream in(content);
+    std::string raw;
+    int lineNo = 0;
+    bool headerAllowed = true;
+    while (std::getline(in, raw)) {
+        ++lineNo;
+        const std::string line = trim(raw);
+        if (line.empty() || line[0] == '#') continue;
+        std::vector<std::string> fields;
+        const char sep = line.find(',') != std::string::npos ? ',' : line.find(';') != std::string::npos ? ';' : ' ';
+        if (sep == ' ') {
+            std::istringstream ws(line);
+            std::string f;
+            while (ws >> f) fields.push_back(f);
+        } else {
+            std::size_t start = 0;
+            for (;;) {
+                const auto pos = line.find(sep, start);
+                fields.push_back(trim(line.substr(start, pos == std::string::npos ? std::string::npos : pos - start)));
+                if (pos == std::string::npos) break;
+                start = pos + 1;
+            }
+        }
+        double angle = 0.0, pressure = 0.0;
+        const bool firstIsNumber = !fields.empty() && parseDouble(fields[0], angle);
+        if (headerAllowed && !firstIsNumber) {  // a header line
+            headerAllowed = false;
+            continue;
+        }
+        headerAllowed = false;
+        if (fields.size() != 2 || !firstIsNumber || !parseDouble(fields[1], pressure))
+            throw std::runtime_error(
+                fmt::format("{}:{}: expected two numbers, crank angle in deg and absolute pressure in Pa, got '{}'",
+                            path, lineNo, line));
+        samples.push_back({angle, pressure});
+        lines.push_back(lineNo);
+    }
+    try {
+        const CylinderPressure check(samples);
+        if (check.peak() < 1e4)
+            throw std::runtime_error(
+                fmt::format("{}: the peak pressure is {:g}: the table must hold absolute pressures in Pa (bar or MPa?)",
+                            path, check.peak()));
+    } catch (const PressureTableError& e) {
+        if (e.sample() == PressureTableError::npos) throw std::runtime_error(path + ": " + e.reason());
+        throw std::runtime_error(fmt::format("{}:{}: {}", path, lines[e.sample()], e.reason()));
+    }
+    return samples;
+}
+
+EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options) {
+    const fs::path absolute = fs::absolute(fs::path(path)).lexically_normal();
+    YamlSource ctx{path, absolute.parent_path()};
+
+    std::string error;
+    const std::string content = readWholeFile(absolute, error);
+    if (!error.empty()) throw std::runtime_error(path + ": cannot read the case file: " + error);
+    YAML::Node root;
+    try {
+        root = YAML::Load(content);
+    } catch (const YAML::Exception& e) {
+        throw std::runtime_error(
+            fmt::format("{}:{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
+    }
+    if (!root.IsDefined() || root.IsNull()) throw std::runtime_error(path + ": the case file is empty");
+
+    const YamlSection top(ctx, root, "",
+                      {"name", "engine", "piston", "lubricant", "contact", "cylinder_pressure", "bodies", "grid",
+                       "time", "coupling", "output", "liner", "thermal"});
+    EngineCase c;
+    c.path = absolute.string();
+    c.name = text(top, "name", absolute.stem().string(), "a name (text)");
+
+    // Bodies first: whether the liner is flexible decides whether engine.pin_tdc_depth is required.
+    const YamlSection bodies(ctx, top.get("bodies"), "bodies", {"piston", "liner", "response"});
+    c.pistonBody = readBody(bodies, "piston", "skirt", {"pin_bore"}, options);
+    c.linerBody = readBody(bodies, "liner", "bore", {"top_seat", "bottom_seat"}, options);
+    c.coupling.response = choice(bodies, "response", {"quasi_static", "dynamic"}, 0) == 0 ? ElasticResponse::QuasiStatic
+                                                                                          : ElasticResponse::Dynamic;
+
+    if (!top.has("engine")) top.missing("engine", "the engine section (bore, stroke, rod_length, speed_rpm, ...)");
+    const YamlSection engine(
+        ctx, top.get("engine"), "engine",
+        {"bore", "stroke", "rod_length", "pin_offset", "speed_rpm", "crankcase_pressure", "pin_tdc_depth"});
+    readEngine(engine, c.engine);
+    readLiner(top, c.engine, c.liner);
+    readThermal(top, options, c.thermal);
+    if ((c.liner.boreDistortion.format != BoreDistortionFormat::None || !c.thermal.file.empty()) &&
+        !engine.has("pin_tdc_depth"))
+        engine.missing("pin_tdc_depth",
+                       "the depth of the pin axis below the deck at TDC in m (required with liner.bore_distortion "
+                       "or thermal: it places the piston on the liner's tables)");
+    if (c.linerBody.model == BodyModel::Flexible && !engine.has("pin_tdc_depth"))
+        engine.missing("pin_tdc_depth",
+                       "the depth of the pin axis below the deck at TDC in m (required with a "
+                       "flexible liner: it places the piston on the liner mesh)");
+
+    if (!top.has("piston")) top.missing("piston", "the piston section (mass, pin_mass, inertia, skirt_top, ...)");
+    const YamlSection piston(ctx, top.get("piston"), "piston",
+                         {"mass", "pin_mass", "inertia", "cg_x", "cg_z", "skirt_top", "skirt_bottom", "clearance",
+                          "skirt_half_angle_deg", "profile", "ovality"});
+    readPiston(piston, c.engine, c.piston);
+    if ((engine.has("pin_tdc_depth") || c.linerBody.model == BodyModel::Flexible) &&
+        !(c.engine.pinTdcDepth > c.piston.skirtTop))
+        engine.fail("pin_tdc_depth",
+                    fmt::format("at TDC the skirt top (piston.skirt_top = {:g} m above the pin) would stand above the "
+                                "deck: pin_tdc_depth must exceed it, got {:g} m",
+                                c.piston.skirtTop, c.engine.pinTdcDepth));
+
+    const YamlSection lubricant(ctx, top.get("lubricant"), "lubricant",
+                            {"viscosity", "density", "barus_alpha", "cavitation_pressure"});
+    readLubricant(lubricant, c.engine, c.lubricant);
+
+    const YamlSection contact(
+        ctx, top.get("contact"), "contact",
+        {"sigma", "beta", "asperity_density", "composite_modulus", "boundary_friction", "piston_youngs_modulus",
+         "piston_poisson_ratio", "liner_youngs_modulus", "liner_poisson_ratio", "coating_thickness",
+         "coating_youngs_modulus", "coating_poisson_ratio", "hard_contact_stiffness"});
+    readContact(contact, c.contact);
+
+    {
+        const std::string csv =
+            text(top, "cylinder_pressure", "",
+                 "the path of the cylinder-pressure CSV (crank angle in deg, pressure in Pa)", true);
+        const fs::path resolved = ctx.resolve(csv);
+        c.cylinderPressureFile = resolved.string();
+        try {
+            c.cylinderPressure = readPressureTable(c.cylinderPressureFile);
+        } catch (const std::exception& e) {
+            top.fail("cylinder_pressure", e.what());
+        }
+    }
+
+    const YamlSection grid(ctx, top.get("grid"), "grid", {"axial_nodes", "circumferential_nodes"});
+    c.grid.axialNodes = integer(grid, "axial_nodes", 3, 100000, c.grid.axialNodes, "nodes");
+    c.grid.circumferentialNodes = integer(grid, "circumferential_nodes", 8, 100000, c.grid.circumferentialNodes, "nodes");
+    {
+        // Each skirt panel (2 × half angle wide) must hold at least 3 grid columns.
+        const double spacing = 2 * kPi / c.grid.circumferentialNodes;
+        const double halfAngle = std::min(c.piston.skirtHalfAngle, kPi / 2);
+        if (2 * halfAngle / spacing < 2.0)
+            grid.fail("circumferential_nodes",
+                      fmt::format("{} nodes around the circumference leave fewer than 3 across a skirt panel of {:g} "
+                                  "deg; use at least {}",
+                                  c.grid.circumferentialNodes, 2 * halfAngle / kDeg,
+                                  static_cast<int>(std::ceil(2.0 * 2 * kPi / (2 * halfAngle)))));
+    }
+
+    const YamlSection time(ctx, top.get("time"), "time",
+                       {"start_deg", "max_step_deg", "min_step_deg", "lateral_tolerance", "tilt_tolerance_deg",
+                        "max_cycles", "periodicity_tolerance"});
+    c.time.startDeg = number(time, "start_deg", {"crank angle", "deg"}, Sign::NonNegative, c.time.startDeg);
+    if (!(c.time.startDeg < 720.0))
+        time.fail("start_deg", fmt::format("expected a crank angle in [0, 720) deg, got {:g}", c.time.startDeg));
+    c.time.maxStepDeg = number(time, "max_step_deg", {"crank-angle step", "deg"}, Sign::Positive, c.time.maxStepDeg);
+    c.time.minStepDeg = number(time, "min_step_deg", {"crank-angle step", "deg"}, Sign::Positive, c.time.minStepDeg);
+    if (c.time.maxStepDeg > 10.0)
+        time.fail("max_step_deg", fmt::format("expected at most 10 deg, got {:g}", c.time.maxStepDeg));
+    if (!(c.time.maxStepDeg >= c.time.minStepDeg))
+        time.fail(
+            time.has("max_step_deg") ? "max_step_deg" : "min_step_deg",
+            fmt::format("expected max_step_deg ({:g}) >= min_step_deg ({:g})", c.time.maxStepDeg, c.time.minStepDeg));
+    c.time.lateralTolerance =
+        number(time, "lateral_tolerance", {"length", "m"}, Sign::Positive, c.time.lateralTolerance);
+    if (time.has("tilt_tolerance_deg"))
+        c.time.tiltTolerance = number(time, "tilt_tolerance_deg", {"angle", "deg"}, Sign::Positive, 0.0) * kDeg;
+    c.time.maxCycles = integer(time, "max_cycles", 1, 1000, c.time.maxCycles, "cycles");
+    c.time.periodicityTolerance =
+        number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, c.time.periodicityTolerance);
+
+    const YamlSection coupling(ctx, top.get("coupling"), "coupling", {"tolerance", "max_iterations", "method", "acceleration", "elastic_squeeze"});
+    c.coupling.tolerance =
+        number(coupling, "tolerance", {"relative tolerance", ""}, Sign::Positive, c.coupling.tolerance);
+    if (!(c.coupling.tolerance < 1.0))
+        coupling.fail("tolerance",
+                      fmt::format("expected a relative tolerance below 1, got {:g}", c.coupling.tolerance));
+    c.coupling.maxIterations = integer(coupling, "max_iterations", 1, 10000, c.coupling.maxIterations, "iterations");
+    c.coupling.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0
+                                  ? CouplingAcceleration::IqnIls
+                                  : CouplingAcceleration::Aitken;
+    c.coupling.method = choice(coupling, "method", {"newton", "partitioned"}, 0) == 0 ? CouplingMethod::Newton
+                                                                                      : CouplingMethod::Partitioned;
+    // Default: the whole film thickness's rate with the Newton method (the partitioned iteration
+    // cannot carry it; docs/coupling.md section 3).
+    c.coupling.elasticSqueeze =
+        boolean(coupling, "elastic_squeeze", c.coupling.method == CouplingMethod::Newton);
+    if (c.coupling.elasticSqueeze && c.coupling.method == CouplingMethod::Partitioned)
+        coupling.fail("elastic_squeeze",
+                      "the elastic deformation rate in the squeeze term needs coupling.method: newton (the partitioned "
+                      "iteration's gain grows as 1/time step and does not converge with it; docs/coupling.md section 3)");
+
+    const YamlSection output(ctx, top.get("output"), "output", {"directory", "vtk_every_deg", "mode_shapes"});
+    {
+        const fs::path dir = ctx.resolve(text(output, "directory", "results", "a directory path"));
+        std::error_code ec;
+        if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+            output.fail("directory", fmt::format("{} exists and is not a directory", dir.string()));
+        c.output.directory = dir.string();
+    }
+    c.output.vtkEveryDeg = number(output, "vtk_every_deg", {"crank-angle spacing (0 = no VTK)", "deg"},
+                                  Sign::NonNegative, c.output.vtkEveryDeg);
+    if (c.output.vtkEveryDeg > 720.0 || (c.output.vtkEveryDeg > 0.0 && c.output.vtkEveryDeg < 0.01))
+        output.fail("vtk_every_deg",
+                    fmt::format("expected 0 (no VTK) or 0.01 to 720 deg, got {:g}: a snapshot every 0.01 deg is already "
+                                "72 000 files per cycle, and snapshots closer than the time steps only shorten them",
+                                c.output.vtkEveryDeg));
+    c.output.modeShapes = boolean(output, "mode_shapes", c.output.modeShapes);
+    return c;
+}
+
+}  // namespace flexehd::cosim

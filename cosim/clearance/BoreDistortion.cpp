@@ -1,0 +1,448 @@
+#include "cosim/clearance/BoreDistortion.hpp"
+
+#include "cosim/io/VtuPointField.hpp"
+
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace flexehd::cosim {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r\n");
+    if (b == std::string::npos) return "";
+    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+std::string lower(std::string s) {
+    for (auto& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+bool parseNumber(const std::string& text, double& v) {
+    std::string t = trim(text);
+    if (!t.empty() && t[0] == '+') t.erase(0, 1);
+    if (t.empty()) return false;
+    const auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    return ec == std::errc() && p == t.data() + t.size() && std::isfinite(v);
+}
+
+/// Fields of a CSV line: comma-, semicolon- or blank-separated.
+std::vector<std::string> fields(const std::string& line) {
+    std::vector<std::string> out;
+    const char sep = line.find(',') != std::string::npos ? ',' : line.find(';') != std::string::npos ? ';' : ' ';
+    if (sep == ' ') {
+        std::istringstream ws(line);
+        std::string f;
+        while (ws >> f) out.push_back(f);
+        return out;
+    }
+    std::size_t start = 0;
+    for (;;) {
+        const auto pos = line.find(sep, start);
+        out.push_back(trim(line.substr(start, pos == std::string::npos ? std::string::npos : pos - start)));
+        if (pos == std::string::npos) break;
+        start = pos + 1;
+    }
+    return out;
+}
+
+/// A CSV table with a header: the column of each name, and the numeric rows with their lines.
+struct Table {
+    std::map<std::string, std::size_t> column;  // lower-case header name → index
+    std::vector<std::vector<double>> rows;
+    std::vector<int> lines;
+    std::size_t width = 0;
+};
+
+/// `alternatives`: groups of column names of which the header must name exactly one each; those
+/// columns must hold numbers in every row (other columns are not parsed).
+Table readTable(const std::string& path, const std::string& headerHelp,
+                const std::vector<std::vector<std::string>>& alternatives) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(path + ": no such file or not readable");
+    Table t;
+    std::string raw;
+    int lineNo = 0;
+    bool header = false;
+    std::vector<std::size_t> numeric;  // parsed columns
+    while (std::getline(in, raw)) {
+        ++lineNo;
+        if (lineNo == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);  // UTF-8 byte-order mark
+        const std::string line = trim(raw);
+        if (line.empty() || line[0] == '#') continue;
+        const std::vector<std::string> f = fields(line);
+        if (!header) {
+            header = true;
+            double dummy = 0.0;
+            if (!f.empty() && parseNumber(f[0], dummy))
+                throw std::runtime_error(fmt::format("{}:{}: the first line must be a header naming the columns: {}",
+                                                     path, lineNo, headerHelp));
+            for (std::size_t c = 0; c < f.size(); ++c) {
+                const std::string name = lower(trim(f[c]));
+                if (!t.column.emplace(name, c).second)
+                    throw std::runtime_error(fmt::format("{}:{}: column '{}' given twice", path, lineNo, name));
+            }
+            t.width = f.size();
+            // Exactly one name of each alternative group.
+            for (const auto& group : alternatives) {
+                std::size_t found = 0;
+                std::string names;
+                for (const auto& n : group) {
+                    names += (names.empty() ? "" : " or ") + n;
+                    if (t.column.count(n)) ++found, numeric.push_back(t.column[n]);
+                }
+                if (found != 1)
+                    throw std::runtime_error(fmt::format("{}:{}: the header needs {} column {}; expected: {}", path,
+                                                         lineNo, found == 0 ? "a" : "only one", names, headerHelp));
+            }
+            continue;
+        }
+        if (f.size() != t.width)
+            throw std::runtime_error(fmt::format("{}:{}: expected {} fields as in the header, got {}: '{}'", path,
+                                                 lineNo, t.width, f.size(), line));
+        std::vector<double> row(t.width, 0.0);
+        for (std::size_t c : numeric)
+            if (!parseNumber(f[c], row[c]))
+                throw std::runtime_error(
+                    fmt::format("{}:{}: expected a number in column {}, got '{}'", path, lineNo, c + 1, f[c]));
+        t.rows.push_back(std::move(row));
+        t.lines.push_back(lineNo);
+    }
+    if (!header)
+        throw std::runtime_error(path + ": the file is empty (expected a header and rows: " + headerHelp + ")");
+    if (t.rows.empty()) throw std::runtime_error(path + ": the table has a header but no rows");
+    return t;
+}
+
+double get(const Table& t, const std::vector<double>& row, const std::string& name) { return row[t.column.at(name)]; }
+
+}  // namespace
+
+// ---- Fourier orders -----------------------------------------------------------------------
+
+std::optional<TermProblem> checkFourierTerms(const std::vector<FourierTerm>& terms, double bore) {
+    if (terms.empty()) return TermProblem{0, "no Fourier term given"};
+    std::map<std::pair<double, int>, std::size_t> seen;
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+        const FourierTerm& t = terms[i];
+        if (t.order < 0 || t.order > 100)
+            return TermProblem{i, fmt::format("expected an order from 0 to 100, got {}", t.order)};
+        if (std::abs(t.amplitude) > 0.01 * bore)
+            return TermProblem{i, fmt::format("an amplitude of {:g} m is above 1% of the bore ({:g} m): check the "
+                                              "units (m)",
+                                              t.amplitude, 0.01 * bore)};
+        if (!std::isfinite(t.z) || !std::isfinite(t.phase) || !std::isfinite(t.amplitude))
+            return TermProblem{i, "expected finite numbers"};
+        const auto [it, fresh] = seen.emplace(std::make_pair(t.z, t.order), i);
+        if (!fresh)
+            return TermProblem{i, fmt::format("order {} at z = {:g} m is given twice", t.order, t.z), it->second};
+    }
+    return std::nullopt;
+}
+
+void sortFourierTerms(std::vector<FourierTerm>& terms) {
+    std::stable_sort(terms.begin(), terms.end(), [](const FourierTerm& a, const FourierTerm& b) {
+        return a.z < b.z || (a.z == b.z && a.order < b.order);
+    });
+}
+
+std::vector<FourierTerm> readFourierTable(const std::string& path, double bore) {
+    const std::string help =
+        "z (m, liner frame) or depth (m below the liner top), order, amplitude (m), phase (rad) "
+        "or phase_deg (deg)";
+    const Table t = readTable(path, help, {{"z", "depth"}, {"order"}, {"amplitude"}, {"phase", "phase_deg"}});
+    for (const auto& [name, c] : t.column)
+        if (name != "z" && name != "depth" && name != "order" && name != "amplitude" && name != "phase" &&
+            name != "phase_deg")
+            throw std::runtime_error(fmt::format("{}: unknown column '{}'; expected: {}", path, name, help));
+    const bool depth = t.column.count("depth") > 0, degrees = t.column.count("phase_deg") > 0;
+    std::vector<FourierTerm> terms;
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+        const auto& row = t.rows[r];
+        FourierTerm term;
+        term.z = depth ? -get(t, row, "depth") : get(t, row, "z");
+        const double order = get(t, row, "order");
+        if (order != std::floor(order) || std::abs(order) > 1e6)
+            throw std::runtime_error(
+                fmt::format("{}:{}: expected an integer order, got {:g}", path, t.lines[r], order));
+        term.order = int(order);
+        term.amplitude = get(t, row, "amplitude");
+        term.phase = degrees ? get(t, row, "phase_deg") * kPi / 180.0 : get(t, row, "phase");
+        terms.push_back(term);
+    }
+    if (const auto problem = checkFourierTerms(terms, bore))
+        throw std::runtime_error(fmt::format("{}:{}: {}{}", path, t.lines[problem->index], problem->message,
+                                             problem->first != problem->index
+                                                 ? fmt::format(" (first on line {})", t.lines[problem->first])
+                                                 : std::string()));
+    sortFourierTerms(terms);
+    return terms;
+}
+
+namespace {
+/// The distinct positions of sorted terms and, per position, its terms [first, last).
+std::vector<std::pair<std::size_t, std::size_t>> levels(const std::vector<FourierTerm>& terms) {
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    for (std::size_t i = 0; i < terms.size();) {
+        std::size_t j = i;
+        while (j < terms.size() && terms[j].z == terms[i].z) ++j;
+        out.emplace_back(i, j);
+        i = j;
+    }
+    return out;
+}
+
+double levelValue(const std::vector<FourierTerm>& terms, std::pair<std::size_t, std::size_t> level, double theta) {
+    double v = 0.0;
+    for (std::size_t i = level.first; i < level.second; ++i)
+        v += terms[i].amplitude * std::cos(terms[i].order * (theta - terms[i].phase));
+    return v;
+}
+}  // namespace
+
+double fourierDistortion(const std::vector<FourierTerm>& terms, double z, double theta) {
+    const auto lv = levels(terms);
+    if (lv.empty()) return 0.0;
+    const auto zOf = [&](std::size_t k) { return terms[lv[k].first].z; };
+    if (lv.size() == 1 || z <= zOf(0)) return levelValue(terms, lv.front(), theta);
+    if (z >= zOf(lv.size() - 1)) return levelValue(terms, lv.back(), theta);
+    std::size_t k = 0;
+    while (zOf(k + 1) < z) ++k;
+    const double t = (z - zOf(k)) / (zOf(k + 1) - zOf(k));
+    return (1.0 - t) * levelValue(terms, lv[k], theta) + t * levelValue(terms, lv[k + 1], theta);
+}
+
+LinerFieldTable fourierDistortionTable(const std::vector<FourierTerm>& terms, const lube::FilmGrid& grid,
+                                       std::string name) {
+    std::vector<FourierTerm> sorted = terms;
+    sortFourierTerms(sorted);
+    const auto lv = levels(sorted);
+    std::vector<double> z;
+    Eigen::MatrixXd values(Eigen::Index(lv.size()), grid.nTheta());
+    for (std::size_t k = 0; k < lv.size(); ++k) {
+        z.push_back(sorted[lv[k].first].z);
+        for (int j = 0; j < grid.nTheta(); ++j) values(Eigen::Index(k), j) = levelValue(sorted, lv[k], grid.theta(j));
+    }
+    return LinerFieldTable(std::move(z), std::move(values), std::move(name));
+}
+
+// ---- nodal FE result ----------------------------------------------------------------------
+
+namespace {
+
+/// The nodes of a .vtu result: the point-data array `field` is u (3 components) or u_r (1).
+std::vector<BoreNode> readVtuNodes(const std::string& path, const std::string& field) {
+    const VtuPointField f = readVtuPointField(path, field);
+    if (f.values.rows() != 3 && f.values.rows() != 1)
+        throw std::runtime_error(fmt::format("{}: point-data array '{}' has {} components; expected 3 (u_x, u_y, u_z) "
+                                             "or 1 (u_r)",
+                                             path, field, f.values.rows()));
+    std::vector<BoreNode> all(std::size_t(f.points.cols()));
+    for (Eigen::Index j = 0; j < f.points.cols(); ++j) {
+        BoreNode& n = all[std::size_t(j)];
+        n.x = f.points(0, j), n.y = f.points(1, j), n.z = f.points(2, j);
+        const double r = std::hypot(n.x, n.y);
+        if (f.values.rows() == 1)
+            n.ur = f.values(0, j);
+        else if (r > 0.0)
+            n.ur = (f.values(0, j) * n.x + f.values(1, j) * n.y) / r;  // u · (cos θ, sin θ, 0)
+    }
+    return all;
+}
+
+/// The nodes of a CSV result (header: x, y, z and ux, uy, uz or ur).
+std::vector<BoreNode> readCsvNodes(const std::string& path) {
+    const std::string help = "x, y, z (m, liner frame) and ux, uy, uz or ur (m)";
+    std::ifstream probe(path);
+    if (!probe) throw std::runtime_error(path + ": no such file or not readable");
+    // Which displacement columns: decided from the header (ur, or the three components).
+    bool radial = false;
+    {
+        std::string raw;
+        while (std::getline(probe, raw)) {
+            const std::string line = trim(raw);
+            if (line.empty() || line[0] == '#') continue;
+            for (const auto& f : fields(line)) radial = radial || lower(trim(f)) == "ur";
+            break;
+        }
+    }
+    const Table t = radial ? readTable(path, help, {{"x"}, {"y"}, {"z"}, {"ur"}})
+                           : readTable(path, help, {{"x"}, {"y"}, {"z"}, {"ux"}, {"uy"}, {"uz"}});
+    if (radial && (t.column.count("ux") || t.column.count("uy")))
+        throw std::runtime_error(path + ": give either ur or ux, uy, uz, not both");
+    std::vector<BoreNode> all;
+    all.reserve(t.rows.size());
+    for (const auto& row : t.rows) {
+        BoreNode n{get(t, row, "x"), get(t, row, "y"), get(t, row, "z"), 0.0};
+        const double r = std::hypot(n.x, n.y);
+        if (radial) {
+            n.ur = get(t, row, "ur");
+        } else if (r > 0.0) {
+            n.ur = (get(t, row, "ux") * n.x + get(t, row, "uy") * n.y) / r;  // u · (cos θ, sin θ, 0)
+        }
+        all.push_back(n);
+    }
+    return all;
+}
+
+}  // namespace
+
+bool isVtuFile(const std::string& path) {
+    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    return ext == ".vtu";
+}
+
+std::vector<BoreNode> readBoreNodes(const std::string& path, double bore, const std::string& field) {
+    const std::vector<BoreNode> all = isVtuFile(path) ? readVtuNodes(path, field) : readCsvNodes(path);
+    double rMin = std::numeric_limits<double>::infinity(), rMax = 0.0;
+    for (const BoreNode& n : all) {
+        rMin = std::min(rMin, std::hypot(n.x, n.y));
+        rMax = std::max(rMax, std::hypot(n.x, n.y));
+    }
+    const double R = 0.5 * bore;
+    if (std::abs(rMin - R) > 0.01 * R)
+        throw std::runtime_error(
+            fmt::format("{}: the innermost nodes lie at r = {:g} m (outermost {:g} m), but the bore radius is {:g} m "
+                        "(engine.bore/2): the coordinates must be in m, in the liner frame (cylinder axis = z)",
+                        path, rMin, rMax, R));
+    std::vector<BoreNode> bore_;
+    for (const BoreNode& n : all) {
+        if (std::hypot(n.x, n.y) > rMin + 1e-3 * R) continue;
+        if (std::abs(n.ur) > 0.01 * bore)
+            throw std::runtime_error(
+                fmt::format("{}: a radial displacement of {:g} m at ({:g}, {:g}, {:g}) m is above "
+                            "1% of the bore: check the units (m)",
+                            path, n.ur, n.x, n.y, n.z));
+        bore_.push_back(n);
+    }
+    if (bore_.size() < 24)
+        throw std::runtime_error(fmt::format("{}: only {} nodes on the bore (r ≤ {:g} m); at least 24 are needed", path,
+                                             bore_.size(), rMin + 1e-3 * R));
+    return bore_;
+}
+
+LinerFieldTable nodalDistortionTable(const std::vector<BoreNode>& nodes, const lube::FilmGrid& grid, double zMin,
+                                     double zMax, std::string name) {
+    constexpr int kNearest = 24;
+    const double R = grid.radius(), period = 2.0 * kPi * R;
+    if (int(nodes.size()) < kNearest)
+        throw std::runtime_error(
+            fmt::format("{}: at least {} bore nodes are needed, got {}", name, kNearest, nodes.size()));
+    // Nodes in the parameter plane (z, s = R θ), θ in [0, 2π), binned in axial strips of the
+    // typical node spacing and sorted by s within each strip.
+    double zLo = std::numeric_limits<double>::infinity(), zHi = -zLo;
+    for (const BoreNode& b : nodes) zLo = std::min(zLo, b.z), zHi = std::max(zHi, b.z);
+    const double tol = 1e-6;
+    if (zMin < zLo - tol || zMax > zHi + tol)
+        throw std::runtime_error(
+            fmt::format("{}: the bore nodes cover liner-frame z = {:g} … {:g} m, but the skirt "
+                        "sweeps {:g} … {:g} m between TDC and BDC",
+                        name, zLo, zHi, zMin, zMax));
+    const double spacing = std::sqrt((zHi - zLo + 1e-9) * period / double(nodes.size()));
+    const int strips = std::max(1, int((zHi - zLo) / spacing) + 1);
+    const auto stripOf = [&](double zz) { return std::clamp(int((zz - zLo) / spacing), 0, strips - 1); };
+    std::vector<double> z(nodes.size()), s(nodes.size()), u(nodes.size());
+    std::vector<std::size_t> order(nodes.size());
+    std::vector<std::pair<int, double>> key(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        double th = std::atan2(nodes[i].y, nodes[i].x);
+        if (th < 0.0) th += 2.0 * kPi;
+        key[i] = {stripOf(nodes[i].z), std::min(R * th, std::nextafter(period, 0.0))};
+        order[i] = i;
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+    std::vector<std::size_t> stripStart(std::size_t(strips) + 1, 0);
+    for (std::size_t r = 0; r < order.size(); ++r) {
+        const std::size_t i = order[r];
+        z[r] = nodes[i].z;
+        s[r] = key[i].second;
+        u[r] = nodes[i].ur;
+        ++stripStart[std::size_t(key[i].first) + 1];
+    }
+    for (int b = 0; b < strips; ++b) stripStart[std::size_t(b) + 1] += stripStart[std::size_t(b)];
+    // Liner-fixed rows.
+    const double dzGrid = grid.nAxial() > 1 ? grid.length() / (grid.nAxial() - 1) : 1e-3;
+    const double hMax = std::min(0.5 * dzGrid, 0.5e-3);
+    const int rows = std::max(2, int(std::ceil((zMax - zMin) / hMax)) + 1);
+    std::vector<double> zr(std::size_t(rows), zMin);
+    for (int k = 0; k < rows; ++k) zr[std::size_t(k)] = zMin + (zMax - zMin) * k / (rows - 1);
+    if (!(zMax > zMin)) zr.resize(1);
+    Eigen::MatrixXd values(Eigen::Index(zr.size()), grid.nTheta());
+    std::vector<std::pair<double, std::size_t>> cand;
+    Eigen::Matrix<double, Eigen::Dynamic, 6> P;
+    Eigen::VectorXd rhs;
+    // Candidates of strip b with s in [a, c] (a, c within [0, period)).
+    const auto gather = [&](int b, double a, double c, double zt, double st) {
+        const auto first = s.begin() + std::ptrdiff_t(stripStart[std::size_t(b)]);
+        const auto last = s.begin() + std::ptrdiff_t(stripStart[std::size_t(b) + 1]);
+        for (auto it = std::lower_bound(first, last, a); it != last && *it <= c; ++it) {
+            const std::size_t i = std::size_t(it - s.begin());
+            const double dz = z[i] - zt, ds = std::remainder(s[i] - st, period);
+            cand.emplace_back(std::sqrt(dz * dz + ds * ds), i);
+        }
+    };
+    for (std::size_t k = 0; k < zr.size(); ++k) {
+        for (int j = 0; j < grid.nTheta(); ++j) {
+            const double zt = zr[k], st = R * grid.theta(j);
+            // The kNearest nearest nodes: every node within w of the target lies in the box
+            // |dz|, |ds| ≤ w; grow w until the k-th nearest candidate lies within w.
+            for (double w = 2.8 * spacing;; w *= 1.5) {
+                cand.clear();
+                const int b0 = stripOf(zt - w), b1 = stripOf(zt + w);
+                for (int b = b0; b <= b1; ++b) {
+                    if (2.0 * w >= period) {
+                        gather(b, 0.0, period, zt, st);
+                    } else {
+                        const double a = std::fmod(st - w + period, period), c = a + 2.0 * w;
+                        if (c < period) {
+                            gather(b, a, c, zt, st);
+                        } else {
+                            gather(b, a, period, zt, st);
+                            gather(b, 0.0, c - period, zt, st);
+                        }
+                    }
+                }
+                const bool all = (zt - w <= zLo && zt + w >= zHi && 2.0 * w >= period);
+                if (int(cand.size()) >= kNearest) {
+                    std::nth_element(cand.begin(), cand.begin() + (kNearest - 1), cand.end());
+                    if (cand[kNearest - 1].first <= w || all) break;
+                } else if (all) {
+                    break;
+                }
+            }
+            cand.resize(std::min<std::size_t>(cand.size(), kNearest));
+            const double rho = std::max_element(cand.begin(), cand.end())->first * (1.0 + 1e-9) + 1e-300;
+            // Weighted least-squares quadratic in (dz, ds)/ρ; Wendland C² weight (1 − d)⁴ (4d + 1).
+            P.resize(Eigen::Index(cand.size()), 6);
+            rhs.resize(Eigen::Index(cand.size()));
+            for (std::size_t c = 0; c < cand.size(); ++c) {
+                const std::size_t i = cand[c].second;
+                const double a = (z[i] - zt) / rho, b = std::remainder(s[i] - st, period) / rho;
+                const double d = cand[c].first / rho;
+                const double wgt = std::sqrt(std::pow(1.0 - d, 4) * (4.0 * d + 1.0));
+                P.row(Eigen::Index(c)) << wgt, wgt * a, wgt * b, wgt * a * a, wgt * a * b, wgt * b * b;
+                rhs[Eigen::Index(c)] = wgt * u[i];
+            }
+            const Eigen::Matrix<double, 6, 1> coef = P.colPivHouseholderQr().solve(rhs);
+            values(Eigen::Index(k), j) = coef[0];
+        }
+    }
+    return LinerFieldTable(std::move(zr), std::move(values), std::move(name));
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,820 @@
+#include "cosim/coupling/PistonSimulation.hpp"
+
+#include "cosim/case/MemoryBudget.hpp"
+#include "cosim/coupling/RunProgress.hpp"
+
+#include "cosim/clearance/ClearanceTerms.hpp"
+#include "cosim/coupling/PistonSimulationState.hpp"
+#include "lube/FilmIntegrals.hpp"
+#include "cosim/mapping/FlexibleBodyLoader.hpp"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <optional>
+#include <stdexcept>
+
+#include "fem/Stopwatch.hpp"
+
+namespace flexehd::cosim {
+
+namespace {
+
+lube::Lubricant makeLubricant(const LubricantSpec& l) {
+    lube::Lubricant lub(l.viscosity, l.density);
+    if (l.barusAlpha > 0.0) lub.withBarus(l.barusAlpha);
+    return lub;
+}
+
+// Multigrid, redone by the active-set method where it stalls (ReynoldsOptions::fallback).
+lube::ReynoldsOptions filmSolverOptions(const LubricantSpec& l) {
+    lube::ReynoldsOptions o;
+    o.cavitation = lube::Cavitation::Reynolds;
+    o.solver = lube::SolverKind::Multigrid;
+    o.fallback = lube::SolverKind::ActiveSet;
+    o.cavitationPressure = l.cavitationPressure;
+    o.control.tolerance = 1e-8;
+    return o;
+}
+
+// The smallest film thickness over the nodes that carry film (m; < 0: the surfaces overlap).
+double minimumGap(const lube::FilmGrid& g, const Eigen::VectorXd& h) {
+    double m = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < g.size(); ++k)
+        if (g.kind(k) != lube::NodeKind::Void) m = std::min(m, h[k]);
+    return m;
+}
+
+double wrap720(double deg) {
+    double w = std::fmod(deg, 720.0);
+    return w < 0.0 ? w + 720.0 : w;
+}
+
+// The crank angle 0–720° (0 = gas-exchange TDC) written for a point of `cycle`: the continuous
+// angle reduced by whole cycles. Cycle k spans time.start_deg + 720 (k − 1) … + 720, so the
+// reduced angle runs from start_deg to 720 and on from 0 to start_deg; it is 720 (not 0) at the
+// end of a cycle that starts at 0.
+double cycleCrankDeg(double continuousDeg, int cycle) {
+    const double a = continuousDeg - 720.0 * (cycle - 1);
+    return a > 720.0 + 1e-9 ? a - 720.0 : a;
+}
+
+std::string gridKey(const EngineCase& c) { return c.path.empty() ? std::string("grid") : c.path + ": grid"; }
+
+/// The case, once its film grid is known to fit into memory (before any of it is allocated).
+const EngineCase& withinMemory(const EngineCase& c) {
+    requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, 0);
+    return c;
+}
+}  // namespace
+
+PistonSimulation::PistonSimulation(const EngineCase& c)
+    : case_(withinMemory(c)),
+      kin_(c.engine.stroke, c.engine.rodLength, c.engine.pinOffset, c.engine.speedRpm),
+      dyn_(c.piston, c.engine),
+      pressure_(c.cylinderPressure),
+      film_(c.engine, c.piston, c.grid),
+      solver_(film_.grid(), makeLubricant(c.lubricant), filmSolverOptions(c.lubricant)) {
+    const fem::Stopwatch t0;
+    if (c.coupling.elasticSqueeze && c.coupling.method == CouplingMethod::Partitioned)
+        throw std::invalid_argument(
+            "coupling: the elastic deformation rate in the squeeze term needs coupling.method: newton; set "
+            "coupling.elastic_squeeze: false for the partitioned iteration (docs/coupling.md section 3)");
+    if (c.contact.compositeModulus > 0.0) {
+        contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
+        foundation_.emplace(c.contact.hardContactStiffness > 0.0
+                                ? c.contact.hardContactStiffness
+                                : lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
+                                                                          c.contact.coatingThickness));
+    }
+    if (c.pistonBody.model == BodyModel::Flexible) {
+        piston_ = loadFlexibleSurface(c, c.pistonBody, "piston", FlexibleSurface::Side::Piston, film_.grid());
+        mp_ = piston_->modes();
+    }
+    if (c.linerBody.model == BodyModel::Flexible) {
+        // The grid slides over the liner between BDC and TDC (plus a margin of two grid rows).
+        const double lo = std::min(linerOffset(180.0), linerOffset(0.0));
+        const double hi = std::max(linerOffset(180.0), linerOffset(0.0));
+        const double margin = 2.0 * film_.grid().length() / (film_.grid().nAxial() - 1);
+        liner_ = loadFlexibleSurface(c, c.linerBody, "liner", FlexibleSurface::Side::Liner, film_.grid(),
+                                     lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
+        ml_ = liner_->modes();
+    }
+    if (mp_ + ml_ > 0) requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, mp_ + ml_);
+    if (c.coupling.response == ElasticResponse::Dynamic) {
+        if (piston_)
+            pistonDynamics_ = std::make_unique<modal::HeldModalDynamics>(piston_->body(), piston_->heldInterfaces());
+        if (liner_)
+            linerDynamics_ = std::make_unique<modal::HeldModalDynamics>(liner_->body(), liner_->heldInterfaces());
+    }
+    if (ClearanceTerms::wanted(c)) {
+        // Liner offsets the grid visits: the extremes of the crank-slider over a revolution.
+        double lo = linerOffset(0.0), hi = lo;
+        for (int k = 1; k <= 1440; ++k) {
+            const double s = linerOffset(0.25 * k);
+            lo = std::min(lo, s);
+            hi = std::max(hi, s);
+        }
+        clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
+    }
+    if (c.coupling.method == CouplingMethod::Partitioned && (piston_ || liner_)) {
+        // A unit of e or β moves the film by up to 1 or the skirt reach; a modal coordinate by the
+        // largest entry of its film-change shape (the liner's at its mid-stroke offset).
+        const double reach = std::max(c.piston.skirtTop, -c.piston.skirtBottom);
+        partitionedScale_.resize(2 + mp_ + ml_);
+        partitionedScale_.head<2>() << 1.0, reach;
+        Eigen::MatrixXd Psi;
+        if (piston_) {
+            piston_->filmChangeShapes(0.0, Psi);
+            partitionedScale_.segment(2, mp_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+        }
+        if (liner_) {
+            liner_->filmChangeShapes(linerOffset(90.0), Psi);
+            partitionedScale_.tail(ml_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+        }
+        for (Eigen::Index j = 0; j < partitionedScale_.size(); ++j)
+            partitionedScale_[j] = (partitionedScale_[j] > 0.0 ? partitionedScale_[j] : 1.0) / c.piston.clearance;
+    }
+    if (c.coupling.method == CouplingMethod::Newton && (piston_ || liner_)) {
+        linearization_ = std::make_unique<lube::FilmLinearization>(film_.grid());
+        newtonParts_ = std::make_unique<CoupledJacobianParts>();
+        if (piston_) piston_->filmChangeShapes(0.0, psiPiston_);
+    }
+    stats_.timings.setup = t0.seconds();
+}
+
+PistonSimulation::~PistonSimulation() = default;
+
+void PistonSimulation::contactPressure(double h, double& asperity, double& hard) const {
+    asperity = contact_->pressure(std::max(h, 0.0));
+    hard = foundation_->pressure(h);
+}
+
+double PistonSimulation::contactSlope(double h) const {
+    if (h < 0.0) return foundation_->pressureSlope(h);
+    return contact_->pressureSlope(h);
+}
+
+double PistonSimulation::linerOffset(double crankDeg) const {
+    return -case_.engine.pinTdcDepth - (kin_.tdcPosition() - kin_.at(crankDeg).position);
+}
+
+ClearanceRange PistonSimulation::centredClearance(double crankDeg) const {
+    Eigen::VectorXd h;
+    film_.rigidThickness(0.0, 0.0, h);
+    if (clearance_) clearance_->add(linerOffset(crankDeg), h);
+    const lube::FilmGrid& g = film_.grid();
+    ClearanceRange r{std::numeric_limits<double>::infinity(), 0.0, -std::numeric_limits<double>::infinity()};
+    int n = 0;
+    for (int k = 0; k < g.size(); ++k)
+        if (g.kind(k) != lube::NodeKind::Void) {
+            r.min = std::min(r.min, h[k]);
+            r.max = std::max(r.max, h[k]);
+            r.mean += h[k];
+            ++n;
+        }
+    r.mean /= std::max(n, 1);
+    return r;
+}
+
+// Good Broyden update of the kept inverse Jacobian H for the update s and the residual change
+// dF it caused, in the norm of the film-thickness change of s (Sherman–Morrison):
+//   J₊ = J + (dF − J s) wᵀ/(wᵀ s),  w = D⁻² s  ⇔  H₊ = H + (s − H dF)(wᵀ H)/(wᵀ H dF).
+void PistonSimulation::broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF) {
+    const Eigen::VectorXd w = s.cwiseProduct(unknownScale_).cwiseProduct(unknownScale_);
+    const Eigen::VectorXd HdF = newtonInverse_ * dF;
+    const double denom = w.dot(HdF);
+    if (!(std::abs(denom) > 1e-12 * w.norm() * HdF.norm())) return;  // update undefined: keep H
+    const Eigen::RowVectorXd wH = w.transpose() * newtonInverse_;
+    newtonInverse_.noalias() += (s - HdF) * (wH / denom);
+}
+
+PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, const Eigen::Vector2d& x,
+                                                        const Eigen::VectorXd& y, bool structure) {
+    Evaluation ev;
+    fem::Stopwatch t0;
+    film_.rigidThickness(x[0], x[1], ev.hRigid);
+    if (clearance_) clearance_->add(ctx.offset, ev.hRigid);  // distortion, thermal (seed eq. 2)
+    ev.h = ev.hRigid;
+    const bool elasticSqueeze = case_.coupling.elasticSqueeze;
+    const double rigidSeconds = t0.seconds();
+    if (piston_ || liner_) {
+        // Elastic Δh of y at this offset; the Jacobian's evaluations reuse the pass's (y frozen).
+        t0.restart();
+        if (!(elasticOffset_ == ctx.offset && elasticY_.size() == y.size() && elasticY_ == y)) {
+            if (piston_) piston_->filmChange(y.head(mp_), 0.0, pistonDh_);
+            if (liner_) liner_->filmChange(y.tail(ml_), ctx.offset, linerDh_);
+            elasticY_ = y;
+            elasticOffset_ = ctx.offset;
+        }
+        if (piston_) ev.h += pistonDh_;
+        if (liner_) ev.h += linerDh_;
+        const double dt = t0.seconds();
+        stats_.timings.mapping += dt;
+        stats_.timings.structure += dt;
+    }
+    stats_.timings.film += rigidSeconds;
+    t0.restart();
+    const lube::FilmGrid& g = film_.grid();
+    // Where the surfaces touch or overlap, the contact pressure of the unfloored h (asperities,
+    // and the coating's hard contact below h = 0) carries the load; the Reynolds equation sees h
+    // floored at a fluid film of 0.05σ (0.01 c_r without contact). Counted in `floored`; the
+    // outputs show the unfloored thickness (ev.hTotal, ev.minGap).
+    const double floor = contact_ ? 0.05 * case_.contact.sigma : 0.01 * case_.piston.clearance;
+    ev.hTotal = ev.h;
+    ev.pc = Eigen::VectorXd::Zero(g.size());
+    ev.pcHard = Eigen::VectorXd::Zero(g.size());
+    ev.minGap = std::numeric_limits<double>::infinity();
+    ev.hardForce = 0.0;
+    for (int k = 0; k < g.size(); ++k) {
+        if (g.kind(k) == lube::NodeKind::Void) continue;
+        ev.minGap = std::min(ev.minGap, ev.h[k]);
+        if (contact_) {
+            double asperity = 0.0, hard = 0.0;
+            contactPressure(ev.h[k], asperity, hard);
+            ev.pc[k] = asperity + hard;
+            if (hard > 0.0) {
+                ev.pcHard[k] = hard;
+                ev.hardForce -= hard * g.surfaceArea(k) * std::cos(g.theta(g.thetaIndex(k)));
+            }
+        }
+        if (ev.h[k] < floor) {
+            ev.h[k] = floor;
+            ++ev.floored;
+        }
+    }
+    const State& n = *ctx.now;
+    const State& b = *ctx.before;
+    // Squeeze term: BDF2 of the whole (unfloored) film thickness with coupling.elastic_squeeze,
+    // else of the rigid film thickness only (docs/coupling.md §3: with the elastic rate the
+    // partitioned coupling has a gain ∝ 1/Δt and does not converge; it needs the Newton method).
+    if (elasticSqueeze)
+        ev.dhdt = (ctx.a0 * ev.hTotal + ctx.a1 * n.hTotal + ctx.a2 * b.hTotal) / ctx.dt;
+    else
+        ev.dhdt = (ctx.a0 * ev.hRigid + ctx.a1 * n.hRigid + ctx.a2 * b.hRigid) / ctx.dt;
+    lube::FilmState fs;
+    fs.h = ev.h;
+    fs.dhdt = ev.dhdt;
+    fs.outer.axial = -ctx.crank.velocity;  // the liner slides past the piston-fixed grid
+    const Eigen::VectorXd* warm = n.p.size() == g.size() ? &n.p : nullptr;
+    lube::ReynoldsResult solved = solver_.solve(fs, warm);
+    ev.p = std::move(solved.pressure);
+    if (solved.fellBack) ++stats_.fallbackSolves;
+    ++stats_.filmSolves;
+    lube::FilmIntegralOptions io;
+    io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
+    io.cavitationPressure = case_.lubricant.cavitationPressure;
+    io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
+    io.contactPressure = contact_ ? &ev.pc : nullptr;
+    ev.loads = lube::integrateFilm(g, fs, solver_.lubricant(), ev.p, io);
+    const Eigen::Vector3d F = ev.loads.totalForce();
+    ev.action = {F.x(), F.z(), ev.loads.moment.y()};
+    stats_.timings.film += t0.seconds();
+
+    ev.vel = (ctx.a0 * x + ctx.a1 * n.x + ctx.a2 * b.x) / ctx.dt;
+    ev.acc = (ctx.a0 * ev.vel + ctx.a1 * n.v + ctx.a2 * b.v) / ctx.dt;
+    const Eigen::Vector2d Ma = dyn_.mass(ctx.crank) * ev.acc;
+    ev.residual = Ma - dyn_.force(ctx.crank, ctx.gas, ev.action);
+    // Scale of each equation: the sum of its terms' magnitudes (rod, film, gas, inertia).
+    const double A = std::abs(ctx.crank.acceleration) + 9.81;
+    const double mTot = case_.piston.mass + case_.piston.pinMass;
+    ev.scale[0] = std::abs(Ma[0]) + std::abs(ev.action.fx) +
+                  std::abs(ctx.crank.tanRod) * (mTot * A + std::abs(ctx.gas) + std::abs(ev.action.fz));
+    ev.scale[1] = std::abs(Ma[1]) + std::abs(ev.action.my) + std::abs(case_.engine.pinOffset * ctx.gas) +
+                  case_.piston.mass * std::abs(case_.piston.cgX) * A;
+    if (structure && (piston_ || liner_)) {
+        t0.restart();
+        const Eigen::VectorXd ptot = ev.p + ev.pc;
+        ev.Hy.resize(mp_ + ml_);
+        Eigen::VectorXd fp, fl, q;
+        if (piston_) piston_->modalForce(ptot, 0.0, fp);  // load mapping: Φᵀ A p
+        if (liner_) liner_->modalForce(ptot, ctx.offset, fl);
+        const double tMap = t0.seconds();
+        t0.restart();
+        if (piston_) {  // modal update: q = C f, or the BDF2 step of the modal dynamics
+            if (pistonDynamics_)
+                pistonDynamics_->respond(fp, ctx.hq.head(mp_), ctx.hv.head(mp_), q);
+            else
+                piston_->quasiStatic(fp, q);
+            ev.Hy.head(mp_) = q;
+        }
+        if (liner_) {
+            if (linerDynamics_)
+                linerDynamics_->respond(fl, ctx.hq.tail(ml_), ctx.hv.tail(ml_), q);
+            else
+                liner_->quasiStatic(fl, q);
+            ev.Hy.tail(ml_) = q;
+        }
+        const double tModal = t0.seconds();
+        stats_.timings.mapping += tMap;
+        stats_.timings.modal += tModal;
+        stats_.timings.structure += tMap + tModal;
+    }
+    return ev;
+}
+
+bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
+                               std::string& failure) {
+    Context ctx;
+    ctx.crankDeg = s.crankDeg + dtDeg;
+    ctx.dt = dtDeg * kin_.secondsPerDegree();
+    if (s.dt > 0.0) {  // BDF2 with variable step ratio ω
+        const double w = ctx.dt / s.dt;
+        ctx.a0 = (1.0 + 2.0 * w) / (1.0 + w);
+        ctx.a1 = -(1.0 + w);
+        ctx.a2 = w * w / (1.0 + w);
+    }
+    ctx.crank = kin_.at(ctx.crankDeg);
+    ctx.gas = dyn_.gasForce(pressure_(wrap720(ctx.crankDeg)));
+    ctx.offset = liner_ || clearance_ ? linerOffset(ctx.crankDeg) : 0.0;
+    ctx.now = &s;
+    ctx.before = &prev;
+    const double dt = ctx.dt;
+    if (pistonDynamics_ || linerDynamics_) {
+        // BDF2 histories of the modal coordinates (prev starts as a copy of the initial state;
+        // a2 = 0 on the first step).
+        ctx.hq = ctx.a1 * s.y + ctx.a2 * prev.y;
+        ctx.hv = ctx.a1 * s.w + ctx.a2 * prev.w;
+        if (pistonDynamics_) pistonDynamics_->setStep(ctx.a0, dt);
+        if (linerDynamics_) linerDynamics_->setStep(ctx.a0, dt);
+    }
+    Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
+    // The modal coordinates start from their linear extrapolation over the last step (at high
+    // speed y moves by hundreds of coupling tolerances per step; from y_n the first Newton passes
+    // go through the strongly nonlinear film law).
+    Eigen::VectorXd y = s.y;
+    if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.dt / s.dt) * (s.y - prev.y);
+    const bool flexible = piston_ || liner_;
+    CouplingAccelerator acc(case_.coupling.acceleration);
+    // Newton tolerances and finite-difference steps from the clearance c: 1e-5 c on the
+    // lateral shift and on the tilt times the skirt reach (not from the local error tolerances,
+    // which may be loose when the step size is fixed by time.max_step_deg).
+    const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+    const Eigen::Vector2d tol(case_.piston.clearance, case_.piston.clearance / reach);
+    // Force floor of the residual test: the reciprocating inertia force m r ω² of the engine.
+    const double forceFloor = (case_.piston.mass + case_.piston.pinMass) * kin_.crankRadius() * kin_.omega() * kin_.omega();
+    const double couplingTol = case_.coupling.tolerance * case_.piston.clearance;
+    const int maxIt = case_.coupling.maxIterations;
+    Eigen::Vector2d lastX = x, lastR = Eigen::Vector2d::Zero();
+    Eigen::VectorXd dh, dh2;
+    iterations = 0;
+    failure.clear();
+    // Why the iteration failed, for the diagnosis when the step size runs out.
+    auto fail = [&](const std::string& why) {
+        failure = fmt::format("{} (after {} film solves in this attempt)", why, iterations);
+        return false;
+    };
+    // coupling.method newton: the last accepted iterate (its measure, unknowns and residual)
+    double acceptedMeasure = std::numeric_limits<double>::infinity(), acceptedMerit = acceptedMeasure;
+    Eigen::Vector2d acceptedX = x;
+    Eigen::VectorXd acceptedY = y, acceptedF;
+    int backtracks = 0;
+    bool freshJacobian = false, regularize = false, revisit = false;
+    for (int it = 0; it < maxIt; ++it) {
+        try {
+            ev = evaluate(ctx, x, y, true);
+        } catch (const std::runtime_error&) {
+            return fail("a film solve failed");  // the caller shortens the step
+        }
+        ++iterations;
+        double couplingRes = 0.0;
+        if (flexible) {
+            const Eigen::VectorXd d = ev.Hy - y;
+            const fem::Stopwatch t0;
+            if (piston_) {
+                piston_->filmChange(d.head(mp_), 0.0, dh);
+                couplingRes = dh.cwiseAbs().maxCoeff();
+            }
+            if (liner_) {
+                liner_->filmChange(d.tail(ml_), ctx.offset, dh2);
+                couplingRes = std::max(couplingRes, dh2.cwiseAbs().maxCoeff());
+            }
+            const double tMap = t0.seconds();
+            stats_.timings.mapping += tMap;
+            stats_.timings.structure += tMap;
+        }
+        Eigen::VectorXd dz;  // coupling.method newton: the update of (e, β, y)
+        bool resolved = false;  // coupling.method newton: converged to the unknowns' resolution
+        if (linearization_) {
+            // The residual in units of its tolerances (≤ 1: converged).
+            const double measure = std::max({couplingRes / couplingTol,
+                                             std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
+                                             std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach))});
+            Eigen::VectorXd F(2 + mp_ + ml_);
+            F.head<2>() = ev.residual;
+            F.tail(mp_ + ml_) = y - ev.Hy;
+            // Line search: a pass whose merit (coupledMerit) is worse than at the last accepted
+            // iterate goes back there — to linearise anew when the Jacobian was a kept one, else to
+            // halve the update (at most 5 times; the film and contact laws are strongly nonlinear
+            // where the cavitated or contact set changes).
+            Eigen::VectorXd rScale = residualScale(ev, forceFloor, reach, couplingTol);
+            if (acceptedMerit < std::numeric_limits<double>::infinity() && coupledMerit(F, rScale) > acceptedMerit) {
+                if (!freshJacobian && !revisit) {
+                    // The kept Jacobian led astray: back to the accepted iterate, linearised anew.
+                    x = acceptedX;
+                    y = acceptedY;
+                    newtonParts_->valid = false;
+                    revisit = true;
+                    continue;
+                }
+                if (backtracks < 5) {
+                    ++backtracks;
+                    x = acceptedX + 0.5 * (x - acceptedX);
+                    y = acceptedY + 0.5 * (y - acceptedY);
+                    continue;
+                }
+            }
+            revisit = false;
+            const double rate = ctx.a0 / ctx.dt;
+            // A new linearisation when a pass did not halve the measure (or had to backtrack with a
+            // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
+            // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
+            if (backtracks > 0 && freshJacobian) regularize = true;  // see below
+            const bool relinearize = !newtonParts_->valid || measure > 0.5 * acceptedMeasure || backtracks > 0;
+            if (!newtonParts_->valid) acceptedMeasure = std::numeric_limits<double>::infinity();
+            if (relinearize) {
+                try {
+                    linearizeCoupled(ctx, x, ev);
+                } catch (const std::runtime_error& e) {
+                    newtonParts_->valid = false;
+                    return fail(std::string("the film's linearisation for the coupled Newton step failed: ") + e.what());
+                }
+                ++stats_.jacobians;
+            }
+            if (relinearize || rate != newtonRate_) {
+                if (!formCoupledJacobian(ctx, x, y, ev, tol, iterations))
+                    return fail("a film solve of the Jacobian's difference columns failed");
+                newtonRate_ = rate;
+            } else if (acceptedF.size()) {
+                Eigen::VectorXd step(2 + mp_ + ml_);
+                step.head<2>() = x - acceptedX;
+                step.tail(mp_ + ml_) = y - acceptedY;
+                broydenUpdate(step, F - acceptedF);
+            }
+            freshJacobian = relinearize;
+            backtracks = 0;
+            rScale = residualScale(ev, forceFloor, reach, couplingTol);  // the Jacobian's unknown scales
+            acceptedMeasure = measure;
+            acceptedMerit = coupledMerit(F, rScale);
+            acceptedX = x;
+            acceptedY = y;
+            acceptedF = F;
+            // After a failed line search with a fresh Jacobian the step is nearly singular: some
+            // combination of motion and modes changes the residual by less than its tolerance per
+            // clearance of film change (a soft elastic mode against a film of nearly equal and
+            // opposite stiffness, quasi-static). Then the Levenberg–Marquardt step in units of the
+            // tolerances (residual) and of the clearance (film-thickness change of each unknown),
+            // dz = −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, leaves such directions alone.
+            dz = -newtonInverse_ * F;
+            // Resolved to the unknowns' resolution: where the film is thin and the step short, the
+            // squeeze film makes the motion so stiff that a change of e, β by 1e-5 c_r (the
+            // resolution the motion test asks of them) changes its residual by more than the
+            // tolerance; then, with the modal equations met, a fresh Jacobian's full Newton update
+            // below that resolution and the motion residual within 10× its tolerance end the
+            // iteration (docs/coupling.md §1).
+            const double motionMeasure =
+                std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
+                         std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach)));
+            resolved = relinearize && couplingRes <= couplingTol && motionMeasure <= 10.0 &&
+                       dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * case_.piston.clearance &&
+                       std::abs(dz[0]) <= 1e-5 * tol[0] && std::abs(dz[1]) <= 1e-5 * tol[1];
+            if (regularize) dz = levenbergMarquardtStep(F, rScale);
+            if (!dz.allFinite()) return fail("the Newton update of the coupled step is not finite");
+            // Damped step: no update moves the film thickness anywhere by more than a quarter of the
+            // clearance (the film and contact laws are far from linear over such a distance).
+            const double largest = dz.cwiseAbs().dot(unknownScale_);  // ≥ max |Δh|
+            if (largest > 0.25 * case_.piston.clearance) dz *= 0.25 * case_.piston.clearance / largest;
+        } else if (it == 0) {
+            // Finite-difference Jacobian of the motion residual (modal coordinates frozen).
+            const Eigen::Vector2d delta = 1e-5 * tol;
+            for (int i = 0; i < 2; ++i) {
+                Eigen::Vector2d xp = x;
+                xp[i] += delta[i];
+                Evaluation e2;
+                try {
+                    e2 = evaluate(ctx, xp, y, false);
+                } catch (const std::runtime_error&) {
+                    return fail("a film solve of the finite-difference Jacobian failed");
+                }
+                ++iterations;
+                jacobian_.col(i) = (e2.residual - ev.residual) / delta[i];
+            }
+            ++stats_.jacobians;
+        } else if (!flexible) {
+            // Broyden update of the rigid motion's Jacobian. With flexible bodies the Jacobian is
+            // held through the step (a chord iteration): the joint quasi-Newton update below
+            // models the fixed-point map from its past passes, which must be one and the same map.
+            const Eigen::Vector2d dx = x - lastX, dr = ev.residual - lastR;
+            const double d2 = dx.cwiseQuotient(tol).squaredNorm();
+            if (d2 > 0.0) {
+                const Eigen::Vector2d w = dx.cwiseQuotient(tol).cwiseQuotient(tol);
+                jacobian_ += (dr - jacobian_ * dx) * w.transpose() / d2;  // Broyden, scaled
+            }
+        }
+        const Eigen::Vector2d dx = dz.size() ? Eigen::Vector2d(dz.head<2>()) : Eigen::Vector2d(-jacobian_.partialPivLu().solve(ev.residual));
+        if (!dx.allFinite()) return fail("the Newton update is not finite");
+        const bool motionDone = std::abs(dx[0]) <= 1e-5 * tol[0] && std::abs(dx[1]) <= 1e-5 * tol[1] &&
+                                std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + forceFloor) &&
+                                std::abs(ev.residual[1]) <= 1e-4 * (ev.scale[1] + forceFloor * reach);
+        if ((motionDone && couplingRes <= couplingTol) || resolved) {
+            if (resolved && !(motionDone && couplingRes <= couplingTol)) ++stats_.resolvedSteps;
+            out.crankDeg = ctx.crankDeg;
+            out.time = s.time + dt;
+            out.dt = dt;
+            out.x = x;
+            out.v = ev.vel;
+            out.a = ev.acc;
+            out.h = ev.h;
+            out.hRigid = ev.hRigid;
+            out.p = ev.p;
+            out.y = y;
+            out.hTotal = ev.hTotal;
+            if (pistonDynamics_ || linerDynamics_) out.w = (ctx.a0 * y + ctx.hq) / dt;  // ẏ of BDF2
+            return true;
+        }
+        lastX = x;
+        lastR = ev.residual;
+        if (dz.size()) {
+            x += dx;
+            y += dz.tail(mp_ + ml_);
+        } else if (flexible) {
+            // One fixed-point map of the joint unknowns z = (e, β, y): the chord step of the motion
+            // with y held and the modal response H with x held, accelerated together by IQN-ILS /
+            // Aitken in units of clearances of film change (docs/coupling.md §1: accelerating y
+            // alone leaves the motion lagging the modes, which diverges from 3000 rpm on).
+            const fem::Stopwatch t0;
+            const Eigen::Index m = mp_ + ml_;
+            Eigen::VectorXd z(2 + m), Gz(2 + m);
+            z << x, y;
+            Gz << x + dx, ev.Hy;
+            const Eigen::VectorXd zn = acc.next(z.cwiseProduct(partitionedScale_), Gz.cwiseProduct(partitionedScale_))
+                                           .cwiseQuotient(partitionedScale_);
+            x = zn.head<2>();
+            y = zn.tail(m);
+            const double tModal = t0.seconds();
+            stats_.timings.modal += tModal;
+            stats_.timings.structure += tModal;
+        } else {
+            x += dx;
+        }
+    }
+    failure = fmt::format("the Newton/coupling iteration did not converge in coupling.max_iterations = {} passes "
+                          "({} film solves, Jacobian included)", maxIt, iterations);
+    return false;
+}
+
+StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cycle, double stepDeg,
+                                    int iterations) const {
+    StepRecord r;
+    const CrankState k = kin_.at(s.crankDeg);
+    r.cylinderPressure = pressure_(wrap720(s.crankDeg));
+    const double gas = dyn_.gasForce(r.cylinderPressure);
+    r.cycle = cycle;
+    r.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
+    r.time = s.time;
+    r.lateral = s.x[0];
+    r.tilt = s.x[1];
+    r.lateralVelocity = s.v[0];
+    r.tiltRate = s.v[1];
+    r.sideForce = dyn_.sideForce(k, gas, ev.action, s.a[1]);
+    r.filmForce = ev.loads.pressureForce.x() + ev.loads.shearForce.x() + ev.loads.boundaryFrictionForce.x();
+    r.filmMoment = ev.loads.moment.y();
+    r.contactForce = ev.loads.contactForce.x();
+    r.hardContactForce = ev.hardForce;
+    r.frictionForce = ev.loads.frictionForce().z();
+    r.linerHydrodynamicFriction = ev.loads.outerShearForce.z();
+    r.linerBoundaryFriction = -ev.loads.boundaryFrictionForce.z();
+    r.dissipatedPower = ev.loads.dissipatedPower();
+    r.boundaryFrictionPower = ev.loads.boundaryFrictionPower;
+    r.minFilm = ev.minGap;  // unfloored: < 0 where the surfaces overlap
+    r.maxPressure = ev.p.size() ? ev.p.maxCoeff() : 0.0;
+    if (piston_ || liner_) {
+        const lube::FilmGrid& g = film_.grid();
+        for (int k = 0; k < g.size(); ++k)
+            if (g.kind(k) != lube::NodeKind::Void)
+                r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(ev.hTotal[k] - ev.hRigid[k]));
+    }
+    r.couplingIterations = iterations;
+    r.stepDeg = stepDeg;
+    return r;
+}
+
+Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cycle) const {
+    Snapshot sn;
+    const lube::FilmGrid& g = film_.grid();
+    const CrankState k = kin_.at(s.crankDeg);
+    sn.cycle = cycle;
+    sn.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
+    sn.continuousDeg = s.crankDeg;
+    sn.pinHeight = k.position;
+    sn.linerOffset = linerOffset(s.crankDeg);
+    sn.lateral = s.x[0];
+    sn.tilt = s.x[1];
+    sn.pressure = ev.p;
+    sn.filmThickness = ev.hTotal;  // unfloored: < 0 where the surfaces overlap
+    sn.contactPressure = ev.pc;
+    sn.cavitation = Eigen::VectorXd::Zero(g.size());
+    sn.shearStress = Eigen::VectorXd::Zero(g.size());
+    const double eta = solver_.lubricant().referenceViscosity();
+    for (int k2 = 0; k2 < g.size(); ++k2) {
+        if (g.kind(k2) == lube::NodeKind::Void) continue;
+        if (g.kind(k2) == lube::NodeKind::Film && ev.p[k2] <= case_.lubricant.cavitationPressure) sn.cavitation[k2] = 1.0;
+        // τ_z on the piston = η (V_liner − V_piston)/h − (h/2) ∂p/∂z (central differences).
+        const int i = g.axialIndex(k2), j = g.thetaIndex(k2);
+        const int i0 = std::max(0, i - 1), i1 = std::min(g.nAxial() - 1, i + 1);
+        const double dpdz = (ev.p[g.index(i1, j)] - ev.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
+        const double phi = sn.cavitation[k2] > 0.0 ? 0.0 : 1.0;  // no Couette shear where cavitated
+        sn.shearStress[k2] = phi * eta * (-k.velocity) / ev.h[k2] - 0.5 * ev.h[k2] * dpdz;
+    }
+    if (piston_) sn.pistonModal = s.y.head(mp_);
+    if (liner_) sn.linerModal = s.y.tail(ml_);
+    return sn;
+}
+
+std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
+    const fem::Stopwatch tRun;
+    const TimeSpec& T = case_.time;
+    State s;
+    s.crankDeg = T.startDeg;
+    film_.rigidThickness(0.0, 0.0, s.h);
+    if (clearance_) {
+        clearance_->add(linerOffset(s.crankDeg), s.h);
+        if (cb.progress) {
+            cb.progress("film thickness: " + clearance_->summary());
+            std::string line = "centred clearance (min / mean / max over the skirt):";
+            for (const auto& [name, deg] : {std::pair{"TDC", 0.0}, {"mid-stroke", 90.0}, {"BDC", 180.0}}) {
+                const ClearanceRange r = centredClearance(deg);
+                line += fmt::format(" {} {:.1f} / {:.1f} / {:.1f} um{}", name, r.min * 1e6, r.mean * 1e6, r.max * 1e6,
+                                    deg < 180.0 ? ";" : "");
+            }
+            cb.progress(line);
+        }
+    }
+    s.hRigid = s.h;
+    s.hTotal = s.h;  // undeformed bodies at the start
+    s.y = Eigen::VectorXd::Zero(mp_ + ml_);
+    if (pistonDynamics_ || linerDynamics_) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
+    State prev = s;
+    double dtDeg = std::min(T.maxStepDeg, 0.1);
+    const double every = case_.output.vtkEveryDeg;
+    const double skirtLength = case_.piston.skirtTop - case_.piston.skirtBottom;
+    std::vector<StepRecord> previousCycle, cycleRecords;
+    // Degrees since the start of the cycle of each record (monotonic, unlike the written crank
+    // angle when time.start_deg > 0): the abscissa of the periodicity comparison.
+    std::vector<double> previousSince, cycleSince;
+    Evaluation ev, lastEv;
+    bool haveLast = false;
+    stats_ = RunStatistics{.timings = stats_.timings};
+    stats_.minStepDeg = T.maxStepDeg;
+    double worstMappingDiff = 0.0, largestFilmForce = 0.0;
+    const double filmT0 = stats_.timings.film, structT0 = stats_.timings.structure;
+    RunProgress progress(T.maxCycles, T.periodicityTolerance);
+    for (int cycle = 1; cycle <= T.maxCycles; ++cycle) {
+        const double cycleStart = T.startDeg + 720.0 * (cycle - 1);
+        const double cycleEnd = spanDeg > 0.0 ? std::min(cycleStart + 720.0, T.startDeg + spanDeg) : cycleStart + 720.0;
+        cycleRecords.clear();
+        cycleSince.clear();
+        progress.startCycle(cycle, tRun.seconds());
+        int snapshots = 0;
+        auto takeSnapshot = [&](const State& at, const Evaluation& e) {
+            ++snapshots;
+            if (cb.onSnapshot) cb.onSnapshot(snapshot(at, e, cycle));
+        };
+        if (haveLast) {
+            // The boundary point opens the new cycle's records too (its metrics and its 0° snapshot);
+            // it is the last cycle's final step, written to the history once, there.
+            StepRecord r = record(s, lastEv, cycle, 0.0, 0);
+            cycleRecords.push_back(r);
+            cycleSince.push_back(s.crankDeg - cycleStart);
+            if (every > 0.0) takeSnapshot(s, lastEv);
+        }
+        double nextProgress = cycleStart;
+        while (s.crankDeg < cycleEnd - 1e-9) {
+            double step = std::min(dtDeg, cycleEnd - s.crankDeg);
+            bool atSnapshot = false;
+            if (every > 0.0) {
+                // The next snapshot angle; those closer than time.min_step_deg to the present state
+                // are skipped (landing on them would need a step below the smallest allowed).
+                double next = cycleStart + every * (std::floor((s.crankDeg - cycleStart) / every + 1e-9) + 1.0);
+                if (next - s.crankDeg < T.minStepDeg) next += every * std::ceil((T.minStepDeg - (next - s.crankDeg)) / every);
+                if (next - s.crankDeg <= step + 1e-12) {
+                    step = next - s.crankDeg;
+                    atSnapshot = true;
+                }
+            }
+            if (std::abs(s.crankDeg + step - cycleEnd) < 1e-9) atSnapshot = every > 0.0;
+            State n;
+            int iterations = 0;
+            std::string failure;
+            const bool ok = advance(s, prev, step, n, ev, iterations, failure);
+            double ratio = 0.0;
+            if (ok) {
+                const double dt = step * kin_.secondsPerDegree();
+                const Eigen::Vector2d pred = s.x + dt * s.v + 0.5 * dt * dt * s.a;
+                const Eigen::Vector2d err = 0.5 * (n.x - pred).cwiseAbs();
+                ratio = std::max(err[0] / T.lateralTolerance, err[1] / T.tiltTolerance);
+            }
+            if (!ok || ratio > 1.0) {
+                ++stats_.rejectedSteps;
+                dtDeg = ok ? step * std::max(0.2, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 0.25 * step;
+                if (dtDeg < T.minStepDeg) {
+                    // A folded quasi-static equilibrium is no matter of step size or iterations.
+                    const std::string advice =
+                        !ok && foldedJacobians_ > 0
+                            ? "The skirt's quasi-static equilibrium in the film is lost here: on some combination of "
+                              "its modes the film's stiffness (the wedge of the sliding liner) exceeds the "
+                              "structure's (det(I - dH/dy) < 0 in the step's Jacobian), and without the elastic "
+                              "deformation rate in the squeeze term nothing resists that deformation. Set "
+                              "coupling.elastic_squeeze: true (docs/coupling.md section 3)."
+                        : !ok && (piston_ || liner_) && case_.coupling.method == CouplingMethod::Partitioned
+                            ? "With coupling.method: partitioned the squeeze term holds the rigid rate only; where "
+                              "the iteration fails at high speed (on the example engine from 4000 rpm on, early in "
+                              "the intake stroke) the skirt's quasi-static equilibrium in the film is lost, as with "
+                              "the rigid rate in coupling.method: newton (docs/coupling.md section 1). "
+                              "coupling.method: newton with coupling.elastic_squeeze: true (the defaults) runs the "
+                              "whole map."
+                            : "Try a smaller time.max_step_deg, a finer film grid, more coupling.max_iterations, or "
+                              "check the loads and clearances of the case.";
+                    throw std::runtime_error(fmt::format(
+                        "the time step fell below time.min_step_deg = {:g} deg at crank angle {:.4f} deg of cycle {}: {}. "
+                        "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
+                        T.minStepDeg, wrap720(s.crankDeg), cycle,
+                        ok ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure,
+                        s.x[0] * 1e6, s.x[1] * 1e3, minimumGap(film_.grid(), s.hTotal) * 1e6, advice));
+                }
+                continue;
+            }
+            if (!n.x.allFinite() || std::abs(n.x[0]) > 20.0 * case_.piston.clearance ||
+                std::abs(n.x[1]) * skirtLength > 40.0 * case_.piston.clearance)
+                throw std::runtime_error(fmt::format(
+                    "the secondary motion diverged at crank angle {:.3f} deg of cycle {}: lateral shift {:.3g} m, "
+                    "tilt {:.3g} rad (clearance {:.3g} m). Is asperity contact (contact.composite_modulus) on?",
+                    wrap720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance));
+            ++stats_.steps;
+            foldedJacobians_ = 0;
+            stats_.maxIterations = std::max(stats_.maxIterations, iterations);
+            stats_.minStepDeg = std::min(stats_.minStepDeg, step);
+            if (piston_) {
+                const Eigen::Matrix<double, 6, 1> r =
+                    piston_->resultant(ev.p + ev.pc, 0.0, Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0));
+                const Eigen::Vector3d film = ev.loads.pressureForce + ev.loads.contactForce;
+                worstMappingDiff = std::max(worstMappingDiff, (r.head<3>() - film).norm());
+                largestFilmForce = std::max(largestFilmForce, film.norm());
+                stats_.worstMappingError = worstMappingDiff / std::max(largestFilmForce, 1e-300);
+            }
+            prev = std::move(s);
+            s = std::move(n);
+            lastEv = ev;
+            haveLast = true;
+            StepRecord rec = record(s, ev, cycle, step, iterations);
+            cycleRecords.push_back(rec);
+            cycleSince.push_back(s.crankDeg - cycleStart);
+            if (cb.onStep) cb.onStep(rec);
+            if (atSnapshot) takeSnapshot(s, ev);
+            // Next step: grow with the error ratio, from the unclipped step size.
+            const double grow = ratio > 0.0 ? std::min(2.0, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 2.0;
+            dtDeg = std::min(T.maxStepDeg, std::max(step, std::min(dtDeg, T.maxStepDeg)) * grow);
+            if (cb.progress && s.crankDeg >= nextProgress) {
+                nextProgress += 30.0;
+                cb.progress(progress.stepLine(cycleCrankDeg(s.crankDeg, cycle), (s.crankDeg - cycleStart) / (cycleEnd - cycleStart),
+                                              tRun.seconds(), s.x[0], s.x[1], iterations, step));
+            }
+        }
+        stats_.cycles = cycle;
+        // Periodicity: eccentricities at the skirt ends, this cycle vs the previous one.
+        if (!previousCycle.empty()) {
+            double err = 0.0;
+            std::size_t j = 0;
+            for (std::size_t i = 0; i < cycleRecords.size(); ++i) {
+                const StepRecord& r = cycleRecords[i];
+                const double at = cycleSince[i];
+                while (j + 1 < previousCycle.size() && previousSince[j + 1] < at) ++j;
+                const std::size_t j1 = std::min(j + 1, previousCycle.size() - 1);
+                const StepRecord& a = previousCycle[j];
+                const StepRecord& b = previousCycle[j1];
+                const double sa = previousSince[j], sb = previousSince[j1];
+                const double w = sb > sa ? std::clamp((at - sa) / (sb - sa), 0.0, 1.0) : 0.0;
+                const double e0 = a.lateral + w * (b.lateral - a.lateral);
+                const double t0 = a.tilt + w * (b.tilt - a.tilt);
+                err = std::max({err, std::abs(r.lateral - e0) + std::abs(r.tilt - t0) * std::max(case_.piston.skirtTop, -case_.piston.skirtBottom)});
+            }
+            stats_.periodicityError = err;
+            stats_.periodic = err <= T.periodicityTolerance;
+        }
+        if (cb.progress)
+            cb.progress(progress.cycleDoneLine(tRun.seconds(), previousCycle.empty() ? std::nullopt
+                                                                                   : std::optional(stats_.periodicityError)));
+        const bool last = stats_.periodic || cycle == T.maxCycles || (spanDeg > 0.0 && cycleEnd >= T.startDeg + spanDeg - 1e-9);
+        if (cb.onCycleEnd) cb.onCycleEnd(cycle, snapshots, last);
+        if (last) break;
+        previousCycle = cycleRecords;
+        previousSince = cycleSince;
+    }
+    stats_.timings.dynamics = tRun.seconds() - (stats_.timings.film - filmT0) - (stats_.timings.structure - structT0);
+    return cycleRecords;
+}
+
+}  // namespace flexehd::cosim

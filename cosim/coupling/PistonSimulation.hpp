@@ -1,0 +1,191 @@
+#pragma once
+// PistonSimulation: the co-simulation master (docs/coupling.md, docs/dynamics.md). Each time
+// step solves, at the new crank angle, the piston's secondary motion (PistonDynamics, BDF2 in
+// time) together with the film (lube::ReynoldsSolver with asperity contact) and the elastic
+// response of the flexible bodies (FlexibleSurface), until
+//   * the Newton update of (e, β) is below 1e-5 of the clearance (the tilt times the skirt's
+//     reach from the pin), and the residual of each equation of motion below 1e-4 of the sum
+//     of its terms' magnitudes plus the reciprocating inertia force m r ω² (times the reach
+//     for the moment), and
+//   * the coupling residual, the film-thickness change max|Δh(H(y)) − Δh(y)| of the modal
+//     coordinates y, is below coupling.tolerance × clearance,
+// with one film solve per iteration: Newton (finite-difference Jacobian, Broyden updates) on the
+// motion and IQN-ILS or Aitken on y in the same loop. The bodies answer the film load
+// quasi-statically, or (bodies.response: dynamic) with their modal inertia and damping,
+// integrated by the same BDF2 as the motion (modal::HeldModalDynamics). The step size is controlled by the local
+// error estimate of the predictor–corrector pair; cycles repeat until periodic.
+
+#include "cosim/coupling/CouplingAccelerator.hpp"
+#include "cosim/engine/CrankKinematics.hpp"
+#include "cosim/engine/CylinderPressure.hpp"
+#include "cosim/case/EngineCase.hpp"
+#include "cosim/mapping/FlexibleSurface.hpp"
+#include "cosim/engine/PistonDynamics.hpp"
+#include "cosim/engine/SkirtFilm.hpp"
+#include "cosim/coupling/StepRecord.hpp"
+#include "lube/FilmLinearization.hpp"
+#include "lube/ElasticFoundation.hpp"
+#include "lube/GreenwoodTripp.hpp"
+#include "lube/ReynoldsSolver.hpp"
+#include "modal/HeldModalDynamics.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flexehd::cosim {
+
+class ClearanceTerms;
+
+/// Film and body state at one written crank angle (the VTK snapshots).
+struct Snapshot {
+    int cycle = 0;
+    double crankDeg = 0.0;       ///< °, the crank angle 0–720 (0 = gas-exchange TDC), as in StepRecord
+    double continuousDeg = 0.0;  ///< °, the continuous crank angle: time.start_deg + degrees turned
+    double pinHeight = 0.0;      ///< m, cylinder-frame z of the pin axis (crank axis at 0)
+    double linerOffset = 0.0;    ///< m, liner-frame z of the piston frame's origin
+    double lateral = 0.0, tilt = 0.0;
+    Eigen::VectorXd pressure, filmThickness, contactPressure, shearStress, cavitation;
+    Eigen::VectorXd pistonModal, linerModal;  ///< modal coordinates (empty for rigid bodies)
+};
+
+struct Timings {
+    double setup = 0.0;      ///< s: bodies, mappings, compliance
+    double film = 0.0;       ///< s: Reynolds solves, contact, film integrals
+    double structure = 0.0;  ///< s: modal response and deformation mapping (mapping + modal)
+    double mapping = 0.0;    ///< s, of structure: load and deformation mapping products (Φᵀ A p, D Φ y)
+    double modal = 0.0;      ///< s, of structure: quasi-static response C f and the coupling accelerator
+    double dynamics = 0.0;   ///< s: everything else in the step loop
+};
+
+struct RunStatistics {
+    int cycles = 0;
+    bool periodic = false;
+    double periodicityError = 0.0;  ///< m, last cycle vs the one before (see docs/coupling.md)
+    long steps = 0, rejectedSteps = 0, filmSolves = 0, jacobians = 0;
+    long fallbackSolves = 0;        ///< film solves redone by the active-set solver (multigrid failed)
+    long resolvedSteps = 0;         ///< steps ended by the resolution test of the coupled Newton (docs/coupling.md §1)
+    int maxIterations = 0;          ///< most film solves in one accepted step
+    /// max over the steps of |mapped resultant − film normal force| on the flexible piston,
+    /// relative to the largest film normal force of the run
+    double worstMappingError = 0.0;
+    double minStepDeg = 0.0;        ///< smallest accepted step
+    Timings timings;
+};
+
+/// The film thickness with the piston centred (no lateral shift, no tilt) and no elastic
+/// deformation — clearance + profile + ovality + bore distortion + thermal growth, i.e. the hot
+/// running clearance when the case names a thermal file — over the skirt's film nodes.
+struct ClearanceRange {
+    double min = 0.0, mean = 0.0, max = 0.0;  ///< m
+};
+
+struct SimulationCallbacks {
+    std::function<void(const StepRecord&)> onStep;      ///< every accepted step
+    /// every output.vtkEveryDeg of every cycle, as it is taken (nothing is held back)
+    std::function<void(const Snapshot&)> onSnapshot;
+    /// after each cycle: its number, the snapshots it took, and whether it is the run's last
+    std::function<void(int cycle, int snapshots, bool last)> onCycleEnd;
+    std::function<void(const std::string&)> progress;   ///< human-readable progress lines
+};
+
+class PistonSimulation {
+public:
+    /// Builds the grid, solver and the flexible bodies named by the case (reads their files).
+    explicit PistonSimulation(const EngineCase& c);
+    ~PistonSimulation();
+
+    /// Runs the cycles; records of the final cycle are returned. Throws std::runtime_error with a
+    /// diagnosis when the step size falls below time.min_step_deg.
+    /// spanDeg > 0 stops after that many crank degrees (tests, studies of one event).
+    std::vector<StepRecord> run(const SimulationCallbacks& callbacks = {}, double spanDeg = 0.0);
+
+    const RunStatistics& statistics() const { return stats_; }
+    const SkirtFilm& film() const { return film_; }
+    const CrankKinematics& kinematics() const { return kin_; }
+    const PistonDynamics& dynamics() const { return dyn_; }
+    const FlexibleSurface* piston() const { return piston_.get(); }
+    const FlexibleSurface* liner() const { return liner_.get(); }
+    /// Bore distortion and thermal terms of the film thickness (null when the case has none).
+    const ClearanceTerms* clearance() const { return clearance_.get(); }
+    /// Liner-frame z of the piston frame's origin at the crank angle.
+    double linerOffset(double crankDeg) const;
+    /// The centred, undeformed film thickness at the crank angle's piston position (see
+    /// ClearanceRange; the liner terms depend on where the piston is in the bore).
+    ClearanceRange centredClearance(double crankDeg) const;
+
+private:
+    struct State;
+    struct Context;
+    struct Evaluation;
+    Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
+    bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
+                 std::string& failure);
+    struct CoupledJacobianParts;
+    /// coupling.method newton: linearises (motion residual, y − H(y)) in (e, β, y) at the
+    /// evaluation into the parts of CoupledJacobianParts (CoupledNewton.cpp, docs/coupling.md §1, §3)
+    void linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
+    void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
+    /// Forms the coupled Jacobian at the context's step size (its (e, β) columns by differences of
+    /// two full evaluations, counted in filmSolves) and its inverse; false if a film solve failed.
+    bool formCoupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                             const Evaluation& ev, const Eigen::Vector2d& tol, int& filmSolves);
+    /// The tolerance of each residual row: motion rows 1e-4 (scale + force floor), modal rows the
+    /// coupling tolerance over the largest film change of a unit of the mode.
+    Eigen::VectorXd residualScale(const Evaluation& ev, double forceFloor, double reach, double couplingTol) const;
+    /// The line search's merit ½‖F / residualScale‖² (∞ before the first Jacobian).
+    static double coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale);
+    /// −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, residual in tolerance units, unknowns in clearances of film change.
+    Eigen::VectorXd levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) const;
+    /// The Jacobian at the context's step size from the last linearisation's parts.
+    Eigen::MatrixXd coupledJacobian(const Context& ctx);
+    /// Contact pressure at the film thickness h (unfloored): Greenwood–Tripp asperity pressure of
+    /// max(h, 0), and the hard contact of the coating below h = 0 (docs/lube.md §5).
+    void contactPressure(double h, double& asperity, double& hard) const;
+    /// ∂(asperity + hard)/∂h (Pa/m).
+    double contactSlope(double h) const;
+    StepRecord record(const State& s, const Evaluation& ev, int cycle, double stepDeg, int iterations) const;
+    Snapshot snapshot(const State& s, const Evaluation& ev, int cycle) const;
+
+    EngineCase case_;
+    CrankKinematics kin_;
+    PistonDynamics dyn_;
+    CylinderPressure pressure_;
+    SkirtFilm film_;
+    lube::ReynoldsSolver solver_;  // multigrid, the active set where it stalls
+    std::optional<lube::GreenwoodTripp> contact_;
+    std::optional<lube::ElasticFoundation> foundation_;  // hard contact below h = 0 (with contact_)
+    std::unique_ptr<FlexibleSurface> piston_, liner_;
+    std::unique_ptr<ClearanceTerms> clearance_;  // added to h_rigid at the liner offset
+    // bodies.response: dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
+    std::unique_ptr<modal::HeldModalDynamics> pistonDynamics_, linerDynamics_;
+    int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
+    // Elastic Δh of the last y and liner offset evaluated (reused by the Jacobian's evaluations).
+    Eigen::VectorXd elasticY_, pistonDh_, linerDh_;
+    double elasticOffset_ = std::numeric_limits<double>::quiet_NaN();
+    // coupling.method newton: the film's linearisation and the film-change shapes Ψ (grid × modes)
+    std::unique_ptr<lube::FilmLinearization> linearization_;
+    Eigen::MatrixXd psiPiston_, psiLiner_;
+    Eigen::MatrixXd jacobianDh_;     // ∂h/∂(e, β, y): grid × (2 + modes), kept between Jacobians
+    std::unique_ptr<CoupledJacobianParts> newtonParts_;  // the last linearisation
+    Eigen::MatrixXd newtonJacobian_; // the coupled Jacobian as formed (before Broyden updates)
+    Eigen::MatrixXd newtonInverse_;  // inverse of the coupled Jacobian (Broyden-updated within a step)
+    Eigen::VectorXd unknownScale_;   // m of film-thickness change per unit of each unknown
+    // coupling.method partitioned with flexible bodies: units of (e, β, y) in clearances of film
+    // change, for the quasi-Newton acceleration of the joint fixed-point map (docs/coupling.md §1)
+    Eigen::VectorXd partitionedScale_;
+    int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
+    double newtonRate_ = -1.0;       // the a0/Δt it was formed for
+    double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();
+    Eigen::Matrix2d jacobian_;
+    bool haveJacobian_ = false;
+    RunStatistics stats_;
+};
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,26 @@
+#include "cosim/io/PvdWriter.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+#include "fem/AtomicFile.hpp"
+
+namespace flexehd::cosim {
+
+void PvdCollection::write(const std::string& path) const {
+    fem::writeAtomically(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp);
+        if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
+        out << "<?xml version=\"1.0\"?>\n"
+               "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+               "  <Collection>\n"
+            << std::setprecision(17);
+        for (const auto& e : entries_)
+            out << "    <DataSet timestep=\"" << e.time << "\" group=\"\" part=\"0\" file=\"" << e.file << "\"/>\n";
+        out << "  </Collection>\n</VTKFile>\n";
+        if (!out.flush()) throw std::runtime_error("error writing '" + path + "'");
+    });
+}
+
+}  // namespace flexehd::cosim

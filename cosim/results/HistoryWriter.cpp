@@ -1,0 +1,193 @@
+#include "cosim/results/HistoryWriter.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <iterator>
+#include <stdexcept>
+#include <string_view>
+
+#include <fmt/format.h>
+
+namespace flexehd::cosim {
+namespace {
+
+// One column of history.csv: its header name and the StepRecord member it holds (exactly one
+// of `real`, `integer` is set). The single table drives the header, append() and read().
+struct Column {
+    const char* name;
+    double StepRecord::*real;
+    int StepRecord::*integer;
+};
+
+const std::vector<Column>& table() {
+    static const std::vector<Column> t{
+        {"cycle", nullptr, &StepRecord::cycle},
+        {"crank_deg", &StepRecord::crankDeg, nullptr},
+        {"time_s", &StepRecord::time, nullptr},
+        {"lateral_m", &StepRecord::lateral, nullptr},
+        {"tilt_rad", &StepRecord::tilt, nullptr},
+        {"lateral_velocity_m_per_s", &StepRecord::lateralVelocity, nullptr},
+        {"tilt_rate_rad_per_s", &StepRecord::tiltRate, nullptr},
+        {"side_force_n", &StepRecord::sideForce, nullptr},
+        {"film_force_n", &StepRecord::filmForce, nullptr},
+        {"film_moment_n_m", &StepRecord::filmMoment, nullptr},
+        {"contact_force_n", &StepRecord::contactForce, nullptr},
+        {"hard_contact_force_n", &StepRecord::hardContactForce, nullptr},
+        {"friction_force_n", &StepRecord::frictionForce, nullptr},
+        {"liner_friction_hydrodynamic_n", &StepRecord::linerHydrodynamicFriction, nullptr},
+        {"liner_friction_boundary_n", &StepRecord::linerBoundaryFriction, nullptr},
+        {"dissipated_power_w", &StepRecord::dissipatedPower, nullptr},
+        {"boundary_friction_power_w", &StepRecord::boundaryFrictionPower, nullptr},
+        {"cylinder_pressure_pa", &StepRecord::cylinderPressure, nullptr},
+        {"min_film_m", &StepRecord::minFilm, nullptr},
+        {"max_pressure_pa", &StepRecord::maxPressure, nullptr},
+        {"elastic_film_change_m", &StepRecord::elasticFilmChange, nullptr},
+        {"coupling_iterations", nullptr, &StepRecord::couplingIterations},
+        {"step_deg", &StepRecord::stepDeg, nullptr},
+    };
+    return t;
+}
+
+constexpr const char* kComments =
+    "# flexehd history: one line per accepted time step; columns, units and signs in "
+    "docs/results-format.md\n"
+    "# units: SI, named by each column's suffix (_m, _s, _rad, _m_per_s, _rad_per_s, _n, _n_m, _w, _pa); "
+    "crank_deg and step_deg in degrees, crank_deg 0-720 within the cycle (0 = gas-exchange TDC, "
+    "360 = firing TDC); max_pressure_pa is gauge (relative to the crankcase), cylinder_pressure_pa absolute\n"
+    "# signs: forces and moments act ON the piston (liner_friction_* ON the liner), cylinder frame (+x major thrust side, +z towards "
+    "the head, y pin axis); lateral > 0 towards +x; tilt about +y, > 0 = top of the piston towards "
+    "+x; moments about the pin axis (+y)\n";
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+
+std::vector<std::string_view> split(std::string_view line) {
+    std::vector<std::string_view> fields;
+    for (;;) {
+        const auto comma = line.find(',');
+        fields.push_back(trim(line.substr(0, comma)));
+        if (comma == std::string_view::npos) return fields;
+        line.remove_prefix(comma + 1);
+    }
+}
+
+template <typename T>
+bool parse(std::string_view text, T& value) {
+    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+    if (text.empty()) return false;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return ec == std::errc() && end == text.data() + text.size();
+}
+
+}  // namespace
+
+const std::vector<std::string>& HistoryWriter::columns() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n;
+        for (const auto& c : table()) n.emplace_back(c.name);
+        return n;
+    }();
+    return names;
+}
+
+HistoryWriter::HistoryWriter(const std::string& path) : path_(path), out_(path, std::ios::out | std::ios::trunc) {
+    if (!out_) throw std::runtime_error("cannot open '" + path + "' for writing");
+    // The column names first, then the comments: numpy.genfromtxt(names=True) takes its names
+    // from the first line and skips '#' lines after it, pandas.read_csv(comment='#') skips them.
+    std::string header;
+    for (std::size_t c = 0; c < table().size(); ++c) {
+        if (c) header += ',';
+        header += table()[c].name;
+    }
+    header += '\n';
+    header += kComments;
+    out_ << header;
+    if (!out_.flush()) throw std::runtime_error("error writing '" + path + "'");
+}
+
+void HistoryWriter::append(const StepRecord& r) {
+    // Check everything first: a refused record leaves no partial line behind.
+    for (const auto& c : table())
+        if (c.real && !std::isfinite(r.*c.real))
+            throw std::runtime_error(fmt::format("'{}': column '{}' is {} at crank angle {:.9g}° (cycle {}); "
+                                                 "history rows must be finite",
+                                                 path_, c.name, r.*c.real, r.crankDeg, r.cycle));
+    std::string line;
+    line.reserve(320);
+    auto out = std::back_inserter(line);
+    for (std::size_t k = 0; k < table().size(); ++k) {
+        const auto& c = table()[k];
+        if (k) line += ',';
+        if (c.real)
+            fmt::format_to(out, "{:.{}g}", r.*c.real, kSignificantDigits);
+        else
+            fmt::format_to(out, "{}", r.*c.integer);
+    }
+    line += '\n';
+    out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+    if (!out_.flush()) throw std::runtime_error("error writing '" + path_ + "'");
+}
+
+std::vector<StepRecord> HistoryWriter::read(const std::string& path, bool* partialLastLine) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot open history file '" + path + "'");
+    if (partialLastLine) *partialLastLine = false;
+
+    std::vector<StepRecord> records;
+    std::vector<int> columnOf;  // file column of each table() entry
+    std::size_t fileColumns = 0;
+    std::string line;
+    int lineNumber = 0;
+    while (std::getline(in, line)) {
+        ++lineNumber;
+        // getline hits EOF before a newline only on an unterminated last line: a run killed
+        // in the middle of writing it.
+        const bool complete = !in.eof();
+        const std::string_view text = trim(line);
+        if (text.empty() || text.front() == '#') continue;
+        if (!complete) {
+            if (columnOf.empty())
+                throw std::runtime_error("'" + path + "': the header line (line " + std::to_string(lineNumber) +
+                                         ") is incomplete");
+            if (partialLastLine) *partialLastLine = true;
+            break;
+        }
+        const auto fields = split(text);
+        if (columnOf.empty()) {  // the header
+            fileColumns = fields.size();
+            for (const auto& c : table()) {
+                int found = -1;
+                for (std::size_t f = 0; f < fields.size(); ++f)
+                    if (fields[f] == c.name) found = static_cast<int>(f);
+                if (found < 0)
+                    throw std::runtime_error("'" + path + "': header (line " + std::to_string(lineNumber) +
+                                             ") has no column '" + c.name + "'; is this a flexehd history.csv?");
+                columnOf.push_back(found);
+            }
+            continue;
+        }
+        if (fields.size() != fileColumns)
+            throw std::runtime_error("'" + path + "' line " + std::to_string(lineNumber) + ": " +
+                                     std::to_string(fields.size()) + " values, the header has " +
+                                     std::to_string(fileColumns) + " columns");
+        StepRecord r;
+        for (std::size_t k = 0; k < table().size(); ++k) {
+            const auto& c = table()[k];
+            const std::string_view value = fields[static_cast<std::size_t>(columnOf[k])];
+            const bool ok = c.real ? parse(value, r.*c.real) && std::isfinite(r.*c.real) : parse(value, r.*c.integer);
+            if (!ok)
+                throw std::runtime_error("'" + path + "' line " + std::to_string(lineNumber) + ", column '" + c.name +
+                                         "': '" + std::string(value) + "' is not " +
+                                         (c.real ? "a finite number" : "an integer"));
+        }
+        records.push_back(r);
+    }
+    if (in.bad()) throw std::runtime_error("error reading '" + path + "'");
+    if (columnOf.empty()) throw std::runtime_error("'" + path + "' has no header line (empty history file)");
+    return records;
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,46 @@
+#pragma once
+// HistoryWriter: history.csv, one StepRecord per line (docs/results-format.md).
+//
+// The file starts with a few '#' comment lines (units, sign conventions), then a header line
+// whose column names carry the unit (`crank_deg`, `lateral_m`, `side_force_n`, …), then one
+// line per accepted step, printed with 9 significant digits. Each line is written whole and
+// flushed, so a run killed between steps leaves a valid CSV of complete lines. Non-finite
+// values are refused (std::runtime_error naming the column and the crank angle): the file
+// never holds NaN or Inf.
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cosim/coupling/StepRecord.hpp"
+
+namespace flexehd::cosim {
+
+class HistoryWriter {
+public:
+    /// Creates (or truncates) `path` and writes the comment and header lines.
+    /// Throws std::runtime_error naming the file if it cannot be written.
+    explicit HistoryWriter(const std::string& path);
+
+    /// Writes one line and flushes it. Throws std::runtime_error naming the column and the
+    /// crank angle if a value is NaN or Inf (nothing is written then), or naming the file
+    /// on an I/O error.
+    void append(const StepRecord& record);
+
+    /// Column names of the header line, in file order.
+    static const std::vector<std::string>& columns();
+    /// Significant digits of the printed values (a round trip is exact to this precision).
+    static constexpr int kSignificantDigits = 9;
+
+    /// Reads a history file: '#' and blank lines are skipped, columns are matched by their
+    /// header name (order free, unknown columns ignored, a missing one is an error). A last
+    /// line without its terminating newline is the partial line of a run killed while
+    /// writing: it is dropped (and `*partialLastLine` set when given). Any other malformed
+    /// line throws std::runtime_error naming the file, the line number and the column.
+    static std::vector<StepRecord> read(const std::string& path, bool* partialLastLine = nullptr);
+
+private:
+    std::string path_;
+    std::ofstream out_;
+};
+
+}  // namespace flexehd::cosim

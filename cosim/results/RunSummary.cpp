@@ -1,0 +1,142 @@
+#include "cosim/results/RunSummary.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <numbers>
+#include <optional>
+
+#include "cosim/results/CycleMetrics.hpp"
+
+namespace flexehd::cosim {
+namespace {
+
+using Json = nlohmann::json;
+
+struct Source {
+    const RunSummaryInput& in;
+    std::optional<CycleMetrics> m;  // with two records or more
+    const RunStatistics& st() const { return in.sim.statistics(); }
+};
+
+struct Entry {
+    const char* key;  // dotted for nested objects
+    std::function<Json(const Source&)> value;  // null: not written
+};
+
+// A cycle figure: written when the last cycle has two records or more.
+template <class F>
+Entry metric(const char* key, F f) {
+    return {key, [f](const Source& s) { return s.m ? Json(f(*s.m)) : Json(); }};
+}
+
+// The undeformed film with the piston centred (the hot running clearance with a thermal file)
+// at TDC, mid-stroke and BDC: centred_clearance_m.{tdc,mid_stroke,bdc}.{min,mean,max}.
+void addCentredClearance(std::vector<Entry>& table) {
+    static const char* const keys[3][3] = {
+        {"centred_clearance_m.tdc.min", "centred_clearance_m.tdc.mean", "centred_clearance_m.tdc.max"},
+        {"centred_clearance_m.mid_stroke.min", "centred_clearance_m.mid_stroke.mean", "centred_clearance_m.mid_stroke.max"},
+        {"centred_clearance_m.bdc.min", "centred_clearance_m.bdc.mean", "centred_clearance_m.bdc.max"}};
+    const double crankDeg[3] = {0.0, 90.0, 180.0};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            table.push_back({keys[i][j], [deg = crankDeg[i], j](const Source& s) {
+                                 const ClearanceRange r = s.in.sim.centredClearance(deg);
+                                 return Json(j == 0 ? r.min : j == 1 ? r.mean : r.max);
+                             }});
+}
+
+const char* bodyModel(BodyModel m) { return m == BodyModel::Flexible ? "flexible" : "rigid"; }
+
+const std::vector<Entry>& entries() {
+    static const std::vector<Entry> table = [] {
+    std::vector<Entry> t = {
+        {"status", [](const Source& s) { return Json(s.in.status); }},
+        {"message", [](const Source& s) { return s.in.message.empty() ? Json() : Json(s.in.message); }},
+        {"case", [](const Source& s) { return Json(s.in.c.path); }},
+        {"name", [](const Source& s) { return Json(s.in.c.name); }},
+        {"bodies.piston", [](const Source& s) { return Json(bodyModel(s.in.c.pistonBody.model)); }},
+        {"bodies.liner", [](const Source& s) { return Json(bodyModel(s.in.c.linerBody.model)); }},
+        {"cycle", [](const Source& s) { return s.m ? Json(s.in.cycle.back().cycle) : Json(); }},
+        metric("friction_power_mean_w", [](const CycleMetrics& m) { return m.frictionPowerMean; }),
+        metric("boundary_friction_power_mean_w", [](const CycleMetrics& m) { return m.boundaryFrictionPowerMean; }),
+        metric("friction_energy_per_cycle_j", [](const CycleMetrics& m) { return m.frictionEnergy; }),
+        metric("fmep_pa", [](const CycleMetrics& m) { return m.fmep; }),
+        metric("slap_kinetic_energy_max_j", [](const CycleMetrics& m) { return m.slapEnergyMax; }),
+        metric("slap_kinetic_energy_max_crank_deg", [](const CycleMetrics& m) { return m.slapEnergyDeg; }),
+        metric("lateral_min_m", [](const CycleMetrics& m) { return m.lateralMin; }),
+        metric("lateral_max_m", [](const CycleMetrics& m) { return m.lateralMax; }),
+        metric("tilt_min_rad", [](const CycleMetrics& m) { return m.tiltMin; }),
+        metric("tilt_max_rad", [](const CycleMetrics& m) { return m.tiltMax; }),
+        metric("min_film_m", [](const CycleMetrics& m) { return m.minFilm; }),
+        metric("min_film_crank_deg", [](const CycleMetrics& m) { return m.minFilmDeg; }),
+        metric("max_pressure_pa", [](const CycleMetrics& m) { return m.maxPressure; }),
+        metric("contact_force_max_n", [](const CycleMetrics& m) { return m.contactForceMax; }),
+        metric("hard_contact_force_max_n", [](const CycleMetrics& m) { return m.hardContactForceMax; }),
+        metric("side_force_max_n", [](const CycleMetrics& m) { return m.sideForceMax; }),
+        {"cycles", [](const Source& s) { return Json(s.st().cycles); }},
+        {"periodic", [](const Source& s) { return Json(s.st().periodic); }},
+        {"periodicity_error_m", [](const Source& s) { return Json(s.st().periodicityError); }},
+        {"periodicity_tolerance_m", [](const Source& s) { return Json(s.in.c.time.periodicityTolerance); }},
+        {"iterations.steps", [](const Source& s) { return Json(s.st().steps); }},
+        {"iterations.rejected_steps", [](const Source& s) { return Json(s.st().rejectedSteps); }},
+        {"iterations.film_solves", [](const Source& s) { return Json(s.st().filmSolves); }},
+        {"iterations.jacobians", [](const Source& s) { return Json(s.st().jacobians); }},
+        {"iterations.fallback_film_solves", [](const Source& s) { return Json(s.st().fallbackSolves); }},
+        {"iterations.resolved_steps", [](const Source& s) { return Json(s.st().resolvedSteps); }},
+        {"iterations.film_solves_per_step_mean",
+         [](const Source& s) {
+             const RunStatistics& st = s.st();
+             return Json(st.steps > 0 ? double(st.filmSolves) / double(st.steps) : 0.0);
+         }},
+        {"iterations.film_solves_per_step_max", [](const Source& s) { return Json(s.st().maxIterations); }},
+        {"iterations.smallest_step_deg", [](const Source& s) { return Json(s.st().minStepDeg); }},
+        {"load_mapping_conservation_error_max", [](const Source& s) { return Json(s.st().worstMappingError); }},
+        {"timings_s.setup", [](const Source& s) { return Json(s.st().timings.setup); }},
+        {"timings_s.film", [](const Source& s) { return Json(s.st().timings.film); }},
+        {"timings_s.structure", [](const Source& s) { return Json(s.st().timings.structure); }},
+        {"timings_s.mapping", [](const Source& s) { return Json(s.st().timings.mapping); }},
+        {"timings_s.modal", [](const Source& s) { return Json(s.st().timings.modal); }},
+        {"timings_s.dynamics",
+         [](const Source& s) { return Json(std::max(0.0, s.st().timings.dynamics - s.in.outputInRun)); }},
+        {"timings_s.output", [](const Source& s) { return Json(s.in.outputSeconds + s.in.outputInRun); }},
+        {"timings_s.total", [](const Source& s) { return Json(s.in.totalSeconds); }},
+    };
+    addCentredClearance(t);
+    return t;
+    }();
+    return table;
+}
+
+// "a.b" → JSON pointer "/a/b".
+Json::json_pointer pointer(const std::string& dotted) {
+    std::string p = "/" + dotted;
+    std::replace(p.begin(), p.end(), '.', '/');
+    return Json::json_pointer(p);
+}
+
+}  // namespace
+
+nlohmann::json runSummary(const RunSummaryInput& in) {
+    Source s{in, std::nullopt};
+    if (in.cycle.size() >= 2) {
+        const double volume = 0.25 * std::numbers::pi * in.c.engine.bore * in.c.engine.bore * in.c.engine.stroke;
+        s.m = cycleMetrics(in.cycle, in.sim.dynamics(), volume);
+    }
+    Json d = Json::object();
+    for (const Entry& e : entries()) {
+        Json v = e.value(s);
+        if (!v.is_null()) d[pointer(e.key)] = std::move(v);
+    }
+    return d;
+}
+
+const std::vector<std::string>& runSummaryKeys() {
+    static const std::vector<std::string> keys = [] {
+        std::vector<std::string> k;
+        for (const Entry& e : entries()) k.push_back(e.key);
+        return k;
+    }();
+    return keys;
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,182 @@
+#include "cosim/run/CaseRun.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cosim/coupling/PistonSimulation.hpp"
+#include "cosim/results/FieldSeriesWriter.hpp"
+#include "cosim/results/HistoryWriter.hpp"
+#include "cosim/results/ModeShapeExport.hpp"
+#include "cosim/results/RunSummary.hpp"
+#include "fem/AtomicFile.hpp"
+#include "fem/Stopwatch.hpp"
+
+namespace flexehd::cosim {
+namespace {
+
+void say(const std::function<void(const std::string&)>& f, const std::string& s) {
+    if (f) f(s);
+}
+
+std::string describe(const EngineCase& c) {
+    const bool anyFlexible = c.pistonBody.model == BodyModel::Flexible || c.linerBody.model == BodyModel::Flexible;
+    return fmt::format("flexehd run {}: piston {}, liner {}{}, grid {} x {}, {} rpm -> {}", c.path,
+                       c.pistonBody.model == BodyModel::Flexible ? "flexible" : "rigid",
+                       c.linerBody.model == BodyModel::Flexible ? "flexible" : "rigid",
+                       !anyFlexible                                       ? ""
+                       : c.coupling.response == ElasticResponse::Dynamic ? " (modal dynamics)"
+                                                                         : " (quasi-static)",
+                       c.grid.axialNodes, c.grid.circumferentialNodes, c.engine.speedRpm, c.output.directory);
+}
+
+// The bodies the case names, and a warning when the piston's surface misses the skirt's nodes.
+void reportBodies(const EngineCase& c, const PistonSimulation& sim, const RunLog& log) {
+    if (sim.piston()) {
+        say(log.info, fmt::format("piston: {} modes from {}", sim.piston()->modes(), c.pistonBody.file));
+        const std::size_t outside = sim.piston()->outsideNodes().size();
+        const int film = sim.film().grid().filmNodeCount();
+        if (2 * outside > std::size_t(film))
+            say(log.warn,
+                fmt::format("{} of the {} skirt film nodes ({:.0f} %) lie outside the surface '{}' of {}: most of "
+                            "the skirt does not deform; is {} the piston's reduced body, made from the mesh the "
+                            "case's piston geometry describes?",
+                            outside, film, 100.0 * double(outside) / film, c.pistonBody.surface, c.pistonBody.file,
+                            c.pistonBody.file));
+        else if (outside > 0)
+            say(log.warn, fmt::format("{} of the {} skirt film nodes lie outside the surface '{}' of {}: no elastic "
+                                      "motion there",
+                                      outside, film, c.pistonBody.surface, c.pistonBody.file));
+    }
+    if (sim.liner()) say(log.info, fmt::format("liner: {} modes from {}", sim.liner()->modes(), c.linerBody.file));
+}
+
+// The piston mesh's displacement at a snapshot: the rigid secondary motion about the pin axis
+// (pinOffset, ·, 0), Δx = e + z β, Δz = −(x − c) β, plus the elastic part (also returned).
+Eigen::VectorXd pistonDisplacement(const FlexibleSurface& piston, const Snapshot& s, double pinOffset,
+                                   Eigen::VectorXd& elastic) {
+    const Eigen::Matrix3Xd& X = piston.body().mesh.nodes;
+    elastic = piston.displacement(s.pistonModal);
+    Eigen::VectorXd u = elastic;
+    for (Eigen::Index j = 0; j < X.cols(); ++j) {
+        u[3 * j] += s.lateral + X(2, j) * s.tilt;
+        u[3 * j + 2] += -(X(0, j) - pinOffset) * s.tilt;
+    }
+    return u;
+}
+
+// A snapshot as the film and body fields of the VTK series.
+void writeSnapshot(FieldSeriesWriter& fields, const EngineCase& c, const PistonSimulation& sim, const Snapshot& s) {
+    FilmField film;
+    film.grid = &sim.film().grid();
+    film.origin = Eigen::Vector3d(0.0, 0.0, s.pinHeight);
+    film.pressure = s.pressure;
+    film.filmThickness = s.filmThickness;
+    film.contactPressure = s.contactPressure;
+    film.shearStress = s.shearStress;
+    film.cavitation = s.cavitation;
+    BodyField piston, liner;
+    if (sim.piston()) {
+        piston.mesh = &sim.piston()->body().mesh;
+        piston.origin = film.origin;
+        piston.displacement = pistonDisplacement(*sim.piston(), s, c.engine.pinOffset, piston.elastic);
+    }
+    if (sim.liner()) {
+        liner.mesh = &sim.liner()->body().mesh;
+        liner.origin = Eigen::Vector3d(0.0, 0.0, s.pinHeight - s.linerOffset);
+        liner.displacement = sim.liner()->displacement(s.linerModal);
+    }
+    // Time axis: the crank angle of the written cycle, time.start_deg … start_deg + 720 (0–720
+    // with the default start), so that it reads as history.csv's crank_deg.
+    const SnapshotTime at{s.continuousDeg - 720.0 * (s.cycle - 1), s.crankDeg, s.cycle};
+    fields.write(at, film, sim.piston() ? &piston : nullptr, sim.liner() ? &liner : nullptr);
+}
+
+// DIR/modes_piston, DIR/modes_liner (unchanged files are kept); returns the seconds taken.
+double writeBodyModes(const std::string& dir, const PistonSimulation& sim, const RunLog& log) {
+    const fem::Stopwatch w;
+    for (const auto* body : {sim.piston(), sim.liner()}) {
+        if (!body) continue;
+        const std::string sub = dir + (body == sim.piston() ? "/modes_piston" : "/modes_liner");
+        std::filesystem::create_directories(sub);
+        const fem::Stopwatch one;
+        bool reused = false;
+        writeModeShapes(sub, body->body().mesh, body->body().shapes, body->body().frequenciesHz, Eigen::VectorXd(),
+                        &reused);
+        say(log.info, fmt::format("mode shapes of the {} ({} modes): {} {}", body == sim.piston() ? "piston" : "liner",
+                                  body->modes(),
+                                  reused ? "unchanged, kept in" : fmt::format("written in {:.1f} s to", one.seconds()),
+                                  sub));
+    }
+    return w.seconds();
+}
+
+void writeSummary(const std::string& dir, const nlohmann::json& doc) {
+    fem::writeAtomically(dir + "/summary.json", [&](const std::string& tmp) {
+        std::ofstream f(tmp);
+        f << doc.dump(2) << "\n";
+        if (!f) throw std::runtime_error("cannot write " + tmp);
+    });
+}
+
+}  // namespace
+
+CaseRunResult runCase(const EngineCase& c, const RunLog& log) {
+    const fem::Stopwatch total;
+    const std::string dir = c.output.directory;
+    std::filesystem::create_directories(dir);
+    if (const int stale = fem::removeStaleTemporaries(dir))
+        say(log.info, fmt::format("removed {} unfinished .tmp file(s) that an interrupted run left in {}", stale, dir));
+    say(log.info, describe(c));
+    PistonSimulation sim(c);
+    reportBodies(c, sim, log);
+
+    double outputInRun = 0.0;  // output inside the step loop
+    HistoryWriter history(dir + "/history.csv");
+    FieldSeriesWriter fields(dir);
+    SimulationCallbacks cb;
+    cb.onStep = [&](const StepRecord& r) {
+        const fem::Stopwatch w;
+        history.append(r);
+        outputInRun += w.seconds();
+    };
+    cb.onSnapshot = [&](const Snapshot& s) {
+        const fem::Stopwatch w;
+        writeSnapshot(fields, c, sim, s);
+        outputInRun += w.seconds();
+    };
+    cb.onCycleEnd = [&](int cycle, int snapshots, bool last) {
+        if (snapshots == 0) return;
+        const fem::Stopwatch w;
+        fields.commit();  // the collections list this cycle from now on
+        outputInRun += w.seconds();
+        if (last)
+            say(log.info, fmt::format("VTK series: the {} snapshots of cycle {} in {}/film.pvd", snapshots, cycle, dir));
+    };
+    cb.progress = log.info;
+    const double outputSeconds = c.output.modeShapes ? writeBodyModes(dir, sim, log) : 0.0;
+
+    std::vector<StepRecord> cycle;
+    std::string status = "ok", message;
+    try {
+        cycle = sim.run(cb);
+    } catch (const std::exception& e) {
+        status = "failed";
+        message = e.what();
+        fields.discard();  // the unfinished cycle's snapshots; the last complete cycle's stay listed
+    }
+    if (cycle.empty() && status == "ok") status = "failed";
+    CaseRunResult result;
+    result.summary = runSummary({c, sim, cycle, status, message, outputSeconds, outputInRun, total.seconds()});
+    writeSummary(dir, result.summary);
+    if (status != "ok") throw std::runtime_error(message + " (partial results in " + dir + ")");
+    result.cycles = sim.statistics().cycles;
+    result.periodic = sim.statistics().periodic;
+    result.seconds = total.seconds();
+    return result;
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,33 @@
+#pragma once
+// runCase: what `flexehd run` does with a case — the co-simulation of the piston's secondary
+// motion over the engine cycle (PistonSimulation, docs/coupling.md) writing its results
+// directory (docs/results-format.md): history.csv line by line, the VTK series of the last
+// complete cycle, the bodies' mode shapes and summary.json.
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cosim/case/EngineCase.hpp"
+
+namespace flexehd::cosim {
+
+/// Where the run's progress lines and warnings go (either may be empty: not shown).
+struct RunLog {
+    std::function<void(const std::string&)> info;
+    std::function<void(const std::string&)> warn;
+};
+
+struct CaseRunResult {
+    nlohmann::json summary;  ///< as written to summary.json
+    int cycles = 0;          ///< cycles run
+    bool periodic = false;
+    double seconds = 0.0;    ///< wall-clock, the whole run
+};
+
+/// Runs `c` into c.output.directory (created; unfinished .tmp files of an earlier run removed).
+/// A failed run writes summary.json with status "failed" and its message, then throws
+/// std::runtime_error with the message and where the partial results are.
+CaseRunResult runCase(const EngineCase& c, const RunLog& log = {});
+
+}  // namespace flexehd::cosim
