@@ -1,6 +1,7 @@
 #include "cosim/case/CaseFile.hpp"
 #include "cosim/io/YamlKeys.hpp"
 #include "cosim/io/YamlSection.hpp"
+#include "cosim/case/CaseValues.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -24,160 +25,13 @@
 namespace flexehd::cosim {
 namespace {
 
+using namespace casefile;
 namespace fs = std::filesystem;
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-
-// ---- small text helpers ---------------------------------------------------------------------
-
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string::npos) return "";
-    const auto e = s.find_last_not_of(" \t\r\n");
-    return s.substr(b, e - b + 1);
-}
-
-/// Strict number: the whole text (a leading '+' allowed), finite.
-bool parseDouble(const std::string& text, double& value) {
-    std::string t = trim(text);
-    if (!t.empty() && t[0] == '+') t.erase(0, 1);
-    if (t.empty()) return false;
-    const char* end = t.data() + t.size();
-    const auto [ptr, ec] = std::from_chars(t.data(), end, value);
-    return ec == std::errc() && ptr == end && std::isfinite(value);
-}
-
-bool parseInt(const std::string& text, long long& value) {
-    std::string t = trim(text);
-    if (!t.empty() && t[0] == '+') t.erase(0, 1);
-    if (t.empty()) return false;
-    const char* end = t.data() + t.size();
-    const auto [ptr, ec] = std::from_chars(t.data(), end, value);
-    return ec == std::errc() && ptr == end;
-}
-
 const auto& closest = closestKey;
 const auto& joined = joinedKeys;
 const auto& describe = describeNode;
-
-std::string withArticle(const std::string& phrase) {
-    const bool vowel = !phrase.empty() && std::strchr("aeiou", phrase[0]) != nullptr;
-    return (vowel ? "an " : "a ") + phrase;
-}
-
-// ---- typed values ---------------------------------------------------------------------------
-
-enum class Sign { Any, Positive, NonNegative };
-
-struct Quantity {
-    const char* what;  ///< "length"
-    const char* unit;  ///< "m"
-};
-
-std::string expectation(Quantity q, Sign sign) {
-    const std::string adj = sign == Sign::Positive ? "positive " : sign == Sign::NonNegative ? "non-negative " : "";
-    return withArticle(adj + q.what) + (q.unit[0] ? std::string(" in ") + q.unit : std::string());
-}
-
-/// Number at `key`; `def` if absent (and not required).
-double number(const YamlSection& s, const std::string& key, Quantity q, Sign sign, double def, bool required = false) {
-    if (!s.has(key)) {
-        if (required) s.missing(key, expectation(q, sign));
-        return def;
-    }
-    const YAML::Node n = s.get(key);
-    double v = 0.0;
-    if (!n.IsScalar() || !parseDouble(n.Scalar(), v))
-        s.fail(key, fmt::format("expected {}, got {}", expectation(q, sign), describe(n)));
-    if ((sign == Sign::Positive && !(v > 0.0)) || (sign == Sign::NonNegative && !(v >= 0.0)))
-        s.fail(key, fmt::format("expected {}, got {}", expectation(q, sign), trim(n.Scalar())));
-    return v;
-}
-
-int integer(const YamlSection& s, const std::string& key, int minimum, int maximum, int def, const char* what) {
-    if (!s.has(key)) return def;
-    const YAML::Node n = s.get(key);
-    long long v = 0;
-    const std::string expected = fmt::format("a whole number{}{} from {} to {}", *what ? " of " : "", what, minimum, maximum);
-    if (!n.IsScalar() || !parseInt(n.Scalar(), v))
-        s.fail(key, fmt::format("expected {}, got {}", expected, describe(n)));
-    if (v < minimum || v > maximum) s.fail(key, fmt::format("expected {}, got {}", expected, trim(n.Scalar())));
-    return static_cast<int>(v);
-}
-
-bool boolean(const YamlSection& s, const std::string& key, bool def) {
-    if (!s.has(key)) return def;
-    const YAML::Node n = s.get(key);
-    bool v = false;
-    if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v)) s.fail(key, "expected true or false, got " + describe(n));
-    return v;
-}
-
-std::string text(const YamlSection& s, const std::string& key, const std::string& def, const std::string& what,
-                 bool required = false) {
-    if (!s.has(key)) {
-        if (required) s.missing(key, what);
-        return def;
-    }
-    const YAML::Node n = s.get(key);
-    if (!n.IsScalar() || trim(n.Scalar()).empty()) s.fail(key, "expected " + what + ", got " + describe(n));
-    return trim(n.Scalar());
-}
-
-/// One of `options` (the YAML spelling), returned as its index.
-std::size_t choice(const YamlSection& s, const std::string& key, const std::vector<std::string>& options, std::size_t def) {
-    if (!s.has(key)) return def;
-    const YAML::Node n = s.get(key);
-    const std::string expected = "one of " + joined(options);
-    if (!n.IsScalar()) s.fail(key, "expected " + expected + ", got " + describe(n));
-    const std::string v = trim(n.Scalar());
-    for (std::size_t i = 0; i < options.size(); ++i)
-        if (v == options[i]) return i;
-    const std::string guess = closest(v, options);
-    s.fail(key, fmt::format("expected {}, got '{}'{}", expected, v,
-                            guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
-}
-
-// ---- files ----------------------------------------------------------------------------------
-
-std::string readWholeFile(const fs::path& path, std::string& error) {
-    std::error_code ec;
-    if (!fs::exists(path, ec)) {
-        error = "no such file";
-        return {};
-    }
-    if (fs::is_directory(path, ec)) {
-        error = "is a directory, not a file";
-        return {};
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = "cannot be opened for reading";
-        return {};
-    }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) error = "read error";
-    std::string text = ss.str();
-    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark (spreadsheet CSV)
-    return text;
-}
-
-/// HDF5 files carry an 8-byte signature at offset 0, 512, 1024, 2048, … (after a user block).
-bool looksLikeHdf5(const fs::path& path) {
-    static const char kSignature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
-    std::ifstream in(path, std::ios::binary);
-    std::error_code ec;
-    const auto size = fs::file_size(path, ec);
-    if (!in || ec) return false;
-    for (std::uintmax_t offset = 0; offset + 8 <= size; offset = offset == 0 ? 512 : 2 * offset) {
-        char buf[8];
-        in.seekg(static_cast<std::streamoff>(offset));
-        if (!in.read(buf, 8)) return false;
-        if (std::memcmp(buf, kSignature, 8) == 0) return true;
-    }
-    return false;
-}
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
 
 // ---- sections -------------------------------------------------------------------------------
 

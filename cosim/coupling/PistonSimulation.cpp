@@ -48,11 +48,6 @@ double minimumGap(const lube::FilmGrid& g, const Eigen::VectorXd& h) {
     return m;
 }
 
-double wrap720(double deg) {
-    double w = std::fmod(deg, 720.0);
-    return w < 0.0 ? w + 720.0 : w;
-}
-
 // The crank angle 0–720° (0 = gas-exchange TDC) written for a point of `cycle`: the continuous
 // angle reduced by whole cycles. Cycle k spans time.start_deg + 720 (k − 1) … + 720, so the
 // reduced angle runs from start_deg to 720 and on from 0 to start_deg; it is 720 (not 0) at the
@@ -316,261 +311,11 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     return ev;
 }
 
-bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
-                               std::string& failure) {
-    Context ctx;
-    ctx.crankDeg = s.crankDeg + dtDeg;
-    ctx.dt = dtDeg * kin_.secondsPerDegree();
-    if (s.dt > 0.0) {  // BDF2 with variable step ratio ω
-        const double w = ctx.dt / s.dt;
-        ctx.a0 = (1.0 + 2.0 * w) / (1.0 + w);
-        ctx.a1 = -(1.0 + w);
-        ctx.a2 = w * w / (1.0 + w);
-    }
-    ctx.crank = kin_.at(ctx.crankDeg);
-    ctx.gas = dyn_.gasForce(pressure_(wrap720(ctx.crankDeg)));
-    ctx.offset = liner_ || clearance_ ? linerOffset(ctx.crankDeg) : 0.0;
-    ctx.now = &s;
-    ctx.before = &prev;
-    const double dt = ctx.dt;
-    if (pistonDynamics_ || linerDynamics_) {
-        // BDF2 histories of the modal coordinates (prev starts as a copy of the initial state;
-        // a2 = 0 on the first step).
-        ctx.hq = ctx.a1 * s.y + ctx.a2 * prev.y;
-        ctx.hv = ctx.a1 * s.w + ctx.a2 * prev.w;
-        if (pistonDynamics_) pistonDynamics_->setStep(ctx.a0, dt);
-        if (linerDynamics_) linerDynamics_->setStep(ctx.a0, dt);
-    }
-    Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
-    // The modal coordinates start from their linear extrapolation over the last step (at high
-    // speed y moves by hundreds of coupling tolerances per step; from y_n the first Newton passes
-    // go through the strongly nonlinear film law).
-    Eigen::VectorXd y = s.y;
-    if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.dt / s.dt) * (s.y - prev.y);
-    const bool flexible = piston_ || liner_;
-    CouplingAccelerator acc(case_.coupling.acceleration);
-    // Newton tolerances and finite-difference steps from the clearance c: 1e-5 c on the
-    // lateral shift and on the tilt times the skirt reach (not from the local error tolerances,
-    // which may be loose when the step size is fixed by time.max_step_deg).
-    const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
-    const Eigen::Vector2d tol(case_.piston.clearance, case_.piston.clearance / reach);
-    // Force floor of the residual test: the reciprocating inertia force m r ω² of the engine.
-    const double forceFloor = (case_.piston.mass + case_.piston.pinMass) * kin_.crankRadius() * kin_.omega() * kin_.omega();
-    const double couplingTol = case_.coupling.tolerance * case_.piston.clearance;
-    const int maxIt = case_.coupling.maxIterations;
-    Eigen::Vector2d lastX = x, lastR = Eigen::Vector2d::Zero();
-    Eigen::VectorXd dh, dh2;
-    iterations = 0;
-    failure.clear();
-    // Why the iteration failed, for the diagnosis when the step size runs out.
-    auto fail = [&](const std::string& why) {
-        failure = fmt::format("{} (after {} film solves in this attempt)", why, iterations);
-        return false;
-    };
-    // coupling.method newton: the last accepted iterate (its measure, unknowns and residual)
-    double acceptedMeasure = std::numeric_limits<double>::infinity(), acceptedMerit = acceptedMeasure;
-    Eigen::Vector2d acceptedX = x;
-    Eigen::VectorXd acceptedY = y, acceptedF;
-    int backtracks = 0;
-    bool freshJacobian = false, regularize = false, revisit = false;
-    for (int it = 0; it < maxIt; ++it) {
-        try {
-            ev = evaluate(ctx, x, y, true);
-        } catch (const std::runtime_error&) {
-            return fail("a film solve failed");  // the caller shortens the step
-        }
-        ++iterations;
-        double couplingRes = 0.0;
-        if (flexible) {
-            const Eigen::VectorXd d = ev.Hy - y;
-            const fem::Stopwatch t0;
-            if (piston_) {
-                piston_->filmChange(d.head(mp_), 0.0, dh);
-                couplingRes = dh.cwiseAbs().maxCoeff();
-            }
-            if (liner_) {
-                liner_->filmChange(d.tail(ml_), ctx.offset, dh2);
-                couplingRes = std::max(couplingRes, dh2.cwiseAbs().maxCoeff());
-            }
-            const double tMap = t0.seconds();
-            stats_.timings.mapping += tMap;
-            stats_.timings.structure += tMap;
-        }
-        Eigen::VectorXd dz;  // coupling.method newton: the update of (e, β, y)
-        bool resolved = false;  // coupling.method newton: converged to the unknowns' resolution
-        if (linearization_) {
-            // The residual in units of its tolerances (≤ 1: converged).
-            const double measure = std::max({couplingRes / couplingTol,
-                                             std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
-                                             std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach))});
-            Eigen::VectorXd F(2 + mp_ + ml_);
-            F.head<2>() = ev.residual;
-            F.tail(mp_ + ml_) = y - ev.Hy;
-            // Line search: a pass whose merit (coupledMerit) is worse than at the last accepted
-            // iterate goes back there — to linearise anew when the Jacobian was a kept one, else to
-            // halve the update (at most 5 times; the film and contact laws are strongly nonlinear
-            // where the cavitated or contact set changes).
-            Eigen::VectorXd rScale = residualScale(ev, forceFloor, reach, couplingTol);
-            if (acceptedMerit < std::numeric_limits<double>::infinity() && coupledMerit(F, rScale) > acceptedMerit) {
-                if (!freshJacobian && !revisit) {
-                    // The kept Jacobian led astray: back to the accepted iterate, linearised anew.
-                    x = acceptedX;
-                    y = acceptedY;
-                    newtonParts_->valid = false;
-                    revisit = true;
-                    continue;
-                }
-                if (backtracks < 5) {
-                    ++backtracks;
-                    x = acceptedX + 0.5 * (x - acceptedX);
-                    y = acceptedY + 0.5 * (y - acceptedY);
-                    continue;
-                }
-            }
-            revisit = false;
-            const double rate = ctx.a0 / ctx.dt;
-            // A new linearisation when a pass did not halve the measure (or had to backtrack with a
-            // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
-            // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
-            if (backtracks > 0 && freshJacobian) regularize = true;  // see below
-            const bool relinearize = !newtonParts_->valid || measure > 0.5 * acceptedMeasure || backtracks > 0;
-            if (!newtonParts_->valid) acceptedMeasure = std::numeric_limits<double>::infinity();
-            if (relinearize) {
-                try {
-                    linearizeCoupled(ctx, x, ev);
-                } catch (const std::runtime_error& e) {
-                    newtonParts_->valid = false;
-                    return fail(std::string("the film's linearisation for the coupled Newton step failed: ") + e.what());
-                }
-                ++stats_.jacobians;
-            }
-            if (relinearize || rate != newtonRate_) {
-                if (!formCoupledJacobian(ctx, x, y, ev, tol, iterations))
-                    return fail("a film solve of the Jacobian's difference columns failed");
-                newtonRate_ = rate;
-            } else if (acceptedF.size()) {
-                Eigen::VectorXd step(2 + mp_ + ml_);
-                step.head<2>() = x - acceptedX;
-                step.tail(mp_ + ml_) = y - acceptedY;
-                broydenUpdate(step, F - acceptedF);
-            }
-            freshJacobian = relinearize;
-            backtracks = 0;
-            rScale = residualScale(ev, forceFloor, reach, couplingTol);  // the Jacobian's unknown scales
-            acceptedMeasure = measure;
-            acceptedMerit = coupledMerit(F, rScale);
-            acceptedX = x;
-            acceptedY = y;
-            acceptedF = F;
-            // After a failed line search with a fresh Jacobian the step is nearly singular: some
-            // combination of motion and modes changes the residual by less than its tolerance per
-            // clearance of film change (a soft elastic mode against a film of nearly equal and
-            // opposite stiffness, quasi-static). Then the Levenberg–Marquardt step in units of the
-            // tolerances (residual) and of the clearance (film-thickness change of each unknown),
-            // dz = −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, leaves such directions alone.
-            dz = -newtonInverse_ * F;
-            // Resolved to the unknowns' resolution: where the film is thin and the step short, the
-            // squeeze film makes the motion so stiff that a change of e, β by 1e-5 c_r (the
-            // resolution the motion test asks of them) changes its residual by more than the
-            // tolerance; then, with the modal equations met, a fresh Jacobian's full Newton update
-            // below that resolution and the motion residual within 10× its tolerance end the
-            // iteration (docs/coupling.md §1).
-            const double motionMeasure =
-                std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
-                         std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach)));
-            resolved = relinearize && couplingRes <= couplingTol && motionMeasure <= 10.0 &&
-                       dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * case_.piston.clearance &&
-                       std::abs(dz[0]) <= 1e-5 * tol[0] && std::abs(dz[1]) <= 1e-5 * tol[1];
-            if (regularize) dz = levenbergMarquardtStep(F, rScale);
-            if (!dz.allFinite()) return fail("the Newton update of the coupled step is not finite");
-            // Damped step: no update moves the film thickness anywhere by more than a quarter of the
-            // clearance (the film and contact laws are far from linear over such a distance).
-            const double largest = dz.cwiseAbs().dot(unknownScale_);  // ≥ max |Δh|
-            if (largest > 0.25 * case_.piston.clearance) dz *= 0.25 * case_.piston.clearance / largest;
-        } else if (it == 0) {
-            // Finite-difference Jacobian of the motion residual (modal coordinates frozen).
-            const Eigen::Vector2d delta = 1e-5 * tol;
-            for (int i = 0; i < 2; ++i) {
-                Eigen::Vector2d xp = x;
-                xp[i] += delta[i];
-                Evaluation e2;
-                try {
-                    e2 = evaluate(ctx, xp, y, false);
-                } catch (const std::runtime_error&) {
-                    return fail("a film solve of the finite-difference Jacobian failed");
-                }
-                ++iterations;
-                jacobian_.col(i) = (e2.residual - ev.residual) / delta[i];
-            }
-            ++stats_.jacobians;
-        } else if (!flexible) {
-            // Broyden update of the rigid motion's Jacobian. With flexible bodies the Jacobian is
-            // held through the step (a chord iteration): the joint quasi-Newton update below
-            // models the fixed-point map from its past passes, which must be one and the same map.
-            const Eigen::Vector2d dx = x - lastX, dr = ev.residual - lastR;
-            const double d2 = dx.cwiseQuotient(tol).squaredNorm();
-            if (d2 > 0.0) {
-                const Eigen::Vector2d w = dx.cwiseQuotient(tol).cwiseQuotient(tol);
-                jacobian_ += (dr - jacobian_ * dx) * w.transpose() / d2;  // Broyden, scaled
-            }
-        }
-        const Eigen::Vector2d dx = dz.size() ? Eigen::Vector2d(dz.head<2>()) : Eigen::Vector2d(-jacobian_.partialPivLu().solve(ev.residual));
-        if (!dx.allFinite()) return fail("the Newton update is not finite");
-        const bool motionDone = std::abs(dx[0]) <= 1e-5 * tol[0] && std::abs(dx[1]) <= 1e-5 * tol[1] &&
-                                std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + forceFloor) &&
-                                std::abs(ev.residual[1]) <= 1e-4 * (ev.scale[1] + forceFloor * reach);
-        if ((motionDone && couplingRes <= couplingTol) || resolved) {
-            if (resolved && !(motionDone && couplingRes <= couplingTol)) ++stats_.resolvedSteps;
-            out.crankDeg = ctx.crankDeg;
-            out.time = s.time + dt;
-            out.dt = dt;
-            out.x = x;
-            out.v = ev.vel;
-            out.a = ev.acc;
-            out.h = ev.h;
-            out.hRigid = ev.hRigid;
-            out.p = ev.p;
-            out.y = y;
-            out.hTotal = ev.hTotal;
-            if (pistonDynamics_ || linerDynamics_) out.w = (ctx.a0 * y + ctx.hq) / dt;  // ẏ of BDF2
-            return true;
-        }
-        lastX = x;
-        lastR = ev.residual;
-        if (dz.size()) {
-            x += dx;
-            y += dz.tail(mp_ + ml_);
-        } else if (flexible) {
-            // One fixed-point map of the joint unknowns z = (e, β, y): the chord step of the motion
-            // with y held and the modal response H with x held, accelerated together by IQN-ILS /
-            // Aitken in units of clearances of film change (docs/coupling.md §1: accelerating y
-            // alone leaves the motion lagging the modes, which diverges from 3000 rpm on).
-            const fem::Stopwatch t0;
-            const Eigen::Index m = mp_ + ml_;
-            Eigen::VectorXd z(2 + m), Gz(2 + m);
-            z << x, y;
-            Gz << x + dx, ev.Hy;
-            const Eigen::VectorXd zn = acc.next(z.cwiseProduct(partitionedScale_), Gz.cwiseProduct(partitionedScale_))
-                                           .cwiseQuotient(partitionedScale_);
-            x = zn.head<2>();
-            y = zn.tail(m);
-            const double tModal = t0.seconds();
-            stats_.timings.modal += tModal;
-            stats_.timings.structure += tModal;
-        } else {
-            x += dx;
-        }
-    }
-    failure = fmt::format("the Newton/coupling iteration did not converge in coupling.max_iterations = {} passes "
-                          "({} film solves, Jacobian included)", maxIt, iterations);
-    return false;
-}
-
 StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cycle, double stepDeg,
                                     int iterations) const {
     StepRecord r;
     const CrankState k = kin_.at(s.crankDeg);
-    r.cylinderPressure = pressure_(wrap720(s.crankDeg));
+    r.cylinderPressure = pressure_(crankAngle720(s.crankDeg));
     const double gas = dyn_.gasForce(r.cylinderPressure);
     r.cycle = cycle;
     r.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
@@ -634,11 +379,9 @@ Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cy
     return sn;
 }
 
-std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
-    const fem::Stopwatch tRun;
-    const TimeSpec& T = case_.time;
+PistonSimulation::State PistonSimulation::initialState(const SimulationCallbacks& cb) const {
     State s;
-    s.crankDeg = T.startDeg;
+    s.crankDeg = case_.time.startDeg;
     film_.rigidThickness(0.0, 0.0, s.h);
     if (clearance_) {
         clearance_->add(linerOffset(s.crankDeg), s.h);
@@ -657,10 +400,115 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     s.hTotal = s.h;  // undeformed bodies at the start
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);
     if (pistonDynamics_ || linerDynamics_) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
+    return s;
+}
+
+double PistonSimulation::plannedStep(double crankDeg, double dtDeg, double cycleStart, double cycleEnd,
+                                     bool& atSnapshot) const {
+    const TimeSpec& T = case_.time;
+    const double every = case_.output.vtkEveryDeg;
+    double step = std::min(dtDeg, cycleEnd - crankDeg);
+    atSnapshot = false;
+    if (every > 0.0) {
+        // The next snapshot angle; those closer than time.min_step_deg to the present state
+        // are skipped (landing on them would need a step below the smallest allowed).
+        double next = cycleStart + every * (std::floor((crankDeg - cycleStart) / every + 1e-9) + 1.0);
+        if (next - crankDeg < T.minStepDeg) next += every * std::ceil((T.minStepDeg - (next - crankDeg)) / every);
+        if (next - crankDeg <= step + 1e-12) {
+            step = next - crankDeg;
+            atSnapshot = true;
+        }
+    }
+    if (std::abs(crankDeg + step - cycleEnd) < 1e-9) atSnapshot = every > 0.0;
+    return step;
+}
+
+double PistonSimulation::localErrorRatio(const State& s, const State& n, double stepDeg) const {
+    // The predictor–corrector difference against time.lateral_tolerance and tilt_tolerance.
+    const double dt = stepDeg * kin_.secondsPerDegree();
+    const Eigen::Vector2d pred = s.x + dt * s.v + 0.5 * dt * dt * s.a;
+    const Eigen::Vector2d err = 0.5 * (n.x - pred).cwiseAbs();
+    return std::max(err[0] / case_.time.lateralTolerance, err[1] / case_.time.tiltTolerance);
+}
+
+std::string PistonSimulation::stepSizeExhausted(const State& s, int cycle, bool converged, double ratio,
+                                                const std::string& failure) const {
+    // A folded quasi-static equilibrium is no matter of step size or iterations.
+    const std::string advice =
+        !converged && foldedJacobians_ > 0
+            ? "The skirt's quasi-static equilibrium in the film is lost here: on some combination of "
+              "its modes the film's stiffness (the wedge of the sliding liner) exceeds the "
+              "structure's (det(I - dH/dy) < 0 in the step's Jacobian), and without the elastic "
+              "deformation rate in the squeeze term nothing resists that deformation. Set "
+              "coupling.elastic_squeeze: true (docs/coupling.md section 3)."
+        : !converged && (piston_ || liner_) && case_.coupling.method == CouplingMethod::Partitioned
+            ? "With coupling.method: partitioned the squeeze term holds the rigid rate only; where "
+              "the iteration fails at high speed (on the example engine from 4000 rpm on, early in "
+              "the intake stroke) the skirt's quasi-static equilibrium in the film is lost, as with "
+              "the rigid rate in coupling.method: newton (docs/coupling.md section 1). "
+              "coupling.method: newton with coupling.elastic_squeeze: true (the defaults) runs the "
+              "whole map."
+            : "Try a smaller time.max_step_deg, a finer film grid, more coupling.max_iterations, or "
+              "check the loads and clearances of the case.";
+    return fmt::format(
+        "the time step fell below time.min_step_deg = {:g} deg at crank angle {:.4f} deg of cycle {}: {}. "
+        "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
+        case_.time.minStepDeg, crankAngle720(s.crankDeg), cycle,
+        converged ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure, s.x[0] * 1e6, s.x[1] * 1e3,
+        minimumGap(film_.grid(), s.hTotal) * 1e6, advice);
+}
+
+void PistonSimulation::requireBoundedMotion(const State& n, int cycle) const {
+    const double skirtLength = case_.piston.skirtTop - case_.piston.skirtBottom;
+    if (!n.x.allFinite() || std::abs(n.x[0]) > 20.0 * case_.piston.clearance ||
+        std::abs(n.x[1]) * skirtLength > 40.0 * case_.piston.clearance)
+        throw std::runtime_error(fmt::format(
+            "the secondary motion diverged at crank angle {:.3f} deg of cycle {}: lateral shift {:.3g} m, "
+            "tilt {:.3g} rad (clearance {:.3g} m). Is asperity contact (contact.composite_modulus) on?",
+            crankAngle720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance));
+}
+
+void PistonSimulation::checkLoadMapping(const Evaluation& ev, double& worstDiff, double& largestForce) {
+    // The mapped resultant on the flexible piston against the film's normal force.
+    const Eigen::Matrix<double, 6, 1> r =
+        piston_->resultant(ev.p + ev.pc, 0.0, Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0));
+    const Eigen::Vector3d film = ev.loads.pressureForce + ev.loads.contactForce;
+    worstDiff = std::max(worstDiff, (r.head<3>() - film).norm());
+    largestForce = std::max(largestForce, film.norm());
+    stats_.worstMappingError = worstDiff / std::max(largestForce, 1e-300);
+}
+
+double PistonSimulation::periodicityError(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
+                                          const std::vector<StepRecord>& previous,
+                                          const std::vector<double>& previousSince) const {
+    // Eccentricities at the skirt ends, this cycle vs the previous one, interpolated to the same
+    // degrees since the cycle's start (docs/coupling.md §1).
+    const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+    double err = 0.0;
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < cycle.size(); ++i) {
+        const StepRecord& r = cycle[i];
+        const double at = since[i];
+        while (j + 1 < previous.size() && previousSince[j + 1] < at) ++j;
+        const std::size_t j1 = std::min(j + 1, previous.size() - 1);
+        const StepRecord& a = previous[j];
+        const StepRecord& b = previous[j1];
+        const double sa = previousSince[j], sb = previousSince[j1];
+        const double w = sb > sa ? std::clamp((at - sa) / (sb - sa), 0.0, 1.0) : 0.0;
+        const double e0 = a.lateral + w * (b.lateral - a.lateral);
+        const double t0 = a.tilt + w * (b.tilt - a.tilt);
+        err = std::max({err, std::abs(r.lateral - e0) + std::abs(r.tilt - t0) * reach});
+    }
+    return err;
+}
+
+std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
+    const fem::Stopwatch tRun;
+    const TimeSpec& T = case_.time;
+    State s = initialState(cb);
     State prev = s;
     double dtDeg = std::min(T.maxStepDeg, 0.1);
     const double every = case_.output.vtkEveryDeg;
-    const double skirtLength = case_.piston.skirtTop - case_.piston.skirtBottom;
     std::vector<StepRecord> previousCycle, cycleRecords;
     // Degrees since the start of the cycle of each record (monotonic, unlike the written crank
     // angle when time.start_deg > 0): the abscissa of the periodicity comparison.
@@ -693,78 +541,25 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         }
         double nextProgress = cycleStart;
         while (s.crankDeg < cycleEnd - 1e-9) {
-            double step = std::min(dtDeg, cycleEnd - s.crankDeg);
             bool atSnapshot = false;
-            if (every > 0.0) {
-                // The next snapshot angle; those closer than time.min_step_deg to the present state
-                // are skipped (landing on them would need a step below the smallest allowed).
-                double next = cycleStart + every * (std::floor((s.crankDeg - cycleStart) / every + 1e-9) + 1.0);
-                if (next - s.crankDeg < T.minStepDeg) next += every * std::ceil((T.minStepDeg - (next - s.crankDeg)) / every);
-                if (next - s.crankDeg <= step + 1e-12) {
-                    step = next - s.crankDeg;
-                    atSnapshot = true;
-                }
-            }
-            if (std::abs(s.crankDeg + step - cycleEnd) < 1e-9) atSnapshot = every > 0.0;
+            const double step = plannedStep(s.crankDeg, dtDeg, cycleStart, cycleEnd, atSnapshot);
             State n;
             int iterations = 0;
             std::string failure;
             const bool ok = advance(s, prev, step, n, ev, iterations, failure);
-            double ratio = 0.0;
-            if (ok) {
-                const double dt = step * kin_.secondsPerDegree();
-                const Eigen::Vector2d pred = s.x + dt * s.v + 0.5 * dt * dt * s.a;
-                const Eigen::Vector2d err = 0.5 * (n.x - pred).cwiseAbs();
-                ratio = std::max(err[0] / T.lateralTolerance, err[1] / T.tiltTolerance);
-            }
+            const double ratio = ok ? localErrorRatio(s, n, step) : 0.0;
             if (!ok || ratio > 1.0) {
                 ++stats_.rejectedSteps;
                 dtDeg = ok ? step * std::max(0.2, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 0.25 * step;
-                if (dtDeg < T.minStepDeg) {
-                    // A folded quasi-static equilibrium is no matter of step size or iterations.
-                    const std::string advice =
-                        !ok && foldedJacobians_ > 0
-                            ? "The skirt's quasi-static equilibrium in the film is lost here: on some combination of "
-                              "its modes the film's stiffness (the wedge of the sliding liner) exceeds the "
-                              "structure's (det(I - dH/dy) < 0 in the step's Jacobian), and without the elastic "
-                              "deformation rate in the squeeze term nothing resists that deformation. Set "
-                              "coupling.elastic_squeeze: true (docs/coupling.md section 3)."
-                        : !ok && (piston_ || liner_) && case_.coupling.method == CouplingMethod::Partitioned
-                            ? "With coupling.method: partitioned the squeeze term holds the rigid rate only; where "
-                              "the iteration fails at high speed (on the example engine from 4000 rpm on, early in "
-                              "the intake stroke) the skirt's quasi-static equilibrium in the film is lost, as with "
-                              "the rigid rate in coupling.method: newton (docs/coupling.md section 1). "
-                              "coupling.method: newton with coupling.elastic_squeeze: true (the defaults) runs the "
-                              "whole map."
-                            : "Try a smaller time.max_step_deg, a finer film grid, more coupling.max_iterations, or "
-                              "check the loads and clearances of the case.";
-                    throw std::runtime_error(fmt::format(
-                        "the time step fell below time.min_step_deg = {:g} deg at crank angle {:.4f} deg of cycle {}: {}. "
-                        "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
-                        T.minStepDeg, wrap720(s.crankDeg), cycle,
-                        ok ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure,
-                        s.x[0] * 1e6, s.x[1] * 1e3, minimumGap(film_.grid(), s.hTotal) * 1e6, advice));
-                }
+                if (dtDeg < T.minStepDeg) throw std::runtime_error(stepSizeExhausted(s, cycle, ok, ratio, failure));
                 continue;
             }
-            if (!n.x.allFinite() || std::abs(n.x[0]) > 20.0 * case_.piston.clearance ||
-                std::abs(n.x[1]) * skirtLength > 40.0 * case_.piston.clearance)
-                throw std::runtime_error(fmt::format(
-                    "the secondary motion diverged at crank angle {:.3f} deg of cycle {}: lateral shift {:.3g} m, "
-                    "tilt {:.3g} rad (clearance {:.3g} m). Is asperity contact (contact.composite_modulus) on?",
-                    wrap720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance));
+            requireBoundedMotion(n, cycle);
             ++stats_.steps;
             foldedJacobians_ = 0;
             stats_.maxIterations = std::max(stats_.maxIterations, iterations);
             stats_.minStepDeg = std::min(stats_.minStepDeg, step);
-            if (piston_) {
-                const Eigen::Matrix<double, 6, 1> r =
-                    piston_->resultant(ev.p + ev.pc, 0.0, Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0));
-                const Eigen::Vector3d film = ev.loads.pressureForce + ev.loads.contactForce;
-                worstMappingDiff = std::max(worstMappingDiff, (r.head<3>() - film).norm());
-                largestFilmForce = std::max(largestFilmForce, film.norm());
-                stats_.worstMappingError = worstMappingDiff / std::max(largestFilmForce, 1e-300);
-            }
+            if (piston_) checkLoadMapping(ev, worstMappingDiff, largestFilmForce);
             prev = std::move(s);
             s = std::move(n);
             lastEv = ev;
@@ -784,25 +579,9 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             }
         }
         stats_.cycles = cycle;
-        // Periodicity: eccentricities at the skirt ends, this cycle vs the previous one.
-        if (!previousCycle.empty()) {
-            double err = 0.0;
-            std::size_t j = 0;
-            for (std::size_t i = 0; i < cycleRecords.size(); ++i) {
-                const StepRecord& r = cycleRecords[i];
-                const double at = cycleSince[i];
-                while (j + 1 < previousCycle.size() && previousSince[j + 1] < at) ++j;
-                const std::size_t j1 = std::min(j + 1, previousCycle.size() - 1);
-                const StepRecord& a = previousCycle[j];
-                const StepRecord& b = previousCycle[j1];
-                const double sa = previousSince[j], sb = previousSince[j1];
-                const double w = sb > sa ? std::clamp((at - sa) / (sb - sa), 0.0, 1.0) : 0.0;
-                const double e0 = a.lateral + w * (b.lateral - a.lateral);
-                const double t0 = a.tilt + w * (b.tilt - a.tilt);
-                err = std::max({err, std::abs(r.lateral - e0) + std::abs(r.tilt - t0) * std::max(case_.piston.skirtTop, -case_.piston.skirtBottom)});
-            }
-            stats_.periodicityError = err;
-            stats_.periodic = err <= T.periodicityTolerance;
+        if (!previousCycle.empty()) {  // this cycle vs the previous one
+            stats_.periodicityError = periodicityError(cycleRecords, cycleSince, previousCycle, previousSince);
+            stats_.periodic = stats_.periodicityError <= T.periodicityTolerance;
         }
         if (cb.progress)
             cb.progress(progress.cycleDoneLine(tRun.seconds(), previousCycle.empty() ? std::nullopt

@@ -127,6 +127,27 @@ private:
     Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
     bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
                  std::string& failure);
+    // The stages of advance (StepIteration.cpp).
+    struct StepTolerances;
+    struct NewtonIterate;
+    enum class PassOutcome { Retry, Failed, Update };
+    Context stepContext(const State& s, const State& prev, double dtDeg);
+    StepTolerances stepTolerances() const;
+    /// max |Δh(H(y)) − Δh(y)| over the grid (m).
+    double couplingResidual(const Context& ctx, const Evaluation& ev, const Eigen::VectorXd& y);
+    /// coupling.method newton: the line search, the Jacobian kept, re-formed or Broyden-updated,
+    /// and the damped update dz of (e, β, y); Retry: x, y were moved back (evaluate again).
+    PassOutcome coupledNewtonPass(const Context& ctx, const StepTolerances& tol, const Evaluation& ev,
+                                  double couplingRes, NewtonIterate& it, Eigen::Vector2d& x, Eigen::VectorXd& y,
+                                  int& iterations, Eigen::VectorXd& dz, bool& resolved, std::string& why);
+    /// The finite-difference Jacobian of the motion residual (modal coordinates frozen).
+    bool motionJacobian(const Context& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
+                        const Eigen::VectorXd& y, const Evaluation& ev, int& iterations);
+    /// coupling.method partitioned: the accelerated fixed-point map of (e, β, y).
+    void partitionedUpdate(const Evaluation& ev, const Eigen::Vector2d& dx, CouplingAccelerator& acc,
+                           Eigen::Vector2d& x, Eigen::VectorXd& y);
+    void acceptStep(const Context& ctx, const State& s, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                    const Evaluation& ev, State& out) const;
     struct CoupledJacobianParts;
     /// coupling.method newton: linearises (motion residual, y − H(y)) in (e, β, y) at the
     /// evaluation into the parts of CoupledJacobianParts (CoupledNewton.cpp, docs/coupling.md §1, §3)
@@ -151,6 +172,21 @@ private:
     /// ∂(asperity + hard)/∂h (Pa/m).
     double contactSlope(double h) const;
     StepRecord record(const State& s, const Evaluation& ev, int cycle, double stepDeg, int iterations) const;
+    // The stages of run (PistonSimulation.cpp).
+    State initialState(const SimulationCallbacks& cb) const;
+    /// The next step: dtDeg, shortened to land on the next snapshot angle or the cycle's end.
+    double plannedStep(double crankDeg, double dtDeg, double cycleStart, double cycleEnd, bool& atSnapshot) const;
+    /// The local error estimate of the step s → n in units of its tolerance.
+    double localErrorRatio(const State& s, const State& n, double stepDeg) const;
+    /// The diagnosis when the step size falls below time.min_step_deg.
+    std::string stepSizeExhausted(const State& s, int cycle, bool converged, double ratio,
+                                  const std::string& failure) const;
+    /// Throws when the motion left the clearance by far (diverged).
+    void requireBoundedMotion(const State& n, int cycle) const;
+    /// Updates RunStatistics::worstMappingError with the step's mapped resultant on the piston.
+    void checkLoadMapping(const Evaluation& ev, double& worstDiff, double& largestForce);
+    double periodicityError(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
+                            const std::vector<StepRecord>& previous, const std::vector<double>& previousSince) const;
     Snapshot snapshot(const State& s, const Evaluation& ev, int cycle) const;
 
     EngineCase case_;

@@ -1,11 +1,21 @@
 #pragma once
 // The private per-step structures of PistonSimulation, shared by its translation units
-// (PistonSimulation.cpp: the step loop; CoupledNewton.cpp: the Jacobian of the elastic-squeeze
-// Newton method). Not part of the public interface.
+// (PistonSimulation.cpp: the cycle loop and step control; StepIteration.cpp: one step's
+// Newton/coupling iteration; CoupledNewton.cpp: the Jacobian of the coupled Newton method).
+// Not part of the public interface.
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/FilmIntegrals.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace flexehd::cosim {
+
+/// The crank angle reduced to 0–720° (the cylinder pressure's abscissa).
+inline double crankAngle720(double deg) {
+    const double w = std::fmod(deg, 720.0);
+    return w < 0.0 ? w + 720.0 : w;
+}
 
 struct PistonSimulation::State {
     double crankDeg = 0.0;  // continuous
@@ -48,6 +58,25 @@ struct PistonSimulation::CoupledJacobianParts {
     Eigen::MatrixXd motionH, motionRate;    // 2 × modes
     Eigen::MatrixXd pistonH, pistonRate;    // piston modes × modes
     Eigen::MatrixXd linerH, linerRate;      // liner modes × modes
+};
+
+// The step's convergence tolerances (StepIteration.cpp).
+struct PistonSimulation::StepTolerances {
+    Eigen::Vector2d motion;  // (m, rad): the clearance, and the clearance over the reach
+    double reach = 0.0;      // m, the skirt's largest distance from the pin axis
+    double forceFloor = 0.0; // N, the reciprocating inertia force m r ω²
+    double coupling = 0.0;   // m, coupling.tolerance × clearance
+};
+
+// coupling.method newton: the last accepted iterate of the step (its measure, merit, unknowns and
+// residual) and the line search's state.
+struct PistonSimulation::NewtonIterate {
+    double acceptedMeasure = std::numeric_limits<double>::infinity();
+    double acceptedMerit = std::numeric_limits<double>::infinity();
+    Eigen::Vector2d acceptedX = Eigen::Vector2d::Zero();
+    Eigen::VectorXd acceptedY, acceptedF;
+    int backtracks = 0;
+    bool freshJacobian = false, regularize = false, revisit = false;
 };
 
 }  // namespace flexehd::cosim

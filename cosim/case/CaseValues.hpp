@@ -1,0 +1,46 @@
+#pragma once
+// The typed values of the case file (CaseFile.cpp): numbers with their quantity and sign, whole
+// numbers with their range, booleans, names, choices, and the checks of the files a case names.
+// Every message says what was expected, as "expected a positive length in m, got 'abc'".
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cosim/io/YamlSection.hpp"
+
+namespace flexehd::cosim::casefile {
+
+std::string trim(const std::string& s);
+/// A whole-text finite number (a leading '+' allowed).
+bool parseDouble(const std::string& text, double& value);
+bool parseInt(const std::string& text, long long& value);
+/// "a " or "an " before the phrase.
+std::string withArticle(const std::string& phrase);
+
+enum class Sign { Any, Positive, NonNegative };
+
+struct Quantity {
+    const char* what;  ///< "length"
+    const char* unit;  ///< "m"
+};
+
+/// "a positive length in m".
+std::string expectation(Quantity q, Sign sign);
+/// Number at `key`; `def` if absent (and not required).
+double number(const YamlSection& s, const std::string& key, Quantity q, Sign sign, double def, bool required = false);
+/// A whole number of `what` from minimum to maximum; `def` if absent.
+int integer(const YamlSection& s, const std::string& key, int minimum, int maximum, int def, const char* what);
+bool boolean(const YamlSection& s, const std::string& key, bool def);
+/// A non-empty text (`what` describes it); `def` if absent (and not required).
+std::string text(const YamlSection& s, const std::string& key, const std::string& def, const std::string& what,
+                 bool required = false);
+/// One of `options` (the YAML spelling), returned as its index.
+std::size_t choice(const YamlSection& s, const std::string& key, const std::vector<std::string>& options,
+                   std::size_t def);
+/// The file's contents, or "" with `error` saying why it cannot be read.
+std::string readWholeFile(const std::filesystem::path& path, std::string& error);
+/// HDF5's signature at offset 0, 512, 1024, … (after a user block).
+bool looksLikeHdf5(const std::filesystem::path& path);
+
+}  // namespace flexehd::cosim::casefile

@@ -1,0 +1,318 @@
+// One time step of PistonSimulation (docs/coupling.md §1): the step's context (BDF2
+// coefficients, crank state, gas force, liner offset), the predictor, and the Newton/coupling
+// iteration — coupled Newton on (e, β, y) with coupling.method newton, else Newton on the motion
+// with the partitioned, accelerated modal fixed point — until the motion and the coupling
+// residual meet their tolerances.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include "cosim/coupling/PistonSimulationState.hpp"
+#include "fem/Stopwatch.hpp"
+
+namespace flexehd::cosim {
+
+PistonSimulation::Context PistonSimulation::stepContext(const State& s, const State& prev, double dtDeg) {
+    Context ctx;
+    ctx.crankDeg = s.crankDeg + dtDeg;
+    ctx.dt = dtDeg * kin_.secondsPerDegree();
+    if (s.dt > 0.0) {  // BDF2 with variable step ratio ω
+        const double w = ctx.dt / s.dt;
+        ctx.a0 = (1.0 + 2.0 * w) / (1.0 + w);
+        ctx.a1 = -(1.0 + w);
+        ctx.a2 = w * w / (1.0 + w);
+    }
+    ctx.crank = kin_.at(ctx.crankDeg);
+    ctx.gas = dyn_.gasForce(pressure_(crankAngle720(ctx.crankDeg)));
+    ctx.offset = liner_ || clearance_ ? linerOffset(ctx.crankDeg) : 0.0;
+    ctx.now = &s;
+    ctx.before = &prev;
+    if (pistonDynamics_ || linerDynamics_) {
+        // BDF2 histories of the modal coordinates (prev starts as a copy of the initial state;
+        // a2 = 0 on the first step).
+        ctx.hq = ctx.a1 * s.y + ctx.a2 * prev.y;
+        ctx.hv = ctx.a1 * s.w + ctx.a2 * prev.w;
+        if (pistonDynamics_) pistonDynamics_->setStep(ctx.a0, ctx.dt);
+        if (linerDynamics_) linerDynamics_->setStep(ctx.a0, ctx.dt);
+    }
+    return ctx;
+}
+
+PistonSimulation::StepTolerances PistonSimulation::stepTolerances() const {
+    StepTolerances t;
+    // Newton tolerances and finite-difference steps from the clearance c: 1e-5 c on the
+    // lateral shift and on the tilt times the skirt reach (not from the local error tolerances,
+    // which may be loose when the step size is fixed by time.max_step_deg).
+    t.reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+    t.motion = Eigen::Vector2d(case_.piston.clearance, case_.piston.clearance / t.reach);
+    // Force floor of the residual test: the reciprocating inertia force m r ω² of the engine.
+    t.forceFloor = (case_.piston.mass + case_.piston.pinMass) * kin_.crankRadius() * kin_.omega() * kin_.omega();
+    t.coupling = case_.coupling.tolerance * case_.piston.clearance;
+    return t;
+}
+
+double PistonSimulation::couplingResidual(const Context& ctx, const Evaluation& ev, const Eigen::VectorXd& y) {
+    // max |Δh(H(y)) − Δh(y)| over the grid, per body.
+    const Eigen::VectorXd d = ev.Hy - y;
+    const fem::Stopwatch t0;
+    double res = 0.0;
+    Eigen::VectorXd dh;
+    if (piston_) {
+        piston_->filmChange(d.head(mp_), 0.0, dh);
+        res = dh.cwiseAbs().maxCoeff();
+    }
+    if (liner_) {
+        liner_->filmChange(d.tail(ml_), ctx.offset, dh);
+        res = std::max(res, dh.cwiseAbs().maxCoeff());
+    }
+    const double tMap = t0.seconds();
+    stats_.timings.mapping += tMap;
+    stats_.timings.structure += tMap;
+    return res;
+}
+
+PistonSimulation::PassOutcome PistonSimulation::coupledNewtonPass(const Context& ctx, const StepTolerances& tol,
+                                                                 const Evaluation& ev, double couplingRes,
+                                                                 NewtonIterate& it, Eigen::Vector2d& x,
+                                                                 Eigen::VectorXd& y, int& iterations,
+                                                                 Eigen::VectorXd& dz, bool& resolved,
+                                                                 std::string& why) {
+    const double forceFloor = tol.forceFloor, reach = tol.reach, couplingTol = tol.coupling;
+    // The residual in units of its tolerances (≤ 1: converged).
+    const double measure = std::max({couplingRes / couplingTol,
+                                     std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
+                                     std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach))});
+    Eigen::VectorXd F(2 + mp_ + ml_);
+    F.head<2>() = ev.residual;
+    F.tail(mp_ + ml_) = y - ev.Hy;
+    // Line search: a pass whose merit (coupledMerit) is worse than at the last accepted
+    // iterate goes back there — to linearise anew when the Jacobian was a kept one, else to
+    // halve the update (at most 5 times; the film and contact laws are strongly nonlinear
+    // where the cavitated or contact set changes).
+    Eigen::VectorXd rScale = residualScale(ev, forceFloor, reach, couplingTol);
+    if (it.acceptedMerit < std::numeric_limits<double>::infinity() && coupledMerit(F, rScale) > it.acceptedMerit) {
+        if (!it.freshJacobian && !it.revisit) {
+            // The kept Jacobian led astray: back to the accepted iterate, linearised anew.
+            x = it.acceptedX;
+            y = it.acceptedY;
+            newtonParts_->valid = false;
+            it.revisit = true;
+            return PassOutcome::Retry;
+        }
+        if (it.backtracks < 5) {
+            ++it.backtracks;
+            x = it.acceptedX + 0.5 * (x - it.acceptedX);
+            y = it.acceptedY + 0.5 * (y - it.acceptedY);
+            return PassOutcome::Retry;
+        }
+    }
+    it.revisit = false;
+    const double rate = ctx.a0 / ctx.dt;
+    // A new linearisation when a pass did not halve the measure (or had to backtrack with a
+    // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
+    // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
+    if (it.backtracks > 0 && it.freshJacobian) it.regularize = true;  // see below
+    const bool relinearize = !newtonParts_->valid || measure > 0.5 * it.acceptedMeasure || it.backtracks > 0;
+    if (!newtonParts_->valid) it.acceptedMeasure = std::numeric_limits<double>::infinity();
+    if (relinearize) {
+        try {
+            linearizeCoupled(ctx, x, ev);
+        } catch (const std::runtime_error& e) {
+            newtonParts_->valid = false;
+            why = std::string("the film's linearisation for the coupled Newton step failed: ") + e.what();
+            return PassOutcome::Failed;
+        }
+        ++stats_.jacobians;
+    }
+    if (relinearize || rate != newtonRate_) {
+        if (!formCoupledJacobian(ctx, x, y, ev, tol.motion, iterations)) {
+            why = "a film solve of the Jacobian's difference columns failed";
+            return PassOutcome::Failed;
+        }
+        newtonRate_ = rate;
+    } else if (it.acceptedF.size()) {
+        Eigen::VectorXd step(2 + mp_ + ml_);
+        step.head<2>() = x - it.acceptedX;
+        step.tail(mp_ + ml_) = y - it.acceptedY;
+        broydenUpdate(step, F - it.acceptedF);
+    }
+    it.freshJacobian = relinearize;
+    it.backtracks = 0;
+    rScale = residualScale(ev, forceFloor, reach, couplingTol);  // the Jacobian's unknown scales
+    it.acceptedMeasure = measure;
+    it.acceptedMerit = coupledMerit(F, rScale);
+    it.acceptedX = x;
+    it.acceptedY = y;
+    it.acceptedF = F;
+    // After a failed line search with a fresh Jacobian the step is nearly singular: some
+    // combination of motion and modes changes the residual by less than its tolerance per
+    // clearance of film change (a soft elastic mode against a film of nearly equal and
+    // opposite stiffness, quasi-static). Then the Levenberg–Marquardt step in units of the
+    // tolerances (residual) and of the clearance (film-thickness change of each unknown),
+    // dz = −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, leaves such directions alone.
+    dz = -newtonInverse_ * F;
+    // Resolved to the unknowns' resolution: where the film is thin and the step short, the
+    // squeeze film makes the motion so stiff that a change of e, β by 1e-5 c_r (the
+    // resolution the motion test asks of them) changes its residual by more than the
+    // tolerance; then, with the modal equations met, a fresh Jacobian's full Newton update
+    // below that resolution and the motion residual within 10× its tolerance end the
+    // iteration (docs/coupling.md §1).
+    const double motionMeasure = std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
+                                          std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach)));
+    resolved = relinearize && couplingRes <= couplingTol && motionMeasure <= 10.0 &&
+               dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * case_.piston.clearance &&
+               std::abs(dz[0]) <= 1e-5 * tol.motion[0] && std::abs(dz[1]) <= 1e-5 * tol.motion[1];
+    if (it.regularize) dz = levenbergMarquardtStep(F, rScale);
+    if (!dz.allFinite()) {
+        why = "the Newton update of the coupled step is not finite";
+        return PassOutcome::Failed;
+    }
+    // Damped step: no update moves the film thickness anywhere by more than a quarter of the
+    // clearance (the film and contact laws are far from linear over such a distance).
+    const double largest = dz.cwiseAbs().dot(unknownScale_);  // ≥ max |Δh|
+    if (largest > 0.25 * case_.piston.clearance) dz *= 0.25 * case_.piston.clearance / largest;
+    return PassOutcome::Update;
+}
+
+bool PistonSimulation::motionJacobian(const Context& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
+                                      const Eigen::VectorXd& y, const Evaluation& ev, int& iterations) {
+    // Finite differences of the motion residual (modal coordinates frozen).
+    const Eigen::Vector2d delta = 1e-5 * tol.motion;
+    for (int i = 0; i < 2; ++i) {
+        Eigen::Vector2d xp = x;
+        xp[i] += delta[i];
+        Evaluation e2;
+        try {
+            e2 = evaluate(ctx, xp, y, false);
+        } catch (const std::runtime_error&) {
+            return false;
+        }
+        ++iterations;
+        jacobian_.col(i) = (e2.residual - ev.residual) / delta[i];
+    }
+    ++stats_.jacobians;
+    return true;
+}
+
+void PistonSimulation::partitionedUpdate(const Evaluation& ev, const Eigen::Vector2d& dx, CouplingAccelerator& acc,
+                                         Eigen::Vector2d& x, Eigen::VectorXd& y) {
+    // One fixed-point map of the joint unknowns z = (e, β, y): the chord step of the motion
+    // with y held and the modal response H with x held, accelerated together by IQN-ILS /
+    // Aitken in units of clearances of film change (docs/coupling.md §1: accelerating y
+    // alone leaves the motion lagging the modes, which diverges from 3000 rpm on).
+    const fem::Stopwatch t0;
+    const Eigen::Index m = mp_ + ml_;
+    Eigen::VectorXd z(2 + m), Gz(2 + m);
+    z << x, y;
+    Gz << x + dx, ev.Hy;
+    const Eigen::VectorXd zn =
+        acc.next(z.cwiseProduct(partitionedScale_), Gz.cwiseProduct(partitionedScale_)).cwiseQuotient(partitionedScale_);
+    x = zn.head<2>();
+    y = zn.tail(m);
+    const double tModal = t0.seconds();
+    stats_.timings.modal += tModal;
+    stats_.timings.structure += tModal;
+}
+
+void PistonSimulation::acceptStep(const Context& ctx, const State& s, const Eigen::Vector2d& x,
+                                  const Eigen::VectorXd& y, const Evaluation& ev, State& out) const {
+    out.crankDeg = ctx.crankDeg;
+    out.time = s.time + ctx.dt;
+    out.dt = ctx.dt;
+    out.x = x;
+    out.v = ev.vel;
+    out.a = ev.acc;
+    out.h = ev.h;
+    out.hRigid = ev.hRigid;
+    out.p = ev.p;
+    out.y = y;
+    out.hTotal = ev.hTotal;
+    if (pistonDynamics_ || linerDynamics_) out.w = (ctx.a0 * y + ctx.hq) / ctx.dt;  // ẏ of BDF2
+}
+
+bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
+                               std::string& failure) {
+    const Context ctx = stepContext(s, prev, dtDeg);
+    const double dt = ctx.dt;
+    Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
+    // The modal coordinates start from their linear extrapolation over the last step (at high
+    // speed y moves by hundreds of coupling tolerances per step; from y_n the first Newton passes
+    // go through the strongly nonlinear film law).
+    Eigen::VectorXd y = s.y;
+    if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.dt / s.dt) * (s.y - prev.y);
+    const bool flexible = piston_ || liner_;
+    CouplingAccelerator acc(case_.coupling.acceleration);
+    const StepTolerances tol = stepTolerances();
+    const int maxIt = case_.coupling.maxIterations;
+    Eigen::Vector2d lastX = x, lastR = Eigen::Vector2d::Zero();
+    iterations = 0;
+    failure.clear();
+    // Why the iteration failed, for the diagnosis when the step size runs out.
+    auto fail = [&](const std::string& why) {
+        failure = fmt::format("{} (after {} film solves in this attempt)", why, iterations);
+        return false;
+    };
+    NewtonIterate newton;  // coupling.method newton: the last accepted iterate
+    newton.acceptedX = x;
+    newton.acceptedY = y;
+    for (int it = 0; it < maxIt; ++it) {
+        try {
+            ev = evaluate(ctx, x, y, true);
+        } catch (const std::runtime_error&) {
+            return fail("a film solve failed");  // the caller shortens the step
+        }
+        ++iterations;
+        const double couplingRes = flexible ? couplingResidual(ctx, ev, y) : 0.0;
+        Eigen::VectorXd dz;     // coupling.method newton: the update of (e, β, y)
+        bool resolved = false;  // coupling.method newton: converged to the unknowns' resolution
+        if (linearization_) {
+            std::string why;
+            const PassOutcome pass =
+                coupledNewtonPass(ctx, tol, ev, couplingRes, newton, x, y, iterations, dz, resolved, why);
+            if (pass == PassOutcome::Retry) continue;
+            if (pass == PassOutcome::Failed) return fail(why);
+        } else if (it == 0) {
+            if (!motionJacobian(ctx, tol, x, y, ev, iterations))
+                return fail("a film solve of the finite-difference Jacobian failed");
+        } else if (!flexible) {
+            // Broyden update of the rigid motion's Jacobian. With flexible bodies the Jacobian is
+            // held through the step (a chord iteration): the joint quasi-Newton update below
+            // models the fixed-point map from its past passes, which must be one and the same map.
+            const Eigen::Vector2d dx = x - lastX, dr = ev.residual - lastR;
+            const double d2 = dx.cwiseQuotient(tol.motion).squaredNorm();
+            if (d2 > 0.0) {
+                const Eigen::Vector2d w = dx.cwiseQuotient(tol.motion).cwiseQuotient(tol.motion);
+                jacobian_ += (dr - jacobian_ * dx) * w.transpose() / d2;  // Broyden, scaled
+            }
+        }
+        const Eigen::Vector2d dx = dz.size() ? Eigen::Vector2d(dz.head<2>()) : Eigen::Vector2d(-jacobian_.partialPivLu().solve(ev.residual));
+        if (!dx.allFinite()) return fail("the Newton update is not finite");
+        const bool motionDone = std::abs(dx[0]) <= 1e-5 * tol.motion[0] && std::abs(dx[1]) <= 1e-5 * tol.motion[1] &&
+                                std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + tol.forceFloor) &&
+                                std::abs(ev.residual[1]) <= 1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach);
+        if ((motionDone && couplingRes <= tol.coupling) || resolved) {
+            if (resolved && !(motionDone && couplingRes <= tol.coupling)) ++stats_.resolvedSteps;
+            acceptStep(ctx, s, x, y, ev, out);
+            return true;
+        }
+        lastX = x;
+        lastR = ev.residual;
+        if (dz.size()) {
+            x += dx;
+            y += dz.tail(mp_ + ml_);
+        } else if (flexible) {
+            partitionedUpdate(ev, dx, acc, x, y);
+        } else {
+            x += dx;
+        }
+    }
+    failure = fmt::format("the Newton/coupling iteration did not converge in coupling.max_iterations = {} passes "
+                          "({} film solves, Jacobian included)", maxIt, iterations);
+    return false;
+}
+
+}  // namespace flexehd::cosim
