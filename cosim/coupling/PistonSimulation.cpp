@@ -190,11 +190,22 @@ void PistonSimulation::broydenUpdate(const Eigen::VectorXd& s, const Eigen::Vect
 PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, const Eigen::Vector2d& x,
                                                         const Eigen::VectorXd& y, bool structure) {
     Evaluation ev;
+    filmThickness(ctx, x, y, ev);
+    const fem::Stopwatch t0;
+    contactAndFloor(ev);
+    solveFilm(ctx, ev);
+    stats_.timings.film += t0.seconds();
+    motionResidual(ctx, x, ev);
+    if (structure && (piston_ || liner_)) structureResponse(ctx, ev);
+    return ev;
+}
+
+void PistonSimulation::filmThickness(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                                     Evaluation& ev) {
     fem::Stopwatch t0;
     film_.rigidThickness(x[0], x[1], ev.hRigid);
     if (clearance_) clearance_->add(ctx.offset, ev.hRigid);  // distortion, thermal (seed eq. 2)
     ev.h = ev.hRigid;
-    const bool elasticSqueeze = case_.coupling.elasticSqueeze;
     const double rigidSeconds = t0.seconds();
     if (piston_ || liner_) {
         // Elastic Δh of y at this offset; the Jacobian's evaluations reuse the pass's (y frozen).
@@ -212,7 +223,9 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
         stats_.timings.structure += dt;
     }
     stats_.timings.film += rigidSeconds;
-    t0.restart();
+}
+
+void PistonSimulation::contactAndFloor(Evaluation& ev) const {
     const lube::FilmGrid& g = film_.grid();
     // Where the surfaces touch or overlap, the contact pressure of the unfloored h (asperities,
     // and the coating's hard contact below h = 0) carries the load; the Reynolds equation sees h
@@ -241,12 +254,16 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
             ++ev.floored;
         }
     }
+}
+
+void PistonSimulation::solveFilm(const Context& ctx, Evaluation& ev) {
+    const lube::FilmGrid& g = film_.grid();
     const State& n = *ctx.now;
     const State& b = *ctx.before;
     // Squeeze term: BDF2 of the whole (unfloored) film thickness with coupling.elastic_squeeze,
     // else of the rigid film thickness only (docs/coupling.md §3: with the elastic rate the
     // partitioned coupling has a gain ∝ 1/Δt and does not converge; it needs the Newton method).
-    if (elasticSqueeze)
+    if (case_.coupling.elasticSqueeze)
         ev.dhdt = (ctx.a0 * ev.hTotal + ctx.a1 * n.hTotal + ctx.a2 * b.hTotal) / ctx.dt;
     else
         ev.dhdt = (ctx.a0 * ev.hRigid + ctx.a1 * n.hRigid + ctx.a2 * b.hRigid) / ctx.dt;
@@ -267,8 +284,11 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     ev.loads = lube::integrateFilm(g, fs, solver_.lubricant(), ev.p, io);
     const Eigen::Vector3d F = ev.loads.totalForce();
     ev.action = {F.x(), F.z(), ev.loads.moment.y()};
-    stats_.timings.film += t0.seconds();
+}
 
+void PistonSimulation::motionResidual(const Context& ctx, const Eigen::Vector2d& x, Evaluation& ev) const {
+    const State& n = *ctx.now;
+    const State& b = *ctx.before;
     ev.vel = (ctx.a0 * x + ctx.a1 * n.x + ctx.a2 * b.x) / ctx.dt;
     ev.acc = (ctx.a0 * ev.vel + ctx.a1 * n.v + ctx.a2 * b.v) / ctx.dt;
     const Eigen::Vector2d Ma = dyn_.mass(ctx.crank) * ev.acc;
@@ -280,35 +300,35 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
                   std::abs(ctx.crank.tanRod) * (mTot * A + std::abs(ctx.gas) + std::abs(ev.action.fz));
     ev.scale[1] = std::abs(Ma[1]) + std::abs(ev.action.my) + std::abs(case_.engine.pinOffset * ctx.gas) +
                   case_.piston.mass * std::abs(case_.piston.cgX) * A;
-    if (structure && (piston_ || liner_)) {
-        t0.restart();
-        const Eigen::VectorXd ptot = ev.p + ev.pc;
-        ev.Hy.resize(mp_ + ml_);
-        Eigen::VectorXd fp, fl, q;
-        if (piston_) piston_->modalForce(ptot, 0.0, fp);  // load mapping: Φᵀ A p
-        if (liner_) liner_->modalForce(ptot, ctx.offset, fl);
-        const double tMap = t0.seconds();
-        t0.restart();
-        if (piston_) {  // modal update: q = C f, or the BDF2 step of the modal dynamics
-            if (pistonDynamics_)
-                pistonDynamics_->respond(fp, ctx.hq.head(mp_), ctx.hv.head(mp_), q);
-            else
-                piston_->quasiStatic(fp, q);
-            ev.Hy.head(mp_) = q;
-        }
-        if (liner_) {
-            if (linerDynamics_)
-                linerDynamics_->respond(fl, ctx.hq.tail(ml_), ctx.hv.tail(ml_), q);
-            else
-                liner_->quasiStatic(fl, q);
-            ev.Hy.tail(ml_) = q;
-        }
-        const double tModal = t0.seconds();
-        stats_.timings.mapping += tMap;
-        stats_.timings.modal += tModal;
-        stats_.timings.structure += tMap + tModal;
+}
+
+void PistonSimulation::structureResponse(const Context& ctx, Evaluation& ev) {
+    fem::Stopwatch t0;
+    const Eigen::VectorXd ptot = ev.p + ev.pc;
+    ev.Hy.resize(mp_ + ml_);
+    Eigen::VectorXd fp, fl, q;
+    if (piston_) piston_->modalForce(ptot, 0.0, fp);  // load mapping: Φᵀ A p
+    if (liner_) liner_->modalForce(ptot, ctx.offset, fl);
+    const double tMap = t0.seconds();
+    t0.restart();
+    if (piston_) {  // modal update: q = C f, or the BDF2 step of the modal dynamics
+        if (pistonDynamics_)
+            pistonDynamics_->respond(fp, ctx.hq.head(mp_), ctx.hv.head(mp_), q);
+        else
+            piston_->quasiStatic(fp, q);
+        ev.Hy.head(mp_) = q;
     }
-    return ev;
+    if (liner_) {
+        if (linerDynamics_)
+            linerDynamics_->respond(fl, ctx.hq.tail(ml_), ctx.hv.tail(ml_), q);
+        else
+            liner_->quasiStatic(fl, q);
+        ev.Hy.tail(ml_) = q;
+    }
+    const double tModal = t0.seconds();
+    stats_.timings.mapping += tMap;
+    stats_.timings.modal += tModal;
+    stats_.timings.structure += tMap + tModal;
 }
 
 StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cycle, double stepDeg,

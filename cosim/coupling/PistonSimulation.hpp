@@ -124,7 +124,15 @@ private:
     struct State;
     struct Context;
     struct Evaluation;
+    /// One iterate (e, β, y) of the step: film thickness, contact, film solve and loads, the
+    /// motion's residual and (structure) the bodies' response H(y).
     Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
+    // The stages of evaluate.
+    void filmThickness(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, Evaluation& ev);
+    void contactAndFloor(Evaluation& ev) const;
+    void solveFilm(const Context& ctx, Evaluation& ev);
+    void motionResidual(const Context& ctx, const Eigen::Vector2d& x, Evaluation& ev) const;
+    void structureResponse(const Context& ctx, Evaluation& ev);
     bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
                  std::string& failure);
     // The stages of advance (StepIteration.cpp).
