@@ -38,12 +38,9 @@
 
 namespace flexehd::cosim {
 
-void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev) {
+void PistonSimulation::filmChangeColumns(const Context& ctx, const Eigen::Vector2d& x) {
     const lube::FilmGrid& g = film_.grid();
-    const int n = g.size(), m = mp_ + ml_, k = 2 + m;
-    const bool elasticRate = case_.coupling.elasticSqueeze;
-    fem::Stopwatch t0;
-
+    const int n = g.size(), k = 2 + mp_ + ml_;
     // δh per unknown: the rigid thickness is linear in (e, β); the modal columns are Ψ (zero on
     // Void nodes; the piston's are constant and written once). Kept between calls: n × k.
     Eigen::MatrixXd& Dh = jacobianDh_;
@@ -68,6 +65,26 @@ void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2
         Dh.rightCols(ml_) = psiLiner_;
         psiLinerOffset_ = ctx.offset;
     }
+}
+
+Eigen::Matrix<double, 2, 6> PistonSimulation::actionGradient(const Context& ctx) const {
+    // The equations of motion's right-hand side is affine in the film action (F_x, F_z, M_y).
+    Eigen::Matrix<double, 2, 6> dForce = Eigen::Matrix<double, 2, 6>::Zero();
+    const Eigen::Vector2d f0 = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 0.0});
+    dForce.col(0) = dyn_.force(ctx.crank, ctx.gas, FilmAction{1.0, 0.0, 0.0}) - f0;
+    dForce.col(2) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 1.0, 0.0}) - f0;
+    dForce.col(4) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 1.0}) - f0;
+    return dForce;
+}
+
+void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev) {
+    const lube::FilmGrid& g = film_.grid();
+    const int n = g.size(), m = mp_ + ml_;
+    const bool elasticRate = case_.coupling.elasticSqueeze;
+    fem::Stopwatch t0;
+
+    filmChangeColumns(ctx, x);
+    const Eigen::MatrixXd& Dh = jacobianDh_;
     // The parts hold the modal columns only: formCoupledJacobian takes the (e, β) columns by
     // differences of full evaluations. The film sees the floored thickness (no δh where the floor
     // holds); the rate sees the unfloored one, and the modes only with coupling.elastic_squeeze.
@@ -116,13 +133,7 @@ void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2
     io.cavitationPressure = case_.lubricant.cavitationPressure;
     io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
     const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, ev.p, io);
-    Eigen::Matrix<double, 2, 6> dForce = Eigen::Matrix<double, 2, 6>::Zero();  // ∂f/∂(F, M)
-    {
-        const Eigen::Vector2d f0 = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 0.0});
-        dForce.col(0) = dyn_.force(ctx.crank, ctx.gas, FilmAction{1.0, 0.0, 0.0}) - f0;
-        dForce.col(2) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 1.0, 0.0}) - f0;
-        dForce.col(4) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 1.0}) - f0;
-    }
+    const Eigen::Matrix<double, 2, 6> dForce = actionGradient(ctx);  // ∂f/∂(F, M)
     P.motionH = -dForce * G.change(dPh, PsiFilm, contact_ ? dPc : Eigen::MatrixXd());
     P.motionRate = elasticRate ? Eigen::MatrixXd(-dForce * G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd()))
                                : Eigen::MatrixXd(2, 0);

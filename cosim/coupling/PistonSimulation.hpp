@@ -160,6 +160,10 @@ private:
     /// coupling.method newton: linearises (motion residual, y − H(y)) in (e, β, y) at the
     /// evaluation into the parts of CoupledJacobianParts (CoupledNewton.cpp, docs/coupling.md §1, §3)
     void linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
+    /// ∂h/∂(e, β, y) on the grid into jacobianDh_ (the modal columns Ψ; the liner's per offset).
+    void filmChangeColumns(const Context& ctx, const Eigen::Vector2d& x);
+    /// ∂(equations of motion's right-hand side)/∂(F_x, ·, F_z, ·, M_y, ·): 2 × 6, from the dynamics.
+    Eigen::Matrix<double, 2, 6> actionGradient(const Context& ctx) const;
     void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
     /// Forms the coupled Jacobian at the context's step size (its (e, β) columns by differences of
     /// two full evaluations, counted in filmSolves) and its inverse; false if a film solve failed.

@@ -1,7 +1,8 @@
 #pragma once
 // The private per-step structures of PistonSimulation, shared by its translation units
-// (PistonSimulation.cpp: the cycle loop and step control; StepIteration.cpp: one step's
-// Newton/coupling iteration; CoupledNewton.cpp: the Jacobian of the coupled Newton method).
+// (PistonSimulation.cpp: the cycle loop and step control; IterateEvaluation.cpp: one iterate;
+// StepIteration.cpp: one step's Newton/coupling iteration; CoupledNewton.cpp: the Jacobian of
+// the coupled Newton method).
 // Not part of the public interface.
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/FilmIntegrals.hpp"
