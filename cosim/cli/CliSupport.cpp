@@ -108,12 +108,6 @@ void followParentProcess() {
     if (::getppid() != pid) std::_Exit(143);  // the parent died before the request: as SIGTERM would
 }
 
-double peakMemoryMiB() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_maxrss / 1024.0;  // Linux reports KiB
-}
-
 void printJson(const nlohmann::json& doc) { std::cout << doc.dump(2) << std::endl; }
 
 }  // namespace flexehd::cli

@@ -7,6 +7,7 @@
 
 #include "fem/Material.hpp"
 #include "fem/MeshReader.hpp"
+#include "fem/PeakMemory.hpp"
 #include "fem/Stopwatch.hpp"
 
 namespace flexehd::cli {
@@ -51,7 +52,7 @@ int exitCode();
 void followParentProcess();
 
 /// Peak resident memory of this process so far, MiB (getrusage).
-double peakMemoryMiB();
+using fem::peakMemoryMiB;
 
 /// Prints a JSON document on stdout (the `--json` convention: nothing else goes there).
 void printJson(const nlohmann::json& doc);
