@@ -148,6 +148,9 @@ private:
     PassOutcome coupledNewtonPass(const Context& ctx, const StepTolerances& tol, const Evaluation& ev,
                                   double couplingRes, NewtonIterate& it, Eigen::Vector2d& x, Eigen::VectorXd& y,
                                   int& iterations, Eigen::VectorXd& dz, bool& resolved, std::string& why);
+    /// The coupled Newton iteration has converged to the resolution of its unknowns.
+    bool resolvedToTheUnknownsResolution(const StepTolerances& tol, const Evaluation& ev, double couplingRes,
+                                         const Eigen::VectorXd& dz) const;
     /// The finite-difference Jacobian of the motion residual (modal coordinates frozen).
     bool motionJacobian(const Context& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
                         const Eigen::VectorXd& y, const Evaluation& ev, int& iterations);

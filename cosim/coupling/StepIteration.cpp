@@ -155,17 +155,7 @@ PistonSimulation::PassOutcome PistonSimulation::coupledNewtonPass(const Context&
     // tolerances (residual) and of the clearance (film-thickness change of each unknown),
     // dz = −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, leaves such directions alone.
     dz = -newtonInverse_ * F;
-    // Resolved to the unknowns' resolution: where the film is thin and the step short, the
-    // squeeze film makes the motion so stiff that a change of e, β by 1e-5 c_r (the
-    // resolution the motion test asks of them) changes its residual by more than the
-    // tolerance; then, with the modal equations met, a fresh Jacobian's full Newton update
-    // below that resolution and the motion residual within 10× its tolerance end the
-    // iteration (docs/coupling.md §1).
-    const double motionMeasure = std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
-                                          std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach)));
-    resolved = relinearize && couplingRes <= couplingTol && motionMeasure <= 10.0 &&
-               dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * case_.piston.clearance &&
-               std::abs(dz[0]) <= 1e-5 * tol.motion[0] && std::abs(dz[1]) <= 1e-5 * tol.motion[1];
+    resolved = relinearize && resolvedToTheUnknownsResolution(tol, ev, couplingRes, dz);
     if (it.regularize) dz = levenbergMarquardtStep(F, rScale);
     if (!dz.allFinite()) {
         why = "the Newton update of the coupled step is not finite";
@@ -176,6 +166,21 @@ PistonSimulation::PassOutcome PistonSimulation::coupledNewtonPass(const Context&
     const double largest = dz.cwiseAbs().dot(unknownScale_);  // ≥ max |Δh|
     if (largest > 0.25 * case_.piston.clearance) dz *= 0.25 * case_.piston.clearance / largest;
     return PassOutcome::Update;
+}
+
+bool PistonSimulation::resolvedToTheUnknownsResolution(const StepTolerances& tol, const Evaluation& ev,
+                                                       double couplingRes, const Eigen::VectorXd& dz) const {
+    // Where the film is thin and the step short, the squeeze film makes the motion so stiff that
+    // a change of e, β by 1e-5 c_r (the resolution the motion test asks of them) changes its
+    // residual by more than the tolerance; then, with the modal equations met, a fresh
+    // Jacobian's full Newton update below that resolution and the motion residual within 10× its
+    // tolerance end the iteration (docs/coupling.md §1).
+    const double motionMeasure =
+        std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + tol.forceFloor)),
+                 std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach)));
+    return couplingRes <= tol.coupling && motionMeasure <= 10.0 &&
+           dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * case_.piston.clearance &&
+           std::abs(dz[0]) <= 1e-5 * tol.motion[0] && std::abs(dz[1]) <= 1e-5 * tol.motion[1];
 }
 
 bool PistonSimulation::motionJacobian(const Context& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
