@@ -2,7 +2,6 @@
 
 #include "cosim/mapping/LinerSurfaceMapping.hpp"
 #include "cosim/mapping/PistonSurfaceMapping.hpp"
-#include "modal/ModalSuperposition.hpp"
 
 #include <Eigen/Geometry>
 
@@ -12,39 +11,18 @@
 
 namespace flexehd::cosim {
 
-namespace {
-std::vector<int> heldIndices(const modal::ReducedBody& body, const std::vector<std::string>& held,
-                             const std::string& what) {
-    std::vector<int> out;
-    std::string names;
-    for (std::size_t i = 0; i < body.interfaces.size(); ++i) {
-        names += (names.empty() ? "" : ", ") + body.interfaces[i].group;
-        if (held.empty() || std::find(held.begin(), held.end(), body.interfaces[i].group) != held.end())
-            out.push_back(int(i));
-    }
-    for (const std::string& h : held) {
-        bool found = false;
-        for (const auto& itf : body.interfaces) found = found || itf.group == h;
-        if (!found)
-            throw std::invalid_argument(what + ": interface '" + h + "' is not in the reduced body (it has: " +
-                                        (names.empty() ? std::string("none") : names) + ")");
-    }
-    if (out.empty()) throw std::invalid_argument(what + ": the reduced body has no interface to hold");
-    return out;
-}
-}  // namespace
 
 FlexibleSurface::FlexibleSurface(modal::ReducedBody body, Side side, const std::string& surface,
                                  const std::vector<std::string>& held, const lube::FilmGrid& grid, double zMin, double zMax)
-    : body_(std::move(body)), surface_(surface) {
-    const std::string what = body_.meshPath.empty() ? std::string("reduced body") : body_.meshPath;
-    // Compliance with the held reference nodes fixed, C = N (Nᵀ K N)⁻¹ Nᵀ (once).
-    held_ = heldIndices(body_, held, what);
-    compliance_ = modal::ModalSuperposition(body_).compliance(held_);
+    : FlexibleSurface(std::make_shared<const FlexibleBody>(std::move(body), held), side, surface, grid, zMin, zMax) {}
+
+FlexibleSurface::FlexibleSurface(std::shared_ptr<const FlexibleBody> body, Side side, const std::string& surface,
+                                 const lube::FilmGrid& grid, double zMin, double zMax)
+    : flexible_(std::move(body)), surface_(surface) {
     if (side == Side::Piston)
-        mapping_ = std::make_unique<PistonSurfaceMapping>(body_, surface, grid);
+        mapping_ = std::make_unique<PistonSurfaceMapping>(flexible_->body(), surface, grid);
     else
-        mapping_ = std::make_unique<LinerSurfaceMapping>(body_, surface, grid, zMin, zMax);
+        mapping_ = std::make_unique<LinerSurfaceMapping>(flexible_->body(), surface, grid, zMin, zMax);
 }
 
 void FlexibleSurface::modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& f) const {

@@ -263,5 +263,10 @@ TEST(PressedSkirt, SettlesAtTheGapOfTheStaticFiniteElementSolution) {
     EXPECT_LT(std::abs(r.tilt - xf[1]), 0.05 * std::abs(xf[1]));
     EXPECT_GT(r.hardContactForce * r.contactForce, 0.0) << "the press must reach the hard contact";
     EXPECT_LT(r.minFilm, 0.0);
+    // 3. A second surface in front of the same body (its compliance shared, not recomputed), as
+    //    a further film contact on the piston would hold it, answers as the master's own.
+    const FlexibleSurface second(sim.piston()->flexibleBody(), FlexibleSurface::Side::Piston, sim.piston()->surface(), g);
+    EXPECT_EQ(second.flexibleBody().get(), sim.piston()->flexibleBody().get());
+    EXPECT_EQ((reducedCompliance(second, g) - reducedCompliance(*sim.piston(), g)).cwiseAbs().maxCoeff(), 0.0);
     std::filesystem::remove_all(dir);
 }
