@@ -1,9 +1,9 @@
-// Benchmark of the grid/structure mappings: load mapping (cosim/LoadMapping: common refinement
-// and sparse assembly, once) and deformation mapping (cosim/DeformationMapping: Clough–Tocher
+// Benchmark of the grid/structure mappings: load mapping (cosim/mapping/LoadMapping: common refinement
+// and sparse assembly, once) and deformation mapping (cosim/mapping/DeformationMapping: Clough–Tocher
 // rows, once); setup and one application (per coupling call) timed separately, as coupling
-// libraries do; the modal pre-multiplied operators (cosim/ModalMapping: modes × grid,
+// libraries do; the modal pre-multiplied operators (cosim/mapping/ModalMapping: modes × grid,
 // grid × modes) with real Craig–Bampton shapes; and the liner with the moving grid
-// (cosim/MovingGridMapping) against rebuilding both operators at each piston position, with
+// (cosim/mapping/MovingGridMapping) against rebuilding both operators at each piston position, with
 // the shear tractions (friction on the liner) through the same projection.
 //   bench_mapping [MESH_SIZE_M] [N_AXIAL] [N_THETA] [MODES] [LINER_SIZE_M] [FIXED_ROWS]
 // Defaults: piston.geo at 0.004 m, a 100 × 200 = 20 000-node full-circumference skirt grid,

@@ -1,4 +1,4 @@
-// The case file (cosim/CaseFile) and the cylinder-pressure function (cosim/CylinderPressure):
+// The case file (cosim/case/CaseFile) and the cylinder-pressure function (cosim/engine/CylinderPressure):
 // the shipped example reads and holds the documented values; every kind of bad input is an
 // error naming the file and the key; periodic piecewise-linear interpolation against hand
 // values; the example's piston mass properties against an integration over the piston mesh.

@@ -1,4 +1,4 @@
-// Deformation mapping (cosim/DeformationMapping): Clough–Tocher C¹ interpolation of nodal
+// Deformation mapping (cosim/mapping/DeformationMapping): Clough–Tocher C¹ interpolation of nodal
 // fields onto the film grid. Polynomial reproduction, continuity across θ = ±π, convergence.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -152,7 +152,7 @@ TEST(DeformationMapping, DegenerateInputs) {
     EXPECT_EQ(map.outsideNodes().size(), 2u * 16u);  // rows z = -0.04 and 0.03
 }
 
-// Liner with a moving grid (cosim/MovingGridMapping): bore-fixed Clough–Tocher rows, cubic
+// Liner with a moving grid (cosim/mapping/MovingGridMapping): bore-fixed Clough–Tocher rows, cubic
 // Hermite in z to the shifted rows. u = (g(z), 0, 0) with g quadratic is reproduced exactly
 // (u_r = g(z + s) cos θ); a smooth field agrees with the operator rebuilt at each offset.
 TEST(MovingGridMapping, LinerDeformationAtAnyOffset) {

@@ -1,4 +1,4 @@
-// Conservative load mapping (cosim/LoadMapping): force, moment and virtual work of the mapped
+// Conservative load mapping (cosim/mapping/LoadMapping): force, moment and virtual work of the mapped
 // nodal forces against closed-form integrals of the bilinear grid field over the cylinder.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -367,7 +367,7 @@ TEST(LoadMapping, ShearTractionForceAndMomentAgainstClosedForms) {
     EXPECT_THROW((void)plain.applyShear(Eigen::VectorXd::Ones(g.size()), Eigen::VectorXd()), std::logic_error);
 }
 
-// Liner with a moving grid (cosim/MovingGridMapping): bore operator precomputed once on a
+// Liner with a moving grid (cosim/mapping/MovingGridMapping): bore operator precomputed once on a
 // bore-fixed grid (h = 0.5 mm); per offset the grid pressure is L2-projected onto it in z.
 // Force and moment about the origin equal the closed forms of the moving grid's bilinear field
 // at that offset, for offsets on and off the fixed rows, down to the fixed grid's end.

@@ -1,4 +1,4 @@
-// Modal pre-multiplied mappings (cosim/ModalMapping) on a Craig–Bampton piston: equal to the
+// Modal pre-multiplied mappings (cosim/mapping/ModalMapping) on a Craig–Bampton piston: equal to the
 // two-step nodal route, rigid-body modal forces equal to the closed-form resultant of the
 // source, and the quasi-static modal grid deformation against the full finite-element solution.
 #include <gmock/gmock.h>

@@ -1,4 +1,4 @@
-// The liner's moving-grid mapping (cosim/MovingGridMapping) beyond pressure: the shear tractions
+// The liner's moving-grid mapping (cosim/mapping/MovingGridMapping) beyond pressure: the shear tractions
 // (friction) through the same axial projection, against closed-form integrals of the moving
 // grid's bilinear fields; and a physical check of the modal liner route on a real Craig–Bampton
 // liner against the full finite-element static solution of the same mesh.
