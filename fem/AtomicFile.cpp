@@ -1,5 +1,7 @@
 #include "fem/AtomicFile.hpp"
 
+#include <fstream>
+
 #include <filesystem>
 #include <vector>
 #include <stdexcept>
@@ -24,6 +26,15 @@ void writeAtomically(const std::string& path, const std::function<void(const std
         fs::remove(tmp, ignored);  // nothing half-done stays behind
         throw std::runtime_error("cannot write '" + path + "': " + ec.message());
     }
+}
+
+void writeTextAtomically(const std::string& path, const std::string& text) {
+    writeAtomically(path, [&](const std::string& tmp) {
+        std::ofstream f(tmp);
+        f << text;
+        f.close();
+        if (!f) throw std::runtime_error("cannot write " + tmp);
+    });
 }
 
 int removeStaleTemporaries(const std::string& directory) {

@@ -36,12 +36,7 @@ VariantJob::VariantJob(const cosim::Study& study, const cosim::StudyVariant& var
             steps_.push_back(std::move(s));
         }
         const std::string text = cosim::variantCaseText(study, variant, files);
-        fem::writeAtomically(dir_ + "/case.yaml", [&](const std::string& tmp) {
-            std::ofstream f(tmp);
-            f << text;
-            f.close();
-            if (!f) throw std::runtime_error("cannot write " + tmp);
-        });
+        fem::writeTextAtomically(dir_ + "/case.yaml", text);
         Step run{{executable, "run", dir_ + "/case.yaml", "--out", dir_, "--quiet"}, "the run", "", ""};
         if (study.run.rigid) run.argv.push_back("--rigid");
         if (study.run.cycles > 0) run.argv.insert(run.argv.end(), {"--cycles", std::to_string(study.run.cycles)});

@@ -108,11 +108,7 @@ std::vector<std::string> writeModeShapes(const std::string& directory, const fem
         pvd.add(double(k + 1), name);
     }
     pvd.write((dir / "modes.pvd").string());
-    fem::writeAtomically(stamp.string(), [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << fingerprint << "\n";
-        if (!f) throw std::runtime_error("cannot write " + tmp);
-    });
+    fem::writeTextAtomically(stamp.string(), fingerprint + "\n");
     return files;
 }
 

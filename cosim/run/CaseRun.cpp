@@ -115,11 +115,7 @@ double writeBodyModes(const std::string& dir, const PistonSimulation& sim, const
 }
 
 void writeSummary(const std::string& dir, const nlohmann::json& doc) {
-    fem::writeAtomically(dir + "/summary.json", [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << doc.dump(2) << "\n";
-        if (!f) throw std::runtime_error("cannot write " + tmp);
-    });
+    fem::writeTextAtomically(dir + "/summary.json", doc.dump(2) + "\n");
 }
 
 }  // namespace

@@ -60,15 +60,6 @@ const json* lookup(const json& doc, const std::string& dotted) {
     }
 }
 
-void writeText(const std::string& path, const std::string& text) {
-    fem::writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << text;
-        f.close();
-        if (!f) throw std::runtime_error("cannot write " + tmp);
-    });
-}
-
 }  // namespace
 
 std::string variantDirectory(const Study& study, const StudyVariant& variant) {
@@ -146,8 +137,8 @@ void writeStudyTables(const Study& study, const std::vector<VariantResult>& resu
                       {"counts", {{"variants", n}, {"ok", ok}, {"failed", failed}, {"pending", n - ok - failed}}},
                       {"variants", rows}};
     fs::create_directories(study.directory);
-    writeText((fs::path(study.directory) / "study.csv").string(), csv);
-    writeText((fs::path(study.directory) / "study.json").string(), doc.dump(2) + "\n");
+    fem::writeTextAtomically((fs::path(study.directory) / "study.csv").string(), csv);
+    fem::writeTextAtomically((fs::path(study.directory) / "study.json").string(), doc.dump(2) + "\n");
 }
 
 std::string serializeResult(const VariantResult& r) {

@@ -156,11 +156,7 @@ nlohmann::json writeThermalResults(const std::string& dir, const std::string& ca
     doc["output"] = {{"directory", dir}, {"files", files}};
     doc["timings_s"] = {{"write", w.seconds()}, {"total", total.seconds()}};
     doc["peak_memory_mib"] = fem::peakMemoryMiB();
-    fem::writeAtomically((fs::path(dir) / "summary.json").string(), [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << doc.dump(2) << "\n";
-        if (!f) throw std::runtime_error("cannot write " + tmp);
-    });
+    fem::writeTextAtomically((fs::path(dir) / "summary.json").string(), doc.dump(2) + "\n");
 
     return doc;
 }
