@@ -1,6 +1,7 @@
 #include "cosim/results/RunSummary.hpp"
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <numbers>
 #include <optional>
@@ -15,6 +16,7 @@ using Json = nlohmann::json;
 struct Source {
     const RunSummaryInput& in;
     std::optional<CycleMetrics> m;  // with two records or more
+    std::array<ClearanceRange, 3> centred;  // at TDC, mid-stroke, BDC (computed once)
     const RunStatistics& st() const { return in.sim.statistics(); }
 };
 
@@ -36,11 +38,10 @@ void addCentredClearance(std::vector<Entry>& table) {
         {"centred_clearance_m.tdc.min", "centred_clearance_m.tdc.mean", "centred_clearance_m.tdc.max"},
         {"centred_clearance_m.mid_stroke.min", "centred_clearance_m.mid_stroke.mean", "centred_clearance_m.mid_stroke.max"},
         {"centred_clearance_m.bdc.min", "centred_clearance_m.bdc.mean", "centred_clearance_m.bdc.max"}};
-    const double crankDeg[3] = {0.0, 90.0, 180.0};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-            table.push_back({keys[i][j], [deg = crankDeg[i], j](const Source& s) {
-                                 const ClearanceRange r = s.in.sim.centredClearance(deg);
+            table.push_back({keys[i][j], [i, j](const Source& s) {
+                                 const ClearanceRange& r = s.centred[std::size_t(i)];
                                  return Json(j == 0 ? r.min : j == 1 ? r.mean : r.max);
                              }});
 }
@@ -117,7 +118,9 @@ Json::json_pointer pointer(const std::string& dotted) {
 }  // namespace
 
 nlohmann::json runSummary(const RunSummaryInput& in) {
-    Source s{in, std::nullopt};
+    Source s{in, std::nullopt, {}};
+    const double crankDeg[3] = {0.0, 90.0, 180.0};
+    for (int i = 0; i < 3; ++i) s.centred[std::size_t(i)] = in.sim.centredClearance(crankDeg[i]);
     if (in.cycle.size() >= 2) {
         const double volume = 0.25 * std::numbers::pi * in.c.engine.bore * in.c.engine.bore * in.c.engine.stroke;
         s.m = cycleMetrics(in.cycle, in.sim.dynamics(), volume);
