@@ -8,13 +8,12 @@
 //                                                            the rigid one, or the whole one with
 //                                                            coupling.elastic_squeeze)
 //
-// The modal column j follows from the film-change shape Ψ_j and, with the elastic rate,
-// δḣ_j = (a0/Δt) Ψ_j: δp_j from the film's linearisation with its cavitated set held
-// (lube::FilmLinearization — a generalized Jacobian of the semismooth equation),
-// δp_c,j = p_c'(h) Ψ_j, then the film action by a small difference of the (affine in p, smooth in
-// h) film integrals, and the modal response of the mapped δp_j + δp_c,j. The (e, β) columns are
-// differences of two full evaluations (formCoupledJacobian): a rigid motion moves the cavitation
-// boundary, which the held set misses.
+// The modal columns come from the contacts (FilmContact::linearize; the skirt's:
+// SkirtContactLinearization.cpp): each gives the change of its load and of its modal load with y,
+// the master maps the summed load change through the equations of motion and the summed modal load
+// through the bodies' response. The (e, β) columns are differences of two full evaluations
+// (formCoupledJacobian): a rigid motion moves the cavitation boundary, which the contacts'
+// held-set linearisations miss.
 //
 // At a linearisation point the modal columns are affine in the rate r = a0/Δt, up to the dynamic
 // response's step matrix S(r):
@@ -22,9 +21,6 @@
 // The parts are kept (CoupledJacobianParts) and the Jacobian is re-formed for a new step size
 // without a new linearisation — a step-size change alone costs a dense refactorization.
 #include "cosim/coupling/PistonSimulationState.hpp"
-
-#include "lube/FilmIntegrals.hpp"
-#include "lube/FilmLoadGradient.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -38,35 +34,6 @@
 
 namespace flexehd::cosim {
 
-void PistonSimulation::filmChangeColumns(const Context& ctx, const Eigen::Vector2d& x) {
-    const lube::FilmGrid& g = film_.grid();
-    const int n = g.size(), k = 2 + mp_ + ml_;
-    // δh per unknown: the rigid thickness is linear in (e, β); the modal columns are Ψ (zero on
-    // Void nodes; the piston's are constant and written once). Kept between calls: n × k.
-    Eigen::MatrixXd& Dh = jacobianDh_;
-    if (Dh.rows() != n || Dh.cols() != k) {
-        Dh.resize(n, k);
-        if (piston_) Dh.middleCols(2, mp_) = psiPiston_;
-    }
-    {
-        const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
-        const Eigen::Vector2d d(1e-3 * case_.piston.clearance, 1e-3 * case_.piston.clearance / reach);
-        Eigen::VectorXd h0, h1;
-        film_.rigidThickness(x[0], x[1], h0);
-        for (int i = 0; i < 2; ++i) {
-            Eigen::Vector2d xi = x;
-            xi[i] += d[i];
-            film_.rigidThickness(xi[0], xi[1], h1);
-            for (int r = 0; r < n; ++r) Dh(r, i) = g.kind(r) == lube::NodeKind::Void ? 0.0 : (h1[r] - h0[r]) / d[i];
-        }
-    }
-    if (liner_ && !(psiLinerOffset_ == ctx.offset)) {  // once per step (the offset is the step's)
-        liner_->filmChangeShapes(ctx.offset, psiLiner_);
-        Dh.rightCols(ml_) = psiLiner_;
-        psiLinerOffset_ = ctx.offset;
-    }
-}
-
 Eigen::Matrix<double, 2, 6> PistonSimulation::actionGradient(const Context& ctx) const {
     // The equations of motion's right-hand side is affine in the film action (F_x, F_z, M_y).
     Eigen::Matrix<double, 2, 6> dForce = Eigen::Matrix<double, 2, 6>::Zero();
@@ -78,97 +45,49 @@ Eigen::Matrix<double, 2, 6> PistonSimulation::actionGradient(const Context& ctx)
 }
 
 void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev) {
-    const lube::FilmGrid& g = film_.grid();
-    const int n = g.size(), m = mp_ + ml_;
-    const bool elasticRate = case_.coupling.elasticSqueeze;
-    fem::Stopwatch t0;
-
-    filmChangeColumns(ctx, x);
-    const Eigen::MatrixXd& Dh = jacobianDh_;
-    // The parts hold the modal columns only: formCoupledJacobian takes the (e, β) columns by
-    // differences of full evaluations. The film sees the floored thickness (no δh where the floor
-    // holds); the rate sees the unfloored one, and the modes only with coupling.elastic_squeeze.
-    const Eigen::MatrixXd Psi = Dh.rightCols(m);
-    Eigen::MatrixXd flooredPsi;
-    if (ev.floored > 0) {
-        flooredPsi = Psi;
-        for (int r = 0; r < n; ++r)
-            if (ev.h[r] != ev.hTotal[r]) flooredPsi.row(r).setZero();
-    }
-    const Eigen::MatrixXd& PsiFilm = ev.floored > 0 ? flooredPsi : Psi;
-
-    // δp from the film's linearisation at the evaluation's solution: the thickness part and the
-    // rate part (per unit rate) apart.
-    lube::FilmState fs;
-    fs.h = ev.h;
-    fs.dhdt = ev.dhdt;
-    fs.outer.axial = -ctx.crank.velocity;
-    const lube::Lubricant& lub = solver_.lubricant();
-    Eigen::VectorXd rho(n), eta(n);
-    for (int r = 0; r < n; ++r) {
-        rho[r] = lub.density(ev.p[r]);
-        eta[r] = lub.viscosity(ev.p[r]);
-    }
-    linearization_->linearize(fs, rho, eta, ev.p, case_.lubricant.cavitationPressure);
+    // Each contact's load change with y; the motion rows through the film action (f is affine in
+    // (F_x, F_z, M_y)), the modal rows as the contacts' modal loads (the bodies' response is applied
+    // when the Jacobian is formed: it depends on the step size with bodies.response: dynamic).
     CoupledJacobianParts& P = *newtonParts_;
-    const Eigen::MatrixXd dPh = linearization_->pressureChange(PsiFilm, Eigen::MatrixXd());
-    const Eigen::MatrixXd dPrate =
-        elasticRate ? linearization_->pressureChange(Eigen::MatrixXd(), Psi, 1.0) : Eigen::MatrixXd(n, 0);
-    // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
-    // (the load is p + p_c); its slope once per node.
-    Eigen::VectorXd slope = Eigen::VectorXd::Zero(n);
-    if (contact_)
-        for (int r = 0; r < n; ++r)
-            if (g.kind(r) != lube::NodeKind::Void) slope[r] = contactSlope(ev.hTotal[r]);
-    const Eigen::MatrixXd dPc = slope.asDiagonal() * Psi;
-    stats_.timings.film += t0.seconds();
-    t0.restart();
-
-    // Motion rows: −∂f/∂y through the film action — the load's gradient in (p, h, p_c) applied to
-    // all modal columns at once (lube::FilmLoadGradient), the friction's change included (at high
-    // sliding speed its moment about the pin is a large part of the motion's dependence on the
-    // deformation); f is affine in the action (F_x, F_z, M_y).
-    lube::FilmIntegralOptions io;
-    io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
-    io.cavitationPressure = case_.lubricant.cavitationPressure;
-    io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
-    const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, ev.p, io);
+    Eigen::MatrixXd loadH, loadRate;
+    ContactJacobian J;
+    for (std::size_t c = 0; c < contacts_.size(); ++c) {
+        contacts_[c]->linearize(ctx.step, x, ev.films[c], J, work_);
+        if (c == 0) {
+            loadH = J.loadH;
+            loadRate = J.loadRate;
+            P.modalH = J.modalH;
+            P.modalRate = J.modalRate;
+            P.filmChangePerUnknown = J.filmChangePerUnknown;
+        } else {
+            loadH += J.loadH;
+            loadRate += J.loadRate;
+            P.modalH += J.modalH;
+            P.modalRate += J.modalRate;
+            P.filmChangePerUnknown = P.filmChangePerUnknown.cwiseMax(J.filmChangePerUnknown);
+        }
+    }
+    const fem::Stopwatch t0;
     const Eigen::Matrix<double, 2, 6> dForce = actionGradient(ctx);  // ∂f/∂(F, M)
-    P.motionH = -dForce * G.change(dPh, PsiFilm, contact_ ? dPc : Eigen::MatrixXd());
-    P.motionRate = elasticRate ? Eigen::MatrixXd(-dForce * G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd()))
-                               : Eigen::MatrixXd(2, 0);
-
-    // Modal rows: the modal forces of the mapped δp + δp_c (the response is applied when the
-    // Jacobian is formed: it depends on the step size with bodies.response: dynamic).
-    const Eigen::MatrixXd dLoad = dPh + dPc;
-    if (piston_) {
-        piston_->modalForces(dLoad, 0.0, P.pistonH);
-        if (elasticRate) piston_->modalForces(dPrate, 0.0, P.pistonRate);
-    }
-    if (liner_) {
-        liner_->modalForces(dLoad, ctx.offset, P.linerH);
-        if (elasticRate) liner_->modalForces(dPrate, ctx.offset, P.linerRate);
-    }
+    P.motionH = -dForce * loadH;
+    P.motionRate = case_.coupling.elasticSqueeze ? Eigen::MatrixXd(-dForce * loadRate) : Eigen::MatrixXd(2, 0);
     P.valid = true;
-    const double dtStructure = t0.seconds();
-    stats_.timings.structure += dtStructure;
-    stats_.timings.modal += dtStructure;
+    work_.modal += t0.seconds();
 }
 
 Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx) {
     const fem::Stopwatch t0;
     const CoupledJacobianParts& P = *newtonParts_;
     const int m = mp_ + ml_, k = 2 + m;
-    const double rate = ctx.a0 / ctx.dt;
+    const double rate = ctx.step.a0 / ctx.step.dt;
     const bool elasticRate = case_.coupling.elasticSqueeze;
     // The modal columns; the (e, β) columns are formCoupledJacobian's.
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, k);
     J.topRightCorner(2, m) = elasticRate ? Eigen::MatrixXd(P.motionH + rate * P.motionRate) : P.motionH;
     // Modal rows: δ_ij − ∂H/∂y_j, H linear in the mapped pressure (history terms held).
-    auto respond = [&](const Eigen::MatrixXd& Fh, const Eigen::MatrixXd& Fr, const FlexibleSurface& body,
-                       modal::HeldModalDynamics* dynamics, int row, int rows) {
-        Eigen::MatrixXd F = Fh;
-        if (elasticRate) F += rate * Fr;
+    auto respond = [&](const FlexibleBody& body, modal::HeldModalDynamics* dynamics, int row, int rows) {
+        Eigen::MatrixXd F = P.modalH.middleRows(row - 2, rows);
+        if (elasticRate) F += rate * P.modalRate.middleRows(row - 2, rows);
         if (dynamics) {
             const Eigen::VectorXd zero = Eigen::VectorXd::Zero(rows);
             Eigen::VectorXd q;
@@ -182,12 +101,10 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx) {
             J.block(row, 2, rows, m) = -Q;
         }
     };
-    if (piston_) respond(P.pistonH, P.pistonRate, *piston_, pistonDynamics_.get(), 2, mp_);
-    if (liner_) respond(P.linerH, P.linerRate, *liner_, linerDynamics_.get(), 2 + mp_, ml_);
+    if (pistonBody_) respond(*pistonBody_, pistonDynamics_.get(), 2, mp_);
+    if (linerBody_) respond(*linerBody_, linerDynamics_.get(), 2 + mp_, ml_);
     J.bottomRightCorner(m, m).diagonal().array() += 1.0;
-    const double dtStructure = t0.seconds();
-    stats_.timings.structure += dtStructure;
-    stats_.timings.modal += dtStructure;
+    work_.modal += t0.seconds();
     return J;
 }
 
@@ -214,7 +131,7 @@ bool PistonSimulation::formCoupledJacobian(const Context& ctx, const Eigen::Vect
     }
     newtonInverse_ = J.partialPivLu().inverse();
     // Unknowns in units of the film-thickness change they cause (Broyden norm, merit, damping).
-    unknownScale_ = jacobianDh_.colwise().lpNorm<Eigen::Infinity>().transpose();
+    unknownScale_ = newtonParts_->filmChangePerUnknown;
     for (Eigen::Index j = 0; j < unknownScale_.size(); ++j)
         unknownScale_[j] = unknownScale_[j] > 0.0 ? unknownScale_[j] : 1.0;
     // Without the elastic rate the quasi-static modal rows are algebraic: where the film's

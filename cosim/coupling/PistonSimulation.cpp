@@ -23,23 +23,6 @@ namespace flexehd::cosim {
 
 namespace {
 
-lube::Lubricant makeLubricant(const LubricantSpec& l) {
-    lube::Lubricant lub(l.viscosity, l.density);
-    if (l.barusAlpha > 0.0) lub.withBarus(l.barusAlpha);
-    return lub;
-}
-
-// Multigrid, redone by the active-set method where it stalls (ReynoldsOptions::fallback).
-lube::ReynoldsOptions filmSolverOptions(const LubricantSpec& l) {
-    lube::ReynoldsOptions o;
-    o.cavitation = lube::Cavitation::Reynolds;
-    o.solver = lube::SolverKind::Multigrid;
-    o.fallback = lube::SolverKind::ActiveSet;
-    o.cavitationPressure = l.cavitationPressure;
-    o.control.tolerance = 1e-8;
-    return o;
-}
-
 // The smallest film thickness over the nodes that carry film (m; < 0: the surfaces overlap).
 double minimumGap(const lube::FilmGrid& g, const Eigen::VectorXd& h) {
     double m = std::numeric_limits<double>::infinity();
@@ -70,87 +53,56 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
     : case_(withinMemory(c)),
       kin_(c.engine.stroke, c.engine.rodLength, c.engine.pinOffset, c.engine.speedRpm),
       dyn_(c.piston, c.engine),
-      pressure_(c.cylinderPressure),
-      film_(c.engine, c.piston, c.grid),
-      solver_(film_.grid(), makeLubricant(c.lubricant), filmSolverOptions(c.lubricant)) {
+      pressure_(c.cylinderPressure) {
     const fem::Stopwatch t0;
     if (c.coupling.elasticSqueeze && c.coupling.method == CouplingMethod::Partitioned)
         throw std::invalid_argument(
             "coupling: the elastic deformation rate in the squeeze term needs coupling.method: newton; set "
             "coupling.elastic_squeeze: false for the partitioned iteration (docs/coupling.md section 3)");
-    if (c.contact.compositeModulus > 0.0) {
-        contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
-        foundation_.emplace(c.contact.hardContactStiffness > 0.0
-                                ? c.contact.hardContactStiffness
-                                : lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
-                                                                          c.contact.coatingThickness));
+    auto skirt = std::make_unique<SkirtContact>(c, [this](double deg) { return linerOffset(deg); });
+    skirt_ = skirt.get();
+    contacts_.push_back(std::move(skirt));
+    // The bodies the contacts' surfaces share, read with the skirt's.
+    if (skirt_->piston()) {
+        pistonBody_ = skirt_->piston()->flexibleBody();
+        mp_ = pistonBody_->modes();
     }
-    if (c.pistonBody.model == BodyModel::Flexible) {
-        piston_ = loadFlexibleSurface(c, c.pistonBody, "piston", FlexibleSurface::Side::Piston, film_.grid());
-        mp_ = piston_->modes();
-    }
-    if (c.linerBody.model == BodyModel::Flexible) {
-        // The grid slides over the liner between BDC and TDC (plus a margin of two grid rows).
-        const double lo = std::min(linerOffset(180.0), linerOffset(0.0));
-        const double hi = std::max(linerOffset(180.0), linerOffset(0.0));
-        const double margin = 2.0 * film_.grid().length() / (film_.grid().nAxial() - 1);
-        liner_ = loadFlexibleSurface(c, c.linerBody, "liner", FlexibleSurface::Side::Liner, film_.grid(),
-                                     lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
-        ml_ = liner_->modes();
+    if (skirt_->liner()) {
+        linerBody_ = skirt_->liner()->flexibleBody();
+        ml_ = linerBody_->modes();
     }
     if (mp_ + ml_ > 0) requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, mp_ + ml_);
     if (c.coupling.response == ElasticResponse::Dynamic) {
-        if (piston_)
-            pistonDynamics_ = std::make_unique<modal::HeldModalDynamics>(piston_->body(), piston_->heldInterfaces());
-        if (liner_)
-            linerDynamics_ = std::make_unique<modal::HeldModalDynamics>(liner_->body(), liner_->heldInterfaces());
+        if (pistonBody_)
+            pistonDynamics_ = std::make_unique<modal::HeldModalDynamics>(pistonBody_->body(), pistonBody_->heldInterfaces());
+        if (linerBody_)
+            linerDynamics_ = std::make_unique<modal::HeldModalDynamics>(linerBody_->body(), linerBody_->heldInterfaces());
     }
-    if (ClearanceTerms::wanted(c)) {
-        // Liner offsets the grid visits: the extremes of the crank-slider over a revolution.
-        double lo = linerOffset(0.0), hi = lo;
-        for (int k = 1; k <= 1440; ++k) {
-            const double s = linerOffset(0.25 * k);
-            lo = std::min(lo, s);
-            hi = std::max(hi, s);
-        }
-        clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
-    }
-    if (c.coupling.method == CouplingMethod::Partitioned && (piston_ || liner_)) {
-        // A unit of e or β moves the film by up to 1 or the skirt reach; a modal coordinate by the
-        // largest entry of its film-change shape (the liner's at its mid-stroke offset).
-        const double reach = std::max(c.piston.skirtTop, -c.piston.skirtBottom);
-        partitionedScale_.resize(2 + mp_ + ml_);
-        partitionedScale_.head<2>() << 1.0, reach;
-        Eigen::MatrixXd Psi;
-        if (piston_) {
-            piston_->filmChangeShapes(0.0, Psi);
-            partitionedScale_.segment(2, mp_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
-        }
-        if (liner_) {
-            liner_->filmChangeShapes(linerOffset(90.0), Psi);
-            partitionedScale_.tail(ml_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
-        }
-        for (Eigen::Index j = 0; j < partitionedScale_.size(); ++j)
-            partitionedScale_[j] = (partitionedScale_[j] > 0.0 ? partitionedScale_[j] : 1.0) / c.piston.clearance;
-    }
-    if (c.coupling.method == CouplingMethod::Newton && (piston_ || liner_)) {
-        linearization_ = std::make_unique<lube::FilmLinearization>(film_.grid());
-        newtonParts_ = std::make_unique<CoupledJacobianParts>();
-        if (piston_) piston_->filmChangeShapes(0.0, psiPiston_);
-    }
+    setPartitionedScale();
+    if (c.coupling.method == CouplingMethod::Newton && mp_ + ml_ > 0) newtonParts_ = std::make_unique<CoupledJacobianParts>();
     stats_.timings.setup = t0.seconds();
 }
 
 PistonSimulation::~PistonSimulation() = default;
 
-void PistonSimulation::contactPressure(double h, double& asperity, double& hard) const {
-    asperity = contact_->pressure(std::max(h, 0.0));
-    hard = foundation_->pressure(h);
+void PistonSimulation::addContact(std::unique_ptr<FilmContact> contact) {
+    contacts_.push_back(std::move(contact));
+    setPartitionedScale();
 }
 
-double PistonSimulation::contactSlope(double h) const {
-    if (h < 0.0) return foundation_->pressureSlope(h);
-    return contact_->pressureSlope(h);
+void PistonSimulation::setPartitionedScale() {
+    if (case_.coupling.method != CouplingMethod::Partitioned || mp_ + ml_ == 0) return;
+    // A unit of e or β moves the film by up to 1 or the skirt reach; a modal coordinate by the
+    // largest film change of a unit of it over the contacts.
+    const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+    const int m = mp_ + ml_;
+    partitionedScale_.resize(2 + m);
+    partitionedScale_.head<2>() << 1.0, reach;
+    partitionedScale_.tail(m) = contacts_.front()->modalFilmChangeScale();
+    for (std::size_t k = 1; k < contacts_.size(); ++k)
+        partitionedScale_.tail(m) = partitionedScale_.tail(m).cwiseMax(contacts_[k]->modalFilmChangeScale());
+    for (Eigen::Index j = 0; j < partitionedScale_.size(); ++j)
+        partitionedScale_[j] = (partitionedScale_[j] > 0.0 ? partitionedScale_[j] : 1.0) / case_.piston.clearance;
 }
 
 double PistonSimulation::linerOffset(double crankDeg) const {
@@ -158,21 +110,7 @@ double PistonSimulation::linerOffset(double crankDeg) const {
 }
 
 ClearanceRange PistonSimulation::centredClearance(double crankDeg) const {
-    Eigen::VectorXd h;
-    film_.rigidThickness(0.0, 0.0, h);
-    if (clearance_) clearance_->add(linerOffset(crankDeg), h);
-    const lube::FilmGrid& g = film_.grid();
-    ClearanceRange r{std::numeric_limits<double>::infinity(), 0.0, -std::numeric_limits<double>::infinity()};
-    int n = 0;
-    for (int k = 0; k < g.size(); ++k)
-        if (g.kind(k) != lube::NodeKind::Void) {
-            r.min = std::min(r.min, h[k]);
-            r.max = std::max(r.max, h[k]);
-            r.mean += h[k];
-            ++n;
-        }
-    r.mean /= std::max(n, 1);
-    return r;
+    return skirt_->centredClearance(linerOffset(crankDeg));
 }
 
 // Good Broyden update of the kept inverse Jacobian H for the update s and the residual change
@@ -201,22 +139,24 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
     r.lateralVelocity = s.v[0];
     r.tiltRate = s.v[1];
     r.sideForce = dyn_.sideForce(k, gas, ev.action, s.a[1]);
-    r.filmForce = ev.loads.pressureForce.x() + ev.loads.shearForce.x() + ev.loads.boundaryFrictionForce.x();
-    r.filmMoment = ev.loads.moment.y();
-    r.contactForce = ev.loads.contactForce.x();
-    r.hardContactForce = ev.hardForce;
-    r.frictionForce = ev.loads.frictionForce().z();
-    r.linerHydrodynamicFriction = ev.loads.outerShearForce.z();
-    r.linerBoundaryFriction = -ev.loads.boundaryFrictionForce.z();
-    r.dissipatedPower = ev.loads.dissipatedPower();
-    r.boundaryFrictionPower = ev.loads.boundaryFrictionPower;
-    r.minFilm = ev.minGap;  // unfloored: < 0 where the surfaces overlap
-    r.maxPressure = ev.p.size() ? ev.p.maxCoeff() : 0.0;
-    if (piston_ || liner_) {
-        const lube::FilmGrid& g = film_.grid();
+    // The film columns are the skirt's (the first contact).
+    const ContactIterate& f = ev.films.front();
+    r.filmForce = f.loads.pressureForce.x() + f.loads.shearForce.x() + f.loads.boundaryFrictionForce.x();
+    r.filmMoment = f.loads.moment.y();
+    r.contactForce = f.loads.contactForce.x();
+    r.hardContactForce = f.hardForce;
+    r.frictionForce = f.loads.frictionForce().z();
+    r.linerHydrodynamicFriction = f.loads.outerShearForce.z();
+    r.linerBoundaryFriction = -f.loads.boundaryFrictionForce.z();
+    r.dissipatedPower = f.loads.dissipatedPower();
+    r.boundaryFrictionPower = f.loads.boundaryFrictionPower;
+    r.minFilm = f.minGap;  // unfloored: < 0 where the surfaces overlap
+    r.maxPressure = f.p.size() ? f.p.maxCoeff() : 0.0;
+    if (mp_ + ml_ > 0) {
+        const lube::FilmGrid& g = skirt_->grid();
         for (int k = 0; k < g.size(); ++k)
             if (g.kind(k) != lube::NodeKind::Void)
-                r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(ev.hTotal[k] - ev.hRigid[k]));
+                r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(f.hTotal[k] - f.hRigid[k]));
     }
     r.couplingIterations = iterations;
     r.stepDeg = stepDeg;
@@ -225,7 +165,8 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
 
 Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cycle) const {
     Snapshot sn;
-    const lube::FilmGrid& g = film_.grid();
+    const lube::FilmGrid& g = skirt_->grid();
+    const ContactIterate& f = ev.films.front();  // the skirt's
     const CrankState k = kin_.at(s.crankDeg);
     sn.cycle = cycle;
     sn.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
@@ -234,35 +175,35 @@ Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cy
     sn.linerOffset = linerOffset(s.crankDeg);
     sn.lateral = s.x[0];
     sn.tilt = s.x[1];
-    sn.pressure = ev.p;
-    sn.filmThickness = ev.hTotal;  // unfloored: < 0 where the surfaces overlap
-    sn.contactPressure = ev.pc;
+    sn.pressure = f.p;
+    sn.filmThickness = f.hTotal;  // unfloored: < 0 where the surfaces overlap
+    sn.contactPressure = f.pc;
     sn.cavitation = Eigen::VectorXd::Zero(g.size());
     sn.shearStress = Eigen::VectorXd::Zero(g.size());
-    const double eta = solver_.lubricant().referenceViscosity();
+    const double eta = skirt_->lubricant().referenceViscosity();
     for (int k2 = 0; k2 < g.size(); ++k2) {
         if (g.kind(k2) == lube::NodeKind::Void) continue;
-        if (g.kind(k2) == lube::NodeKind::Film && ev.p[k2] <= case_.lubricant.cavitationPressure) sn.cavitation[k2] = 1.0;
+        if (g.kind(k2) == lube::NodeKind::Film && f.p[k2] <= case_.lubricant.cavitationPressure) sn.cavitation[k2] = 1.0;
         // τ_z on the piston = η (V_liner − V_piston)/h − (h/2) ∂p/∂z (central differences).
         const int i = g.axialIndex(k2), j = g.thetaIndex(k2);
         const int i0 = std::max(0, i - 1), i1 = std::min(g.nAxial() - 1, i + 1);
-        const double dpdz = (ev.p[g.index(i1, j)] - ev.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
+        const double dpdz = (f.p[g.index(i1, j)] - f.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
         const double phi = sn.cavitation[k2] > 0.0 ? 0.0 : 1.0;  // no Couette shear where cavitated
-        sn.shearStress[k2] = phi * eta * (-k.velocity) / ev.h[k2] - 0.5 * ev.h[k2] * dpdz;
+        sn.shearStress[k2] = phi * eta * (-k.velocity) / f.h[k2] - 0.5 * f.h[k2] * dpdz;
     }
-    if (piston_) sn.pistonModal = s.y.head(mp_);
-    if (liner_) sn.linerModal = s.y.tail(ml_);
+    if (mp_ > 0) sn.pistonModal = s.y.head(mp_);
+    if (ml_ > 0) sn.linerModal = s.y.tail(ml_);
     return sn;
 }
 
 PistonSimulation::State PistonSimulation::initialState(const SimulationCallbacks& cb) const {
     State s;
     s.crankDeg = case_.time.startDeg;
-    film_.rigidThickness(0.0, 0.0, s.h);
-    if (clearance_) {
-        clearance_->add(linerOffset(s.crankDeg), s.h);
+    const double offset = linerOffset(s.crankDeg);
+    for (const auto& contact : contacts_) s.films.push_back(contact->initialState(offset));
+    if (const ClearanceTerms* clearance = skirt_->clearance()) {
         if (cb.progress) {
-            cb.progress("film thickness: " + clearance_->summary());
+            cb.progress("film thickness: " + clearance->summary());
             std::string line = "centred clearance (min / mean / max over the skirt):";
             for (const auto& [name, deg] : {std::pair{"TDC", 0.0}, {"mid-stroke", 90.0}, {"BDC", 180.0}}) {
                 const ClearanceRange r = centredClearance(deg);
@@ -272,8 +213,6 @@ PistonSimulation::State PistonSimulation::initialState(const SimulationCallbacks
             cb.progress(line);
         }
     }
-    s.hRigid = s.h;
-    s.hTotal = s.h;  // undeformed bodies at the start
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);
     if (pistonDynamics_ || linerDynamics_) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
     return s;
@@ -317,7 +256,7 @@ std::string PistonSimulation::stepSizeExhausted(const State& s, int cycle, bool 
               "structure's (det(I - dH/dy) < 0 in the step's Jacobian), and without the elastic "
               "deformation rate in the squeeze term nothing resists that deformation. Set "
               "coupling.elastic_squeeze: true (docs/coupling.md section 3)."
-        : !converged && (piston_ || liner_) && case_.coupling.method == CouplingMethod::Partitioned
+        : !converged && mp_ + ml_ > 0 && case_.coupling.method == CouplingMethod::Partitioned
             ? "With coupling.method: partitioned the squeeze term holds the rigid rate only; where "
               "the iteration fails at high speed (on the example engine from 4000 rpm on, early in "
               "the intake stroke) the skirt's quasi-static equilibrium in the film is lost, as with "
@@ -331,7 +270,7 @@ std::string PistonSimulation::stepSizeExhausted(const State& s, int cycle, bool 
         "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
         case_.time.minStepDeg, crankAngle720(s.crankDeg), cycle,
         converged ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure, s.x[0] * 1e6, s.x[1] * 1e3,
-        minimumGap(film_.grid(), s.hTotal) * 1e6, advice);
+        minimumGap(skirt_->grid(), s.films.front().hTotal) * 1e6, advice);
 }
 
 void PistonSimulation::requireBoundedMotion(const State& n, int cycle) const {
@@ -345,13 +284,20 @@ void PistonSimulation::requireBoundedMotion(const State& n, int cycle) const {
 }
 
 void PistonSimulation::checkLoadMapping(const Evaluation& ev, double& worstDiff, double& largestForce) {
-    // The mapped resultant on the flexible piston against the film's normal force.
-    const Eigen::Matrix<double, 6, 1> r =
-        piston_->resultant(ev.p + ev.pc, 0.0, Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0));
-    const Eigen::Vector3d film = ev.loads.pressureForce + ev.loads.contactForce;
-    worstDiff = std::max(worstDiff, (r.head<3>() - film).norm());
-    largestForce = std::max(largestForce, film.norm());
+    // The mapped resultant on the flexible piston against the film's normal force, per contact.
+    for (std::size_t c = 0; c < contacts_.size(); ++c) contacts_[c]->checkLoadMapping(ev.films[c], worstDiff, largestForce);
     stats_.worstMappingError = worstDiff / std::max(largestForce, 1e-300);
+}
+
+void PistonSimulation::addWork(WorkTally& counted) {
+    Timings& t = stats_.timings;
+    t.film += work_.film - counted.film;
+    t.mapping += work_.mapping - counted.mapping;
+    t.modal += work_.modal - counted.modal;
+    t.structure += (work_.mapping - counted.mapping) + (work_.modal - counted.modal);
+    stats_.filmSolves += work_.filmSolves - counted.filmSolves;
+    stats_.fallbackSolves += work_.fallbackSolves - counted.fallbackSolves;
+    counted = work_;
 }
 
 double PistonSimulation::periodicityError(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
@@ -395,6 +341,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     stats_.minStepDeg = T.maxStepDeg;
     double worstMappingDiff = 0.0, largestFilmForce = 0.0;
     const double filmT0 = stats_.timings.film, structT0 = stats_.timings.structure;
+    WorkTally counted = work_;  // the work already in stats_
     RunProgress progress(T.maxCycles, T.periodicityTolerance);
     for (int cycle = 1; cycle <= T.maxCycles; ++cycle) {
         const double cycleStart = T.startDeg + 720.0 * (cycle - 1);
@@ -427,15 +374,19 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             if (!ok || ratio > 1.0) {
                 ++stats_.rejectedSteps;
                 dtDeg = ok ? step * std::max(0.2, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 0.25 * step;
-                if (dtDeg < T.minStepDeg) throw std::runtime_error(stepSizeExhausted(s, cycle, ok, ratio, failure));
+                if (dtDeg < T.minStepDeg) {
+                    addWork(counted);
+                    throw std::runtime_error(stepSizeExhausted(s, cycle, ok, ratio, failure));
+                }
                 continue;
             }
+            addWork(counted);
             requireBoundedMotion(n, cycle);
             ++stats_.steps;
             foldedJacobians_ = 0;
             stats_.maxIterations = std::max(stats_.maxIterations, iterations);
             stats_.minStepDeg = std::min(stats_.minStepDeg, step);
-            if (piston_) checkLoadMapping(ev, worstMappingDiff, largestFilmForce);
+            if (mp_ > 0) checkLoadMapping(ev, worstMappingDiff, largestFilmForce);
             prev = std::move(s);
             s = std::move(n);
             lastEv = ev;
@@ -468,6 +419,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         previousCycle = cycleRecords;
         previousSince = cycleSince;
     }
+    addWork(counted);
     stats_.timings.dynamics = tRun.seconds() - (stats_.timings.film - filmT0) - (stats_.timings.structure - structT0);
     return cycleRecords;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // PistonSimulation: the co-simulation master (docs/coupling.md, docs/dynamics.md). Each time
 // step solves, at the new crank angle, the piston's secondary motion (PistonDynamics, BDF2 in
-// time) together with the film (lube::ReynoldsSolver with asperity contact) and the elastic
-// response of the flexible bodies (FlexibleSurface), until
+// time) together with the films of its contacts (FilmContact: the skirt's, SkirtContact, and any
+// added) and the elastic response of the flexible bodies (FlexibleBody) to their summed load, until
 //   * the Newton update of (e, β) is below 1e-5 of the clearance (the tilt times the skirt's
 //     reach from the pin), and the residual of each equation of motion below 1e-4 of the sum
 //     of its terms' magnitudes plus the reciprocating inertia force m r ω² (times the reach
@@ -15,18 +15,15 @@
 // integrated by the same BDF2 as the motion (modal::HeldModalDynamics). The step size is controlled by the local
 // error estimate of the predictor–corrector pair; cycles repeat until periodic.
 
+#include "cosim/case/EngineCase.hpp"
+#include "cosim/contact/FilmContact.hpp"
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/CouplingAccelerator.hpp"
+#include "cosim/coupling/StepRecord.hpp"
 #include "cosim/engine/CrankKinematics.hpp"
 #include "cosim/engine/CylinderPressure.hpp"
-#include "cosim/case/EngineCase.hpp"
-#include "cosim/mapping/FlexibleSurface.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
-#include "cosim/engine/SkirtFilm.hpp"
-#include "cosim/coupling/StepRecord.hpp"
-#include "lube/FilmLinearization.hpp"
-#include "lube/ElasticFoundation.hpp"
-#include "lube/GreenwoodTripp.hpp"
-#include "lube/ReynoldsSolver.hpp"
+#include "cosim/mapping/FlexibleBody.hpp"
 #include "modal/HeldModalDynamics.hpp"
 
 #include <Eigen/Core>
@@ -40,8 +37,6 @@
 #include <vector>
 
 namespace flexehd::cosim {
-
-class ClearanceTerms;
 
 /// Film and body state at one written crank angle (the VTK snapshots).
 struct Snapshot {
@@ -79,13 +74,6 @@ struct RunStatistics {
     Timings timings;
 };
 
-/// The film thickness with the piston centred (no lateral shift, no tilt) and no elastic
-/// deformation — clearance + profile + ovality + bore distortion + thermal growth, i.e. the hot
-/// running clearance when the case names a thermal file — over the skirt's film nodes.
-struct ClearanceRange {
-    double min = 0.0, mean = 0.0, max = 0.0;  ///< m
-};
-
 struct SimulationCallbacks {
     std::function<void(const StepRecord&)> onStep;      ///< every accepted step
     /// every output.vtkEveryDeg of every cycle, as it is taken (nothing is held back)
@@ -101,19 +89,24 @@ public:
     explicit PistonSimulation(const EngineCase& c);
     ~PistonSimulation();
 
+    /// A further film contact of the piston, beside the skirt's (before run). Its modal loads and
+    /// film changes use the same coordinates as the skirt's: the piston's, then the liner's.
+    void addContact(std::unique_ptr<FilmContact> contact);
+
     /// Runs the cycles; records of the final cycle are returned. Throws std::runtime_error with a
     /// diagnosis when the step size falls below time.min_step_deg.
     /// spanDeg > 0 stops after that many crank degrees (tests, studies of one event).
     std::vector<StepRecord> run(const SimulationCallbacks& callbacks = {}, double spanDeg = 0.0);
 
     const RunStatistics& statistics() const { return stats_; }
-    const SkirtFilm& film() const { return film_; }
+    const SkirtFilm& film() const { return skirt_->film(); }
     const CrankKinematics& kinematics() const { return kin_; }
     const PistonDynamics& dynamics() const { return dyn_; }
-    const FlexibleSurface* piston() const { return piston_.get(); }
-    const FlexibleSurface* liner() const { return liner_.get(); }
+    /// The flexible bodies seen from the skirt's grid (null when rigid).
+    const FlexibleSurface* piston() const { return skirt_->piston(); }
+    const FlexibleSurface* liner() const { return skirt_->liner(); }
     /// Bore distortion and thermal terms of the film thickness (null when the case has none).
-    const ClearanceTerms* clearance() const { return clearance_.get(); }
+    const ClearanceTerms* clearance() const { return skirt_->clearance(); }
     /// Liner-frame z of the piston frame's origin at the crank angle.
     double linerOffset(double crankDeg) const;
     /// The centred, undeformed film thickness at the crank angle's piston position (see
@@ -124,13 +117,10 @@ private:
     struct State;
     struct Context;
     struct Evaluation;
-    /// One iterate (e, β, y) of the step: film thickness, contact, film solve and loads, the
-    /// motion's residual and (structure) the bodies' response H(y).
+    /// One iterate (e, β, y) of the step: every contact's film and action, the motion's residual
+    /// and (structure) the bodies' response H(y) to the contacts' modal loads.
     Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
     // The stages of evaluate.
-    void filmThickness(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, Evaluation& ev);
-    void contactAndFloor(Evaluation& ev) const;
-    void solveFilm(const Context& ctx, Evaluation& ev);
     void motionResidual(const Context& ctx, const Eigen::Vector2d& x, Evaluation& ev) const;
     void structureResponse(const Context& ctx, Evaluation& ev);
     bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
@@ -163,8 +153,6 @@ private:
     /// coupling.method newton: linearises (motion residual, y − H(y)) in (e, β, y) at the
     /// evaluation into the parts of CoupledJacobianParts (CoupledNewton.cpp, docs/coupling.md §1, §3)
     void linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
-    /// ∂h/∂(e, β, y) on the grid into jacobianDh_ (the modal columns Ψ; the liner's per offset).
-    void filmChangeColumns(const Context& ctx, const Eigen::Vector2d& x);
     /// ∂(equations of motion's right-hand side)/∂(F_x, ·, F_z, ·, M_y, ·): 2 × 6, from the dynamics.
     Eigen::Matrix<double, 2, 6> actionGradient(const Context& ctx) const;
     void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
@@ -181,11 +169,6 @@ private:
     Eigen::VectorXd levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) const;
     /// The Jacobian at the context's step size from the last linearisation's parts.
     Eigen::MatrixXd coupledJacobian(const Context& ctx);
-    /// Contact pressure at the film thickness h (unfloored): Greenwood–Tripp asperity pressure of
-    /// max(h, 0), and the hard contact of the coating below h = 0 (docs/lube.md §5).
-    void contactPressure(double h, double& asperity, double& hard) const;
-    /// ∂(asperity + hard)/∂h (Pa/m).
-    double contactSlope(double h) const;
     StepRecord record(const State& s, const Evaluation& ev, int cycle, double stepDeg, int iterations) const;
     // The stages of run (PistonSimulation.cpp).
     State initialState(const SimulationCallbacks& cb) const;
@@ -200,6 +183,10 @@ private:
     void requireBoundedMotion(const State& n, int cycle) const;
     /// Updates RunStatistics::worstMappingError with the step's mapped resultant on the piston.
     void checkLoadMapping(const Evaluation& ev, double& worstDiff, double& largestForce);
+    /// coupling.method partitioned: the units of (e, β, y) in clearances of film change.
+    void setPartitionedScale();
+    /// Adds the contacts' and the response's work since `counted` into the run's statistics.
+    void addWork(WorkTally& counted);
     double periodicityError(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
                             const std::vector<StepRecord>& previous, const std::vector<double>& previousSince) const;
     Snapshot snapshot(const State& s, const Evaluation& ev, int cycle) const;
@@ -208,23 +195,18 @@ private:
     CrankKinematics kin_;
     PistonDynamics dyn_;
     CylinderPressure pressure_;
-    SkirtFilm film_;
-    lube::ReynoldsSolver solver_;  // multigrid, the active set where it stalls
-    std::optional<lube::GreenwoodTripp> contact_;
-    std::optional<lube::ElasticFoundation> foundation_;  // hard contact below h = 0 (with contact_)
-    std::unique_ptr<FlexibleSurface> piston_, liner_;
-    std::unique_ptr<ClearanceTerms> clearance_;  // added to h_rigid at the liner offset
-    // bodies.response: dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
+    // The film contacts the step iterates over; the skirt's is the first (history.csv's and the
+    // snapshots' film columns are its).
+    std::vector<std::unique_ptr<FilmContact>> contacts_;
+    SkirtContact* skirt_ = nullptr;
+    // The flexible bodies (null: rigid), shared with the contacts' surfaces; bodies.response:
+    // dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
+    std::shared_ptr<const FlexibleBody> pistonBody_, linerBody_;
     std::unique_ptr<modal::HeldModalDynamics> pistonDynamics_, linerDynamics_;
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
-    // Elastic Δh of the last y and liner offset evaluated (reused by the Jacobian's evaluations).
-    Eigen::VectorXd elasticY_, pistonDh_, linerDh_;
-    double elasticOffset_ = std::numeric_limits<double>::quiet_NaN();
-    // coupling.method newton: the film's linearisation and the film-change shapes Ψ (grid × modes)
-    std::unique_ptr<lube::FilmLinearization> linearization_;
-    Eigen::MatrixXd psiPiston_, psiLiner_;
-    Eigen::MatrixXd jacobianDh_;     // ∂h/∂(e, β, y): grid × (2 + modes), kept between Jacobians
-    std::unique_ptr<CoupledJacobianParts> newtonParts_;  // the last linearisation
+    WorkTally work_;       // the contacts' and the response's work, since construction
+    // coupling.method newton with flexible bodies (else null): the last linearisation
+    std::unique_ptr<CoupledJacobianParts> newtonParts_;
     Eigen::MatrixXd newtonJacobian_; // the coupled Jacobian as formed (before Broyden updates)
     Eigen::MatrixXd newtonInverse_;  // inverse of the coupled Jacobian (Broyden-updated within a step)
     Eigen::VectorXd unknownScale_;   // m of film-thickness change per unit of each unknown
@@ -233,7 +215,6 @@ private:
     Eigen::VectorXd partitionedScale_;
     int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
     double newtonRate_ = -1.0;       // the a0/Δt it was formed for
-    double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();
     Eigen::Matrix2d jacobian_;
     bool haveJacobian_ = false;
     RunStatistics stats_;

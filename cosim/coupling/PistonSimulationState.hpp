@@ -7,6 +7,8 @@
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/FilmIntegrals.hpp"
 
+#include <vector>
+
 #include <cmath>
 #include <limits>
 
@@ -23,42 +25,38 @@ struct PistonSimulation::State {
     double time = 0.0;
     double dt = 0.0;        // s, the step that reached this state (0: initial)
     Eigen::Vector2d x = Eigen::Vector2d::Zero(), v = Eigen::Vector2d::Zero(), a = Eigen::Vector2d::Zero();
-    Eigen::VectorXd h, hRigid, p, y;
-    Eigen::VectorXd hTotal;  // rigid + elastic film thickness, unfloored (the squeeze term's history)
+    Eigen::VectorXd y;      // modal coordinates: the piston's, then the liner's
     Eigen::VectorXd w;      // modal velocities ẏ (bodies.response: dynamic; else empty)
+    std::vector<ContactState> films;  // per contact (the squeeze term's history, the warm start)
 };
 
 struct PistonSimulation::Context {
-    double crankDeg = 0.0, dt = 0.0, a0 = 1.0, a1 = -1.0, a2 = 0.0;
+    ContactStep step;  // dt, the BDF2 coefficients, the piston's velocity, the liner offset
+    double crankDeg = 0.0;
     CrankState crank;
-    double gas = 0.0, offset = 0.0;
+    double gas = 0.0;
     const State* now = nullptr;
     const State* before = nullptr;
     Eigen::VectorXd hq, hv;  // dynamic response: BDF2 histories a1 yₙ + a2 yₙ₋₁, a1 ẏₙ + a2 ẏₙ₋₁
 };
 
 struct PistonSimulation::Evaluation {
-    Eigen::VectorXd h, hRigid, dhdt, p, pc, Hy;
-    Eigen::VectorXd pcHard;  // the hard-contact part of pc (Pa)
-    double hardForce = 0.0;  // N, lateral (x) force of the hard contact on the piston
-    double minGap = 0.0;     // m, smallest unfloored film thickness (< 0: interference)
-    Eigen::VectorXd hTotal;  // h before the floor (h < hTotal where the floor holds)
-    lube::FilmLoads loads;
-    FilmAction action;
+    std::vector<ContactIterate> films;  // per contact
+    FilmAction action;                  // the contacts' together
+    Eigen::VectorXd Hy;                 // the bodies' response to the contacts' modal loads
     Eigen::Vector2d vel, acc, residual;
     Eigen::Vector2d scale;  // magnitude of the largest terms of each equation (N, N·m)
-    int floored = 0;
 };
 
 // The modal columns of the coupled Newton method's Jacobian at one linearisation, affine in the
 // rate r = a0/Δt (CoupledNewton.cpp): motion rows motionH + r motionRate, modal rows
-// I − response(forcesH + r forcesRate) per body; the rate parts are empty without
+// I − response(modalH + r modalRate) per body; the rate parts are empty without
 // coupling.elastic_squeeze.
 struct PistonSimulation::CoupledJacobianParts {
     bool valid = false;
     Eigen::MatrixXd motionH, motionRate;    // 2 × modes
-    Eigen::MatrixXd pistonH, pistonRate;    // piston modes × modes
-    Eigen::MatrixXd linerH, linerRate;      // liner modes × modes
+    Eigen::MatrixXd modalH, modalRate;      // modes × modes: the contacts' modal loads (piston rows, liner rows)
+    Eigen::VectorXd filmChangePerUnknown;   // 2 + modes: the contacts' largest film change per unit
 };
 
 // The step's convergence tolerances (StepIteration.cpp).

@@ -18,26 +18,28 @@ namespace flexehd::cosim {
 
 PistonSimulation::Context PistonSimulation::stepContext(const State& s, const State& prev, double dtDeg) {
     Context ctx;
+    ContactStep& st = ctx.step;
     ctx.crankDeg = s.crankDeg + dtDeg;
-    ctx.dt = dtDeg * kin_.secondsPerDegree();
+    st.dt = dtDeg * kin_.secondsPerDegree();
     if (s.dt > 0.0) {  // BDF2 with variable step ratio ω
-        const double w = ctx.dt / s.dt;
-        ctx.a0 = (1.0 + 2.0 * w) / (1.0 + w);
-        ctx.a1 = -(1.0 + w);
-        ctx.a2 = w * w / (1.0 + w);
+        const double w = st.dt / s.dt;
+        st.a0 = (1.0 + 2.0 * w) / (1.0 + w);
+        st.a1 = -(1.0 + w);
+        st.a2 = w * w / (1.0 + w);
     }
     ctx.crank = kin_.at(ctx.crankDeg);
+    st.pistonVelocity = ctx.crank.velocity;
     ctx.gas = dyn_.gasForce(pressure_(crankAngle720(ctx.crankDeg)));
-    ctx.offset = liner_ || clearance_ ? linerOffset(ctx.crankDeg) : 0.0;
+    st.linerOffset = linerOffset(ctx.crankDeg);
     ctx.now = &s;
     ctx.before = &prev;
     if (pistonDynamics_ || linerDynamics_) {
         // BDF2 histories of the modal coordinates (prev starts as a copy of the initial state;
         // a2 = 0 on the first step).
-        ctx.hq = ctx.a1 * s.y + ctx.a2 * prev.y;
-        ctx.hv = ctx.a1 * s.w + ctx.a2 * prev.w;
-        if (pistonDynamics_) pistonDynamics_->setStep(ctx.a0, ctx.dt);
-        if (linerDynamics_) linerDynamics_->setStep(ctx.a0, ctx.dt);
+        ctx.hq = st.a1 * s.y + st.a2 * prev.y;
+        ctx.hv = st.a1 * s.w + st.a2 * prev.w;
+        if (pistonDynamics_) pistonDynamics_->setStep(st.a0, st.dt);
+        if (linerDynamics_) linerDynamics_->setStep(st.a0, st.dt);
     }
     return ctx;
 }
@@ -56,22 +58,10 @@ PistonSimulation::StepTolerances PistonSimulation::stepTolerances() const {
 }
 
 double PistonSimulation::couplingResidual(const Context& ctx, const Evaluation& ev, const Eigen::VectorXd& y) {
-    // max |Δh(H(y)) − Δh(y)| over the grid, per body.
+    // max |Δh(H(y)) − Δh(y)| over every contact's film.
     const Eigen::VectorXd d = ev.Hy - y;
-    const fem::Stopwatch t0;
     double res = 0.0;
-    Eigen::VectorXd dh;
-    if (piston_) {
-        piston_->filmChange(d.head(mp_), 0.0, dh);
-        res = dh.cwiseAbs().maxCoeff();
-    }
-    if (liner_) {
-        liner_->filmChange(d.tail(ml_), ctx.offset, dh);
-        res = std::max(res, dh.cwiseAbs().maxCoeff());
-    }
-    const double tMap = t0.seconds();
-    stats_.timings.mapping += tMap;
-    stats_.timings.structure += tMap;
+    for (const auto& contact : contacts_) res = std::max(res, contact->filmChange(ctx.step, d, work_));
     return res;
 }
 
@@ -111,7 +101,7 @@ PistonSimulation::PassOutcome PistonSimulation::coupledNewtonPass(const Context&
         }
     }
     it.revisit = false;
-    const double rate = ctx.a0 / ctx.dt;
+    const double rate = ctx.step.a0 / ctx.step.dt;
     // A new linearisation when a pass did not halve the measure (or had to backtrack with a
     // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
     // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
@@ -218,38 +208,34 @@ void PistonSimulation::partitionedUpdate(const Evaluation& ev, const Eigen::Vect
         acc.next(z.cwiseProduct(partitionedScale_), Gz.cwiseProduct(partitionedScale_)).cwiseQuotient(partitionedScale_);
     x = zn.head<2>();
     y = zn.tail(m);
-    const double tModal = t0.seconds();
-    stats_.timings.modal += tModal;
-    stats_.timings.structure += tModal;
+    work_.modal += t0.seconds();
 }
 
 void PistonSimulation::acceptStep(const Context& ctx, const State& s, const Eigen::Vector2d& x,
                                   const Eigen::VectorXd& y, const Evaluation& ev, State& out) const {
     out.crankDeg = ctx.crankDeg;
-    out.time = s.time + ctx.dt;
-    out.dt = ctx.dt;
+    out.time = s.time + ctx.step.dt;
+    out.dt = ctx.step.dt;
     out.x = x;
     out.v = ev.vel;
     out.a = ev.acc;
-    out.h = ev.h;
-    out.hRigid = ev.hRigid;
-    out.p = ev.p;
     out.y = y;
-    out.hTotal = ev.hTotal;
-    if (pistonDynamics_ || linerDynamics_) out.w = (ctx.a0 * y + ctx.hq) / ctx.dt;  // ẏ of BDF2
+    if (pistonDynamics_ || linerDynamics_) out.w = (ctx.step.a0 * y + ctx.hq) / ctx.step.dt;  // ẏ of BDF2
+    out.films.clear();
+    for (std::size_t c = 0; c < contacts_.size(); ++c) out.films.push_back(contacts_[c]->accepted(ev.films[c]));
 }
 
 bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
                                std::string& failure) {
     const Context ctx = stepContext(s, prev, dtDeg);
-    const double dt = ctx.dt;
+    const double dt = ctx.step.dt;
     Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
     // The modal coordinates start from their linear extrapolation over the last step (at high
     // speed y moves by hundreds of coupling tolerances per step; from y_n the first Newton passes
     // go through the strongly nonlinear film law).
     Eigen::VectorXd y = s.y;
-    if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.dt / s.dt) * (s.y - prev.y);
-    const bool flexible = piston_ || liner_;
+    if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.step.dt / s.dt) * (s.y - prev.y);
+    const bool flexible = mp_ + ml_ > 0;
     CouplingAccelerator acc(case_.coupling.acceleration);
     const StepTolerances tol = stepTolerances();
     const int maxIt = case_.coupling.maxIterations;
@@ -274,7 +260,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
         const double couplingRes = flexible ? couplingResidual(ctx, ev, y) : 0.0;
         Eigen::VectorXd dz;     // coupling.method newton: the update of (e, β, y)
         bool resolved = false;  // coupling.method newton: converged to the unknowns' resolution
-        if (linearization_) {
+        if (newtonParts_) {
             std::string why;
             const PassOutcome pass =
                 coupledNewtonPass(ctx, tol, ev, couplingRes, newton, x, y, iterations, dz, resolved, why);

@@ -1,0 +1,105 @@
+#pragma once
+// FilmContact: one lubricated contact of the piston as the co-simulation master sees it
+// (docs/coupling.md §4, "What a contact provides"). The master's unknowns of a step are the
+// secondary motion x = (e, β) and the modal coordinates y of the flexible bodies (the piston's,
+// then the liner's); a contact turns an iterate (x, y) into
+//   * its film: thickness from the motion, its clearance terms and the bodies' elastic change,
+//     contact pressure, the film solve and the film's loads;
+//   * its action on the piston's equations of motion (lateral force, axial force, moment about
+//     the pin axis);
+//   * its modal load on the bodies' coordinates (the mapped film and contact pressure);
+//   * for the coupled Newton method, the change of those loads with y (ContactJacobian).
+// The master sums the contacts' actions and modal loads; the bodies' response to the summed load
+// and the whole iteration are the master's. Every contact keeps its own grid, solver, surface
+// mappings and history (ContactState); a contact is a new class, never an edit of the step.
+
+#include "cosim/engine/PistonDynamics.hpp"
+#include "lube/FilmIntegrals.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace flexehd::cosim {
+
+/// What a contact sees of the step: its BDF2 coefficients, the piston's axial velocity and where
+/// the piston frame is along the liner.
+struct ContactStep {
+    double dt = 0.0;                  ///< s
+    double a0 = 1.0, a1 = -1.0, a2 = 0.0;  ///< BDF2: ḟ = (a0 f + a1 fₙ + a2 fₙ₋₁)/dt
+    double pistonVelocity = 0.0;      ///< m/s, the piston's axial velocity (+z towards the head)
+    double linerOffset = 0.0;         ///< m, liner-frame z of the piston frame's origin
+};
+
+/// A contact's film at an accepted step: the history its squeeze term and warm start need.
+struct ContactState {
+    Eigen::VectorXd h;       ///< m, the film thickness the film equation saw (floored)
+    Eigen::VectorXd hRigid;  ///< m, rigid motion + clearance terms
+    Eigen::VectorXd hTotal;  ///< m, rigid + elastic, unfloored (< 0: overlap)
+    Eigen::VectorXd p;       ///< Pa, gauge film pressure
+};
+
+/// A contact's film at one iterate (x, y) of a step.
+struct ContactIterate {
+    Eigen::VectorXd h, hRigid, hTotal, dhdt, p;  ///< as ContactState; dhdt the squeeze rate (m/s)
+    Eigen::VectorXd pc;      ///< Pa, contact pressure (asperities + hard contact)
+    Eigen::VectorXd pcHard;  ///< Pa, its hard-contact part
+    double hardForce = 0.0;  ///< N, lateral (x) force of the hard contact on the piston
+    double minGap = 0.0;     ///< m, smallest unfloored film thickness (< 0: the surfaces overlap)
+    int floored = 0;         ///< nodes where the film equation saw the floor, not hTotal
+    lube::FilmLoads loads;   ///< forces, moments (about the pin), friction, powers
+    FilmAction action;       ///< on the piston's equations of motion
+};
+
+/// The change of a contact's loads with the modal coordinates y at an iterate, affine in the
+/// step's rate r = a0/dt (the elastic squeeze term): δload = (loadH + r loadRate) δy and
+/// δ(modal load) = (modalH + r modalRate) δy; the rate parts are empty without
+/// coupling.elastic_squeeze.
+struct ContactJacobian {
+    Eigen::MatrixXd loadH, loadRate;    ///< 6 × modes: (F_x, F_y, F_z, M_x, M_y, M_z) about the pin
+    Eigen::MatrixXd modalH, modalRate;  ///< modes × modes: the modal load on (piston, liner) rows
+    /// 2 + modes: the largest film-thickness change per unit of each unknown (e, β, y)
+    Eigen::VectorXd filmChangePerUnknown;
+};
+
+/// The work of the contacts and of the bodies' response, added into the run's statistics.
+struct WorkTally {
+    double film = 0.0;     ///< s: film thickness, contact, film solves and integrals
+    double mapping = 0.0;  ///< s: load and deformation mapping products
+    double modal = 0.0;    ///< s: modal response, the coupled Jacobian's structure part, acceleration
+    long filmSolves = 0;
+    long fallbackSolves = 0;  ///< film solves redone by the fallback solver
+};
+
+class FilmContact {
+public:
+    virtual ~FilmContact() = default;
+
+    /// The film at the start of the run: piston centred, bodies undeformed, at the liner offset.
+    virtual ContactState initialState(double linerOffset) const = 0;
+    /// The film at the iterate (x, y): thickness, contact, film solve, loads and action.
+    /// now, before: the contact's last two accepted states. Throws std::runtime_error when the
+    /// film solve fails.
+    virtual void evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
+                          const Eigen::Vector2d& x, const Eigen::VectorXd& y, ContactIterate& it,
+                          WorkTally& work) = 0;
+    /// Adds the iterate's modal load (N per unit modal coordinate; piston rows, then liner rows)
+    /// to f.
+    virtual void addModalLoad(const ContactStep& step, const ContactIterate& it, Eigen::VectorXd& f,
+                              WorkTally& work) const = 0;
+    /// The largest film-thickness change (m) the change dy of the modal coordinates makes.
+    virtual double filmChange(const ContactStep& step, const Eigen::VectorXd& dy, WorkTally& work) const = 0;
+    /// The largest film-thickness change per unit of each modal coordinate (m) at a typical
+    /// position (the units of the partitioned coupling's acceleration).
+    virtual Eigen::VectorXd modalFilmChangeScale() const = 0;
+    /// coupling.method newton: the loads' change with y at the iterate.
+    virtual void linearize(const ContactStep& step, const Eigen::Vector2d& x, const ContactIterate& it,
+                           ContactJacobian& J, WorkTally& work) = 0;
+    /// The state kept from an accepted iterate.
+    virtual ContactState accepted(const ContactIterate& it) const = 0;
+    /// The resultant mapped onto the flexible piston against the film's normal force:
+    /// worstDiff = max |mapped − film| (N), largestForce = max |film| (N) over the calls.
+    virtual void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const = 0;
+};
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,280 @@
+// SkirtContact: construction and one iterate of the skirt film as stages (docs/coupling.md §1,
+// §4) — the film thickness (rigid motion + clearance terms + elastic change), contact pressure and
+// the film floor, the film solve with its loads — and what the master asks of it besides: the
+// modal load, the film change of a modal update, the state kept and the load-mapping check.
+#include "cosim/contact/SkirtContact.hpp"
+
+#include "cosim/clearance/ClearanceTerms.hpp"
+#include "cosim/mapping/FlexibleBodyLoader.hpp"
+#include "fem/Stopwatch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace flexehd::cosim {
+
+namespace {
+
+lube::Lubricant makeLubricant(const LubricantSpec& l) {
+    lube::Lubricant lub(l.viscosity, l.density);
+    if (l.barusAlpha > 0.0) lub.withBarus(l.barusAlpha);
+    return lub;
+}
+
+// Multigrid, redone by the active-set method where it stalls (ReynoldsOptions::fallback).
+lube::ReynoldsOptions filmSolverOptions(const LubricantSpec& l) {
+    lube::ReynoldsOptions o;
+    o.cavitation = lube::Cavitation::Reynolds;
+    o.solver = lube::SolverKind::Multigrid;
+    o.fallback = lube::SolverKind::ActiveSet;
+    o.cavitationPressure = l.cavitationPressure;
+    o.control.tolerance = 1e-8;
+    return o;
+}
+
+}  // namespace
+
+SkirtContact::SkirtContact(const EngineCase& c, std::function<double(double)> linerOffset)
+    : case_(c),
+      linerOffset_(std::move(linerOffset)),
+      film_(c.engine, c.piston, c.grid),
+      solver_(film_.grid(), makeLubricant(c.lubricant), filmSolverOptions(c.lubricant)) {
+    if (c.contact.compositeModulus > 0.0) {
+        contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
+        foundation_.emplace(c.contact.hardContactStiffness > 0.0
+                                ? c.contact.hardContactStiffness
+                                : lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
+                                                                          c.contact.coatingThickness));
+    }
+    if (c.pistonBody.model == BodyModel::Flexible) {
+        piston_ = loadFlexibleSurface(c, c.pistonBody, "piston", FlexibleSurface::Side::Piston, film_.grid());
+        mp_ = piston_->modes();
+    }
+    if (c.linerBody.model == BodyModel::Flexible) {
+        // The grid slides over the liner between BDC and TDC (plus a margin of two grid rows).
+        const double lo = std::min(linerOffset_(180.0), linerOffset_(0.0));
+        const double hi = std::max(linerOffset_(180.0), linerOffset_(0.0));
+        const double margin = 2.0 * film_.grid().length() / (film_.grid().nAxial() - 1);
+        liner_ = loadFlexibleSurface(c, c.linerBody, "liner", FlexibleSurface::Side::Liner, film_.grid(),
+                                     lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
+        ml_ = liner_->modes();
+    }
+    if (ClearanceTerms::wanted(c)) {
+        // Liner offsets the grid visits: the extremes of the crank-slider over a revolution.
+        double lo = linerOffset_(0.0), hi = lo;
+        for (int k = 1; k <= 1440; ++k) {
+            const double s = linerOffset_(0.25 * k);
+            lo = std::min(lo, s);
+            hi = std::max(hi, s);
+        }
+        clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
+    }
+    if (c.coupling.method == CouplingMethod::Newton && (piston_ || liner_)) {
+        linearization_ = std::make_unique<lube::FilmLinearization>(film_.grid());
+        if (piston_) piston_->filmChangeShapes(0.0, psiPiston_);
+    }
+}
+
+SkirtContact::~SkirtContact() = default;
+
+ContactState SkirtContact::initialState(double linerOffset) const {
+    ContactState s;
+    film_.rigidThickness(0.0, 0.0, s.h);
+    if (clearance_) clearance_->add(linerOffset, s.h);
+    s.hRigid = s.h;
+    s.hTotal = s.h;  // undeformed bodies at the start
+    return s;
+}
+
+void SkirtContact::evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
+                            const Eigen::Vector2d& x, const Eigen::VectorXd& y, ContactIterate& it, WorkTally& work) {
+    filmThickness(step, x, y, it, work);
+    const fem::Stopwatch t0;
+    contactAndFloor(it);
+    solveFilm(step, now, before, it, work);
+    work.film += t0.seconds();
+}
+
+void SkirtContact::filmThickness(const ContactStep& step, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                                 ContactIterate& it, WorkTally& work) {
+    fem::Stopwatch t0;
+    film_.rigidThickness(x[0], x[1], it.hRigid);
+    if (clearance_) clearance_->add(step.linerOffset, it.hRigid);  // distortion, thermal (seed eq. 2)
+    it.h = it.hRigid;
+    const double rigidSeconds = t0.seconds();
+    if (piston_ || liner_) {
+        // Elastic Δh of y at this offset; the Jacobian's evaluations reuse the pass's (y frozen).
+        t0.restart();
+        if (!(elasticOffset_ == step.linerOffset && elasticY_.size() == y.size() && elasticY_ == y)) {
+            if (piston_) piston_->filmChange(y.head(mp_), 0.0, pistonDh_);
+            if (liner_) liner_->filmChange(y.tail(ml_), step.linerOffset, linerDh_);
+            elasticY_ = y;
+            elasticOffset_ = step.linerOffset;
+        }
+        if (piston_) it.h += pistonDh_;
+        if (liner_) it.h += linerDh_;
+        work.mapping += t0.seconds();
+    }
+    work.film += rigidSeconds;
+}
+
+void SkirtContact::contactAndFloor(ContactIterate& it) const {
+    const lube::FilmGrid& g = film_.grid();
+    // Where the surfaces touch or overlap, the contact pressure of the unfloored h (asperities,
+    // and the coating's hard contact below h = 0) carries the load; the Reynolds equation sees h
+    // floored at a fluid film of 0.05σ (0.01 c_r without contact). Counted in `floored`; the
+    // outputs show the unfloored thickness (hTotal, minGap).
+    const double floor = contact_ ? 0.05 * case_.contact.sigma : 0.01 * case_.piston.clearance;
+    it.hTotal = it.h;
+    it.pc = Eigen::VectorXd::Zero(g.size());
+    it.pcHard = Eigen::VectorXd::Zero(g.size());
+    it.minGap = std::numeric_limits<double>::infinity();
+    it.hardForce = 0.0;
+    it.floored = 0;
+    for (int k = 0; k < g.size(); ++k) {
+        if (g.kind(k) == lube::NodeKind::Void) continue;
+        it.minGap = std::min(it.minGap, it.h[k]);
+        if (contact_) {
+            double asperity = 0.0, hard = 0.0;
+            contactPressure(it.h[k], asperity, hard);
+            it.pc[k] = asperity + hard;
+            if (hard > 0.0) {
+                it.pcHard[k] = hard;
+                it.hardForce -= hard * g.surfaceArea(k) * std::cos(g.theta(g.thetaIndex(k)));
+            }
+        }
+        if (it.h[k] < floor) {
+            it.h[k] = floor;
+            ++it.floored;
+        }
+    }
+}
+
+lube::FilmIntegralOptions SkirtContact::integralOptions() const {
+    lube::FilmIntegralOptions io;
+    io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
+    io.cavitationPressure = case_.lubricant.cavitationPressure;
+    io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
+    return io;
+}
+
+void SkirtContact::solveFilm(const ContactStep& step, const ContactState& now, const ContactState& before,
+                             ContactIterate& it, WorkTally& work) {
+    const lube::FilmGrid& g = film_.grid();
+    // Squeeze term: BDF2 of the whole (unfloored) film thickness with coupling.elastic_squeeze,
+    // else of the rigid film thickness only (docs/coupling.md §3: with the elastic rate the
+    // partitioned coupling has a gain ∝ 1/Δt and does not converge; it needs the Newton method).
+    if (case_.coupling.elasticSqueeze)
+        it.dhdt = (step.a0 * it.hTotal + step.a1 * now.hTotal + step.a2 * before.hTotal) / step.dt;
+    else
+        it.dhdt = (step.a0 * it.hRigid + step.a1 * now.hRigid + step.a2 * before.hRigid) / step.dt;
+    lube::FilmState fs;
+    fs.h = it.h;
+    fs.dhdt = it.dhdt;
+    fs.outer.axial = -step.pistonVelocity;  // the liner slides past the piston-fixed grid
+    const Eigen::VectorXd* warm = now.p.size() == g.size() ? &now.p : nullptr;
+    lube::ReynoldsResult solved = solver_.solve(fs, warm);
+    it.p = std::move(solved.pressure);
+    if (solved.fellBack) ++work.fallbackSolves;
+    ++work.filmSolves;
+    lube::FilmIntegralOptions io = integralOptions();
+    io.contactPressure = contact_ ? &it.pc : nullptr;
+    it.loads = lube::integrateFilm(g, fs, solver_.lubricant(), it.p, io);
+    const Eigen::Vector3d F = it.loads.totalForce();
+    it.action = {F.x(), F.z(), it.loads.moment.y()};
+}
+
+void SkirtContact::addModalLoad(const ContactStep& step, const ContactIterate& it, Eigen::VectorXd& f,
+                                WorkTally& work) const {
+    const fem::Stopwatch t0;
+    const Eigen::VectorXd ptot = it.p + it.pc;
+    Eigen::VectorXd fb;
+    if (piston_) {  // load mapping: Φᵀ A p
+        piston_->modalForce(ptot, 0.0, fb);
+        f.head(mp_) += fb;
+    }
+    if (liner_) {
+        liner_->modalForce(ptot, step.linerOffset, fb);
+        f.tail(ml_) += fb;
+    }
+    work.mapping += t0.seconds();
+}
+
+double SkirtContact::filmChange(const ContactStep& step, const Eigen::VectorXd& dy, WorkTally& work) const {
+    // max |Δh| over the grid, per body.
+    const fem::Stopwatch t0;
+    double res = 0.0;
+    Eigen::VectorXd dh;
+    if (piston_) {
+        piston_->filmChange(dy.head(mp_), 0.0, dh);
+        res = dh.cwiseAbs().maxCoeff();
+    }
+    if (liner_) {
+        liner_->filmChange(dy.tail(ml_), step.linerOffset, dh);
+        res = std::max(res, dh.cwiseAbs().maxCoeff());
+    }
+    work.mapping += t0.seconds();
+    return res;
+}
+
+Eigen::VectorXd SkirtContact::modalFilmChangeScale() const {
+    // The piston's shapes are fixed to the grid; the liner's at its mid-stroke offset.
+    Eigen::VectorXd s(mp_ + ml_);
+    Eigen::MatrixXd Psi;
+    if (piston_) {
+        piston_->filmChangeShapes(0.0, Psi);
+        s.head(mp_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+    }
+    if (liner_) {
+        liner_->filmChangeShapes(linerOffset_(90.0), Psi);
+        s.tail(ml_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+    }
+    return s;
+}
+
+ContactState SkirtContact::accepted(const ContactIterate& it) const {
+    ContactState s;
+    s.h = it.h;
+    s.hRigid = it.hRigid;
+    s.hTotal = it.hTotal;
+    s.p = it.p;
+    return s;
+}
+
+void SkirtContact::checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const {
+    if (!piston_) return;
+    const Eigen::Matrix<double, 6, 1> r =
+        piston_->resultant(it.p + it.pc, 0.0, Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0));
+    const Eigen::Vector3d film = it.loads.pressureForce + it.loads.contactForce;
+    worstDiff = std::max(worstDiff, (r.head<3>() - film).norm());
+    largestForce = std::max(largestForce, film.norm());
+}
+
+void SkirtContact::contactPressure(double h, double& asperity, double& hard) const {
+    asperity = contact_->pressure(std::max(h, 0.0));
+    hard = foundation_->pressure(h);
+}
+
+double SkirtContact::contactSlope(double h) const {
+    if (h < 0.0) return foundation_->pressureSlope(h);
+    return contact_->pressureSlope(h);
+}
+
+ClearanceRange SkirtContact::centredClearance(double linerOffset) const {
+    const ContactState s = initialState(linerOffset);
+    const lube::FilmGrid& g = film_.grid();
+    ClearanceRange r{std::numeric_limits<double>::infinity(), 0.0, -std::numeric_limits<double>::infinity()};
+    int n = 0;
+    for (int k = 0; k < g.size(); ++k)
+        if (g.kind(k) != lube::NodeKind::Void) {
+            r.min = std::min(r.min, s.h[k]);
+            r.max = std::max(r.max, s.h[k]);
+            r.mean += s.h[k];
+            ++n;
+        }
+    r.mean /= std::max(n, 1);
+    return r;
+}
+
+}  // namespace flexehd::cosim

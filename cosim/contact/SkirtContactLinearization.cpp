@@ -1,0 +1,127 @@
+// SkirtContact::linearize: the change of the skirt film's loads with the modal coordinates y for
+// the coupled Newton method (docs/coupling.md §1, §3). With h = h_rigid(x) + Ψ y and, with
+// coupling.elastic_squeeze, δḣ_j = (a0/Δt) Ψ_j, the modal column j follows from the film-change
+// shape Ψ_j: δp_j from the film's linearisation with its cavitated set held
+// (lube::FilmLinearization — a generalized Jacobian of the semismooth equation), δp_c,j =
+// p_c'(h) Ψ_j, the load change by the gradient of the (affine in p, smooth in h) film integrals
+// (lube::FilmLoadGradient), and the modal load of the mapped δp_j + δp_c,j. Each part is affine in
+// the rate r = a0/Δt: δp_j = δp_j^h + r δp_j^ḣ.
+#include "cosim/contact/SkirtContact.hpp"
+
+#include "fem/Stopwatch.hpp"
+#include "lube/FilmIntegrals.hpp"
+#include "lube/FilmLoadGradient.hpp"
+
+#include <algorithm>
+
+namespace flexehd::cosim {
+
+void SkirtContact::filmChangeColumns(const ContactStep& step, const Eigen::Vector2d& x) {
+    const lube::FilmGrid& g = film_.grid();
+    const int n = g.size(), k = 2 + mp_ + ml_;
+    // δh per unknown: the rigid thickness is linear in (e, β); the modal columns are Ψ (zero on
+    // Void nodes; the piston's are constant and written once). Kept between calls: n × k.
+    Eigen::MatrixXd& Dh = jacobianDh_;
+    if (Dh.rows() != n || Dh.cols() != k) {
+        Dh.resize(n, k);
+        if (piston_) Dh.middleCols(2, mp_) = psiPiston_;
+    }
+    {
+        const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+        const Eigen::Vector2d d(1e-3 * case_.piston.clearance, 1e-3 * case_.piston.clearance / reach);
+        Eigen::VectorXd h0, h1;
+        film_.rigidThickness(x[0], x[1], h0);
+        for (int i = 0; i < 2; ++i) {
+            Eigen::Vector2d xi = x;
+            xi[i] += d[i];
+            film_.rigidThickness(xi[0], xi[1], h1);
+            for (int r = 0; r < n; ++r) Dh(r, i) = g.kind(r) == lube::NodeKind::Void ? 0.0 : (h1[r] - h0[r]) / d[i];
+        }
+    }
+    if (liner_ && !(psiLinerOffset_ == step.linerOffset)) {  // once per step (the offset is the step's)
+        liner_->filmChangeShapes(step.linerOffset, psiLiner_);
+        Dh.rightCols(ml_) = psiLiner_;
+        psiLinerOffset_ = step.linerOffset;
+    }
+}
+
+void SkirtContact::linearize(const ContactStep& step, const Eigen::Vector2d& x, const ContactIterate& it,
+                             ContactJacobian& J, WorkTally& work) {
+    const lube::FilmGrid& g = film_.grid();
+    const int n = g.size(), m = mp_ + ml_;
+    const bool elasticRate = case_.coupling.elasticSqueeze;
+    fem::Stopwatch t0;
+
+    filmChangeColumns(step, x);
+    const Eigen::MatrixXd& Dh = jacobianDh_;
+    J.filmChangePerUnknown = Dh.colwise().lpNorm<Eigen::Infinity>().transpose();
+    // The modal columns only: the master takes the (e, β) columns by differences of full
+    // evaluations. The film sees the floored thickness (no δh where the floor holds); the rate
+    // sees the unfloored one, and the modes only with coupling.elastic_squeeze.
+    const Eigen::MatrixXd Psi = Dh.rightCols(m);
+    Eigen::MatrixXd flooredPsi;
+    if (it.floored > 0) {
+        flooredPsi = Psi;
+        for (int r = 0; r < n; ++r)
+            if (it.h[r] != it.hTotal[r]) flooredPsi.row(r).setZero();
+    }
+    const Eigen::MatrixXd& PsiFilm = it.floored > 0 ? flooredPsi : Psi;
+
+    // δp from the film's linearisation at the iterate's solution: the thickness part and the
+    // rate part (per unit rate) apart.
+    lube::FilmState fs;
+    fs.h = it.h;
+    fs.dhdt = it.dhdt;
+    fs.outer.axial = -step.pistonVelocity;
+    const lube::Lubricant& lub = solver_.lubricant();
+    Eigen::VectorXd rho(n), eta(n);
+    for (int r = 0; r < n; ++r) {
+        rho[r] = lub.density(it.p[r]);
+        eta[r] = lub.viscosity(it.p[r]);
+    }
+    linearization_->linearize(fs, rho, eta, it.p, case_.lubricant.cavitationPressure);
+    const Eigen::MatrixXd dPh = linearization_->pressureChange(PsiFilm, Eigen::MatrixXd());
+    const Eigen::MatrixXd dPrate =
+        elasticRate ? linearization_->pressureChange(Eigen::MatrixXd(), Psi, 1.0) : Eigen::MatrixXd(n, 0);
+    // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
+    // (the load is p + p_c); its slope once per node.
+    Eigen::VectorXd slope = Eigen::VectorXd::Zero(n);
+    if (contact_)
+        for (int r = 0; r < n; ++r)
+            if (g.kind(r) != lube::NodeKind::Void) slope[r] = contactSlope(it.hTotal[r]);
+    const Eigen::MatrixXd dPc = slope.asDiagonal() * Psi;
+    work.film += t0.seconds();
+    t0.restart();
+
+    // The load's gradient in (p, h, p_c) applied to all modal columns at once, the friction's
+    // change included (at high sliding speed its moment about the pin is a large part of the
+    // motion's dependence on the deformation).
+    const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, it.p, integralOptions());
+    J.loadH = G.change(dPh, PsiFilm, contact_ ? dPc : Eigen::MatrixXd());
+    J.loadRate = elasticRate ? G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd()) : Eigen::MatrixXd(6, 0);
+
+    // The modal loads of the mapped δp + δp_c, piston rows then liner rows.
+    const Eigen::MatrixXd dLoad = dPh + dPc;
+    J.modalH.resize(m, m);
+    J.modalRate.resize(elasticRate ? m : 0, m);
+    Eigen::MatrixXd F;
+    if (piston_) {
+        piston_->modalForces(dLoad, 0.0, F);
+        J.modalH.topRows(mp_) = F;
+        if (elasticRate) {
+            piston_->modalForces(dPrate, 0.0, F);
+            J.modalRate.topRows(mp_) = F;
+        }
+    }
+    if (liner_) {
+        liner_->modalForces(dLoad, step.linerOffset, F);
+        J.modalH.bottomRows(ml_) = F;
+        if (elasticRate) {
+            liner_->modalForces(dPrate, step.linerOffset, F);
+            J.modalRate.bottomRows(ml_) = F;
+        }
+    }
+    work.modal += t0.seconds();
+}
+
+}  // namespace flexehd::cosim
