@@ -62,13 +62,15 @@ struct ContactJacobian {
     Eigen::VectorXd filmChangePerUnknown;
 };
 
-/// The work of the contacts and of the bodies' response, added into the run's statistics.
+/// The work of the contacts and of the step's iteration, added into the run's statistics.
 struct WorkTally {
     double film = 0.0;     ///< s: film thickness, contact, film solves and integrals
     double mapping = 0.0;  ///< s: load and deformation mapping products
     double modal = 0.0;    ///< s: modal response, the coupled Jacobian's structure part, acceleration
     long filmSolves = 0;
     long fallbackSolves = 0;  ///< film solves redone by the fallback solver
+    long jacobians = 0;       ///< Jacobians formed by the step's iteration
+    long resolvedSteps = 0;   ///< steps ended by the coupled Newton's resolution test
 };
 
 class FilmContact {

@@ -20,7 +20,7 @@
 //   δp_j = δp_j^h + r δp_j^ḣ,   R_x rows = A_x + r B_x,   R_y rows = I − S(r)⁻¹ (F^h + r F^ḣ).
 // The parts are kept (CoupledJacobianParts) and the Jacobian is re-formed for a new step size
 // without a new linearisation — a step-size change alone costs a dense refactorization.
-#include "cosim/coupling/PistonSimulationState.hpp"
+#include "cosim/coupling/StepSolver.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -34,7 +34,7 @@
 
 namespace flexehd::cosim {
 
-Eigen::Matrix<double, 2, 6> PistonSimulation::actionGradient(const Context& ctx) const {
+Eigen::Matrix<double, 2, 6> StepSolver::actionGradient(const StepContext& ctx) const {
     // The equations of motion's right-hand side is affine in the film action (F_x, F_z, M_y).
     Eigen::Matrix<double, 2, 6> dForce = Eigen::Matrix<double, 2, 6>::Zero();
     const Eigen::Vector2d f0 = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 0.0});
@@ -44,7 +44,7 @@ Eigen::Matrix<double, 2, 6> PistonSimulation::actionGradient(const Context& ctx)
     return dForce;
 }
 
-void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev) {
+void StepSolver::linearizeCoupled(const StepContext& ctx, const Eigen::Vector2d& x, const StepEvaluation& ev) {
     // Each contact's load change with y; the motion rows through the film action (f is affine in
     // (F_x, F_z, M_y)), the modal rows as the contacts' modal loads (the bodies' response is applied
     // when the Jacobian is formed: it depends on the step size with bodies.response: dynamic).
@@ -75,7 +75,7 @@ void PistonSimulation::linearizeCoupled(const Context& ctx, const Eigen::Vector2
     work_.modal += t0.seconds();
 }
 
-Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx) {
+Eigen::MatrixXd StepSolver::coupledJacobian(const StepContext& ctx) {
     const fem::Stopwatch t0;
     const CoupledJacobianParts& P = *newtonParts_;
     const int m = mp_ + ml_, k = 2 + m;
@@ -108,8 +108,8 @@ Eigen::MatrixXd PistonSimulation::coupledJacobian(const Context& ctx) {
     return J;
 }
 
-bool PistonSimulation::formCoupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
-                                           const Evaluation& ev, const Eigen::Vector2d& tol, int& filmSolves) {
+bool StepSolver::formCoupledJacobian(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                                           const StepEvaluation& ev, const Eigen::Vector2d& tol, int& filmSolves) {
     Eigen::MatrixXd& J = newtonJacobian_;
     J = coupledJacobian(ctx);
     // The (e, β) columns by differences of full evaluations (film solve and modal response): a
@@ -119,7 +119,7 @@ bool PistonSimulation::formCoupledJacobian(const Context& ctx, const Eigen::Vect
     for (int i = 0; i < 2; ++i) {
         Eigen::Vector2d xp = x;
         xp[i] += fdScale * tol[i];
-        Evaluation e2;
+        StepEvaluation e2;
         try {
             e2 = evaluate(ctx, xp, y, true);
         } catch (const std::runtime_error&) {
@@ -144,7 +144,7 @@ bool PistonSimulation::formCoupledJacobian(const Context& ctx, const Eigen::Vect
     return true;
 }
 
-Eigen::VectorXd PistonSimulation::residualScale(const Evaluation& ev, double forceFloor, double reach,
+Eigen::VectorXd StepSolver::residualScale(const StepEvaluation& ev, double forceFloor, double reach,
                                                 double couplingTol) const {
     const int k = 2 + mp_ + ml_;
     Eigen::VectorXd r = Eigen::VectorXd::Ones(k);
@@ -157,17 +157,29 @@ Eigen::VectorXd PistonSimulation::residualScale(const Evaluation& ev, double for
     return r;
 }
 
-double PistonSimulation::coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) {
+double StepSolver::coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) {
     if (!residualScale.allFinite()) return std::numeric_limits<double>::infinity();
     return 0.5 * F.cwiseQuotient(residualScale).squaredNorm();
 }
 
-Eigen::VectorXd PistonSimulation::levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& rScale) const {
+Eigen::VectorXd StepSolver::levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& rScale) const {
     const Eigen::VectorXd dzScale = case_.piston.clearance * unknownScale_.cwiseInverse();
     const Eigen::MatrixXd Js = rScale.cwiseInverse().asDiagonal() * newtonJacobian_ * dzScale.asDiagonal();
     Eigen::MatrixXd N = Js.transpose() * Js;
     N.diagonal().array() += 1.0;
     return -(dzScale.asDiagonal() * N.llt().solve(Js.transpose() * F.cwiseQuotient(rScale)));
+}
+
+// Good Broyden update of the kept inverse Jacobian H for the update s and the residual change
+// dF it caused, in the norm of the film-thickness change of s (Sherman–Morrison):
+//   J₊ = J + (dF − J s) wᵀ/(wᵀ s),  w = D⁻² s  ⇔  H₊ = H + (s − H dF)(wᵀ H)/(wᵀ H dF).
+void StepSolver::broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF) {
+    const Eigen::VectorXd w = s.cwiseProduct(unknownScale_).cwiseProduct(unknownScale_);
+    const Eigen::VectorXd HdF = newtonInverse_ * dF;
+    const double denom = w.dot(HdF);
+    if (!(std::abs(denom) > 1e-12 * w.norm() * HdF.norm())) return;  // update undefined: keep H
+    const Eigen::RowVectorXd wH = w.transpose() * newtonInverse_;
+    newtonInverse_.noalias() += (s - HdF) * (wH / denom);
 }
 
 }  // namespace flexehd::cosim

@@ -1,16 +1,16 @@
-// PistonSimulation::evaluate: one iterate (e, β, y) of a step as stages (docs/coupling.md §1) —
+// StepSolver::evaluate: one iterate (e, β, y) of a step as stages (docs/coupling.md §1) —
 // every film contact's film and action (FilmContact::evaluate), the equations of motion's
 // residual, and the bodies' response to the contacts' modal loads.
 #include <cmath>
 
-#include "cosim/coupling/PistonSimulationState.hpp"
+#include "cosim/coupling/StepSolver.hpp"
 #include "fem/Stopwatch.hpp"
 
 namespace flexehd::cosim {
 
-PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, const Eigen::Vector2d& x,
+StepEvaluation StepSolver::evaluate(const StepContext& ctx, const Eigen::Vector2d& x,
                                                         const Eigen::VectorXd& y, bool structure) {
-    Evaluation ev;
+    StepEvaluation ev;
     ev.films.resize(contacts_.size());
     for (std::size_t c = 0; c < contacts_.size(); ++c) {
         contacts_[c]->evaluate(ctx.step, ctx.now->films[c], ctx.before->films[c], x, y, ev.films[c], work_);
@@ -28,9 +28,9 @@ PistonSimulation::Evaluation PistonSimulation::evaluate(const Context& ctx, cons
     return ev;
 }
 
-void PistonSimulation::motionResidual(const Context& ctx, const Eigen::Vector2d& x, Evaluation& ev) const {
-    const State& n = *ctx.now;
-    const State& b = *ctx.before;
+void StepSolver::motionResidual(const StepContext& ctx, const Eigen::Vector2d& x, StepEvaluation& ev) const {
+    const StepState& n = *ctx.now;
+    const StepState& b = *ctx.before;
     const ContactStep& st = ctx.step;
     ev.vel = (st.a0 * x + st.a1 * n.x + st.a2 * b.x) / st.dt;
     ev.acc = (st.a0 * ev.vel + st.a1 * n.v + st.a2 * b.v) / st.dt;
@@ -45,7 +45,7 @@ void PistonSimulation::motionResidual(const Context& ctx, const Eigen::Vector2d&
                   case_.piston.mass * std::abs(case_.piston.cgX) * A;
 }
 
-void PistonSimulation::structureResponse(const Context& ctx, Evaluation& ev) {
+void StepSolver::structureResponse(const StepContext& ctx, StepEvaluation& ev) {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(mp_ + ml_), q;
     for (std::size_t c = 0; c < contacts_.size(); ++c) contacts_[c]->addModalLoad(ctx.step, ev.films[c], f, work_);
     const fem::Stopwatch t0;

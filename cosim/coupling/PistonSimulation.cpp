@@ -4,7 +4,7 @@
 #include "cosim/coupling/RunProgress.hpp"
 
 #include "cosim/clearance/ClearanceTerms.hpp"
-#include "cosim/coupling/PistonSimulationState.hpp"
+#include "cosim/coupling/StepSolver.hpp"
 #include "lube/FilmIntegrals.hpp"
 #include "cosim/mapping/FlexibleBodyLoader.hpp"
 
@@ -72,14 +72,8 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
         ml_ = linerBody_->modes();
     }
     if (mp_ + ml_ > 0) requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, mp_ + ml_);
-    if (c.coupling.response == ElasticResponse::Dynamic) {
-        if (pistonBody_)
-            pistonDynamics_ = std::make_unique<modal::HeldModalDynamics>(pistonBody_->body(), pistonBody_->heldInterfaces());
-        if (linerBody_)
-            linerDynamics_ = std::make_unique<modal::HeldModalDynamics>(linerBody_->body(), linerBody_->heldInterfaces());
-    }
-    setPartitionedScale();
-    if (c.coupling.method == CouplingMethod::Newton && mp_ + ml_ > 0) newtonParts_ = std::make_unique<CoupledJacobianParts>();
+    stepper_ = std::make_unique<StepSolver>(case_, kin_, dyn_, pressure_, contacts_, pistonBody_, linerBody_,
+                                            [this](double deg) { return linerOffset(deg); }, work_);
     stats_.timings.setup = t0.seconds();
 }
 
@@ -87,22 +81,7 @@ PistonSimulation::~PistonSimulation() = default;
 
 void PistonSimulation::addContact(std::unique_ptr<FilmContact> contact) {
     contacts_.push_back(std::move(contact));
-    setPartitionedScale();
-}
-
-void PistonSimulation::setPartitionedScale() {
-    if (case_.coupling.method != CouplingMethod::Partitioned || mp_ + ml_ == 0) return;
-    // A unit of e or β moves the film by up to 1 or the skirt reach; a modal coordinate by the
-    // largest film change of a unit of it over the contacts.
-    const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
-    const int m = mp_ + ml_;
-    partitionedScale_.resize(2 + m);
-    partitionedScale_.head<2>() << 1.0, reach;
-    partitionedScale_.tail(m) = contacts_.front()->modalFilmChangeScale();
-    for (std::size_t k = 1; k < contacts_.size(); ++k)
-        partitionedScale_.tail(m) = partitionedScale_.tail(m).cwiseMax(contacts_[k]->modalFilmChangeScale());
-    for (Eigen::Index j = 0; j < partitionedScale_.size(); ++j)
-        partitionedScale_[j] = (partitionedScale_[j] > 0.0 ? partitionedScale_[j] : 1.0) / case_.piston.clearance;
+    stepper_->contactsChanged();
 }
 
 double PistonSimulation::linerOffset(double crankDeg) const {
@@ -113,19 +92,7 @@ ClearanceRange PistonSimulation::centredClearance(double crankDeg) const {
     return skirt_->centredClearance(linerOffset(crankDeg));
 }
 
-// Good Broyden update of the kept inverse Jacobian H for the update s and the residual change
-// dF it caused, in the norm of the film-thickness change of s (Sherman–Morrison):
-//   J₊ = J + (dF − J s) wᵀ/(wᵀ s),  w = D⁻² s  ⇔  H₊ = H + (s − H dF)(wᵀ H)/(wᵀ H dF).
-void PistonSimulation::broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF) {
-    const Eigen::VectorXd w = s.cwiseProduct(unknownScale_).cwiseProduct(unknownScale_);
-    const Eigen::VectorXd HdF = newtonInverse_ * dF;
-    const double denom = w.dot(HdF);
-    if (!(std::abs(denom) > 1e-12 * w.norm() * HdF.norm())) return;  // update undefined: keep H
-    const Eigen::RowVectorXd wH = w.transpose() * newtonInverse_;
-    newtonInverse_.noalias() += (s - HdF) * (wH / denom);
-}
-
-StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cycle, double stepDeg,
+StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg,
                                     int iterations) const {
     StepRecord r;
     const CrankState k = kin_.at(s.crankDeg);
@@ -163,7 +130,7 @@ StepRecord PistonSimulation::record(const State& s, const Evaluation& ev, int cy
     return r;
 }
 
-Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cycle) const {
+Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev, int cycle) const {
     Snapshot sn;
     const lube::FilmGrid& g = skirt_->grid();
     const ContactIterate& f = ev.films.front();  // the skirt's
@@ -196,8 +163,8 @@ Snapshot PistonSimulation::snapshot(const State& s, const Evaluation& ev, int cy
     return sn;
 }
 
-PistonSimulation::State PistonSimulation::initialState(const SimulationCallbacks& cb) const {
-    State s;
+StepState PistonSimulation::initialState(const SimulationCallbacks& cb) const {
+    StepState s;
     s.crankDeg = case_.time.startDeg;
     const double offset = linerOffset(s.crankDeg);
     for (const auto& contact : contacts_) s.films.push_back(contact->initialState(offset));
@@ -214,7 +181,7 @@ PistonSimulation::State PistonSimulation::initialState(const SimulationCallbacks
         }
     }
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);
-    if (pistonDynamics_ || linerDynamics_) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
+    if (stepper_->dynamicResponse()) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
     return s;
 }
 
@@ -238,7 +205,7 @@ double PistonSimulation::plannedStep(double crankDeg, double dtDeg, double cycle
     return step;
 }
 
-double PistonSimulation::localErrorRatio(const State& s, const State& n, double stepDeg) const {
+double PistonSimulation::localErrorRatio(const StepState& s, const StepState& n, double stepDeg) const {
     // The predictor–corrector difference against time.lateral_tolerance and tilt_tolerance.
     const double dt = stepDeg * kin_.secondsPerDegree();
     const Eigen::Vector2d pred = s.x + dt * s.v + 0.5 * dt * dt * s.a;
@@ -246,11 +213,11 @@ double PistonSimulation::localErrorRatio(const State& s, const State& n, double 
     return std::max(err[0] / case_.time.lateralTolerance, err[1] / case_.time.tiltTolerance);
 }
 
-std::string PistonSimulation::stepSizeExhausted(const State& s, int cycle, bool converged, double ratio,
+std::string PistonSimulation::stepSizeExhausted(const StepState& s, int cycle, bool converged, double ratio,
                                                 const std::string& failure) const {
     // A folded quasi-static equilibrium is no matter of step size or iterations.
     const std::string advice =
-        !converged && foldedJacobians_ > 0
+        !converged && stepper_->foldedJacobians() > 0
             ? "The skirt's quasi-static equilibrium in the film is lost here: on some combination of "
               "its modes the film's stiffness (the wedge of the sliding liner) exceeds the "
               "structure's (det(I - dH/dy) < 0 in the step's Jacobian), and without the elastic "
@@ -267,13 +234,13 @@ std::string PistonSimulation::stepSizeExhausted(const State& s, int cycle, bool 
               "check the loads and clearances of the case.";
     return fmt::format(
         "the time step fell below time.min_step_deg = {:g} deg at crank angle {:.4f} deg of cycle {}: {}. "
-        "State: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
+        "StepState: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
         case_.time.minStepDeg, crankAngle720(s.crankDeg), cycle,
         converged ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure, s.x[0] * 1e6, s.x[1] * 1e3,
         minimumGap(skirt_->grid(), s.films.front().hTotal) * 1e6, advice);
 }
 
-void PistonSimulation::requireBoundedMotion(const State& n, int cycle) const {
+void PistonSimulation::requireBoundedMotion(const StepState& n, int cycle) const {
     const double skirtLength = case_.piston.skirtTop - case_.piston.skirtBottom;
     if (!n.x.allFinite() || std::abs(n.x[0]) > 20.0 * case_.piston.clearance ||
         std::abs(n.x[1]) * skirtLength > 40.0 * case_.piston.clearance)
@@ -283,7 +250,7 @@ void PistonSimulation::requireBoundedMotion(const State& n, int cycle) const {
             crankAngle720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance));
 }
 
-void PistonSimulation::checkLoadMapping(const Evaluation& ev, double& worstDiff, double& largestForce) {
+void PistonSimulation::checkLoadMapping(const StepEvaluation& ev, double& worstDiff, double& largestForce) {
     // The mapped resultant on the flexible piston against the film's normal force, per contact.
     for (std::size_t c = 0; c < contacts_.size(); ++c) contacts_[c]->checkLoadMapping(ev.films[c], worstDiff, largestForce);
     stats_.worstMappingError = worstDiff / std::max(largestForce, 1e-300);
@@ -297,6 +264,8 @@ void PistonSimulation::addWork(WorkTally& counted) {
     t.structure += (work_.mapping - counted.mapping) + (work_.modal - counted.modal);
     stats_.filmSolves += work_.filmSolves - counted.filmSolves;
     stats_.fallbackSolves += work_.fallbackSolves - counted.fallbackSolves;
+    stats_.jacobians += work_.jacobians - counted.jacobians;
+    stats_.resolvedSteps += work_.resolvedSteps - counted.resolvedSteps;
     counted = work_;
 }
 
@@ -327,15 +296,15 @@ double PistonSimulation::periodicityError(const std::vector<StepRecord>& cycle, 
 std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
     const fem::Stopwatch tRun;
     const TimeSpec& T = case_.time;
-    State s = initialState(cb);
-    State prev = s;
+    StepState s = initialState(cb);
+    StepState prev = s;
     double dtDeg = std::min(T.maxStepDeg, 0.1);
     const double every = case_.output.vtkEveryDeg;
     std::vector<StepRecord> previousCycle, cycleRecords;
     // Degrees since the start of the cycle of each record (monotonic, unlike the written crank
     // angle when time.start_deg > 0): the abscissa of the periodicity comparison.
     std::vector<double> previousSince, cycleSince;
-    Evaluation ev, lastEv;
+    StepEvaluation ev, lastEv;
     bool haveLast = false;
     stats_ = RunStatistics{.timings = stats_.timings};
     stats_.minStepDeg = T.maxStepDeg;
@@ -350,7 +319,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         cycleSince.clear();
         progress.startCycle(cycle, tRun.seconds());
         int snapshots = 0;
-        auto takeSnapshot = [&](const State& at, const Evaluation& e) {
+        auto takeSnapshot = [&](const StepState& at, const StepEvaluation& e) {
             ++snapshots;
             if (cb.onSnapshot) cb.onSnapshot(snapshot(at, e, cycle));
         };
@@ -366,10 +335,10 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         while (s.crankDeg < cycleEnd - 1e-9) {
             bool atSnapshot = false;
             const double step = plannedStep(s.crankDeg, dtDeg, cycleStart, cycleEnd, atSnapshot);
-            State n;
+            StepState n;
             int iterations = 0;
             std::string failure;
-            const bool ok = advance(s, prev, step, n, ev, iterations, failure);
+            const bool ok = stepper_->advance(s, prev, step, n, ev, iterations, failure);
             const double ratio = ok ? localErrorRatio(s, n, step) : 0.0;
             if (!ok || ratio > 1.0) {
                 ++stats_.rejectedSteps;
@@ -383,7 +352,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             addWork(counted);
             requireBoundedMotion(n, cycle);
             ++stats_.steps;
-            foldedJacobians_ = 0;
+            stepper_->stepAccepted();
             stats_.maxIterations = std::max(stats_.maxIterations, iterations);
             stats_.minStepDeg = std::min(stats_.minStepDeg, step);
             if (mp_ > 0) checkLoadMapping(ev, worstMappingDiff, largestFilmForce);

@@ -18,16 +18,13 @@
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
 #include "cosim/contact/SkirtContact.hpp"
-#include "cosim/coupling/CouplingAccelerator.hpp"
 #include "cosim/coupling/StepRecord.hpp"
 #include "cosim/engine/CrankKinematics.hpp"
 #include "cosim/engine/CylinderPressure.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
 #include "cosim/mapping/FlexibleBody.hpp"
-#include "modal/HeldModalDynamics.hpp"
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include <functional>
 #include <limits>
@@ -37,6 +34,10 @@
 #include <vector>
 
 namespace flexehd::cosim {
+
+class StepSolver;
+struct StepState;
+struct StepEvaluation;
 
 /// Film and body state at one written crank angle (the VTK snapshots).
 struct Snapshot {
@@ -114,82 +115,25 @@ public:
     ClearanceRange centredClearance(double crankDeg) const;
 
 private:
-    struct State;
-    struct Context;
-    struct Evaluation;
-    /// One iterate (e, β, y) of the step: every contact's film and action, the motion's residual
-    /// and (structure) the bodies' response H(y) to the contacts' modal loads.
-    Evaluation evaluate(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y, bool structure);
-    // The stages of evaluate.
-    void motionResidual(const Context& ctx, const Eigen::Vector2d& x, Evaluation& ev) const;
-    void structureResponse(const Context& ctx, Evaluation& ev);
-    bool advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
-                 std::string& failure);
-    // The stages of advance (StepIteration.cpp).
-    struct StepTolerances;
-    struct NewtonIterate;
-    enum class PassOutcome { Retry, Failed, Update };
-    Context stepContext(const State& s, const State& prev, double dtDeg);
-    StepTolerances stepTolerances() const;
-    /// max |Δh(H(y)) − Δh(y)| over the grid (m).
-    double couplingResidual(const Context& ctx, const Evaluation& ev, const Eigen::VectorXd& y);
-    /// coupling.method newton: the line search, the Jacobian kept, re-formed or Broyden-updated,
-    /// and the damped update dz of (e, β, y); Retry: x, y were moved back (evaluate again).
-    PassOutcome coupledNewtonPass(const Context& ctx, const StepTolerances& tol, const Evaluation& ev,
-                                  double couplingRes, NewtonIterate& it, Eigen::Vector2d& x, Eigen::VectorXd& y,
-                                  int& iterations, Eigen::VectorXd& dz, bool& resolved, std::string& why);
-    /// The coupled Newton iteration has converged to the resolution of its unknowns.
-    bool resolvedToTheUnknownsResolution(const StepTolerances& tol, const Evaluation& ev, double couplingRes,
-                                         const Eigen::VectorXd& dz) const;
-    /// The finite-difference Jacobian of the motion residual (modal coordinates frozen).
-    bool motionJacobian(const Context& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
-                        const Eigen::VectorXd& y, const Evaluation& ev, int& iterations);
-    /// coupling.method partitioned: the accelerated fixed-point map of (e, β, y).
-    void partitionedUpdate(const Evaluation& ev, const Eigen::Vector2d& dx, CouplingAccelerator& acc,
-                           Eigen::Vector2d& x, Eigen::VectorXd& y);
-    void acceptStep(const Context& ctx, const State& s, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
-                    const Evaluation& ev, State& out) const;
-    struct CoupledJacobianParts;
-    /// coupling.method newton: linearises (motion residual, y − H(y)) in (e, β, y) at the
-    /// evaluation into the parts of CoupledJacobianParts (CoupledNewton.cpp, docs/coupling.md §1, §3)
-    void linearizeCoupled(const Context& ctx, const Eigen::Vector2d& x, const Evaluation& ev);
-    /// ∂(equations of motion's right-hand side)/∂(F_x, ·, F_z, ·, M_y, ·): 2 × 6, from the dynamics.
-    Eigen::Matrix<double, 2, 6> actionGradient(const Context& ctx) const;
-    void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
-    /// Forms the coupled Jacobian at the context's step size (its (e, β) columns by differences of
-    /// two full evaluations, counted in filmSolves) and its inverse; false if a film solve failed.
-    bool formCoupledJacobian(const Context& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
-                             const Evaluation& ev, const Eigen::Vector2d& tol, int& filmSolves);
-    /// The tolerance of each residual row: motion rows 1e-4 (scale + force floor), modal rows the
-    /// coupling tolerance over the largest film change of a unit of the mode.
-    Eigen::VectorXd residualScale(const Evaluation& ev, double forceFloor, double reach, double couplingTol) const;
-    /// The line search's merit ½‖F / residualScale‖² (∞ before the first Jacobian).
-    static double coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale);
-    /// −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, residual in tolerance units, unknowns in clearances of film change.
-    Eigen::VectorXd levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) const;
-    /// The Jacobian at the context's step size from the last linearisation's parts.
-    Eigen::MatrixXd coupledJacobian(const Context& ctx);
-    StepRecord record(const State& s, const Evaluation& ev, int cycle, double stepDeg, int iterations) const;
+    StepRecord record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, int iterations) const;
     // The stages of run (PistonSimulation.cpp).
-    State initialState(const SimulationCallbacks& cb) const;
+    StepState initialState(const SimulationCallbacks& cb) const;
     /// The next step: dtDeg, shortened to land on the next snapshot angle or the cycle's end.
     double plannedStep(double crankDeg, double dtDeg, double cycleStart, double cycleEnd, bool& atSnapshot) const;
     /// The local error estimate of the step s → n in units of its tolerance.
-    double localErrorRatio(const State& s, const State& n, double stepDeg) const;
+    double localErrorRatio(const StepState& s, const StepState& n, double stepDeg) const;
     /// The diagnosis when the step size falls below time.min_step_deg.
-    std::string stepSizeExhausted(const State& s, int cycle, bool converged, double ratio,
+    std::string stepSizeExhausted(const StepState& s, int cycle, bool converged, double ratio,
                                   const std::string& failure) const;
     /// Throws when the motion left the clearance by far (diverged).
-    void requireBoundedMotion(const State& n, int cycle) const;
+    void requireBoundedMotion(const StepState& n, int cycle) const;
     /// Updates RunStatistics::worstMappingError with the step's mapped resultant on the piston.
-    void checkLoadMapping(const Evaluation& ev, double& worstDiff, double& largestForce);
-    /// coupling.method partitioned: the units of (e, β, y) in clearances of film change.
-    void setPartitionedScale();
+    void checkLoadMapping(const StepEvaluation& ev, double& worstDiff, double& largestForce);
     /// Adds the contacts' and the response's work since `counted` into the run's statistics.
     void addWork(WorkTally& counted);
     double periodicityError(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
                             const std::vector<StepRecord>& previous, const std::vector<double>& previousSince) const;
-    Snapshot snapshot(const State& s, const Evaluation& ev, int cycle) const;
+    Snapshot snapshot(const StepState& s, const StepEvaluation& ev, int cycle) const;
 
     EngineCase case_;
     CrankKinematics kin_;
@@ -199,24 +143,11 @@ private:
     // snapshots' film columns are its).
     std::vector<std::unique_ptr<FilmContact>> contacts_;
     SkirtContact* skirt_ = nullptr;
-    // The flexible bodies (null: rigid), shared with the contacts' surfaces; bodies.response:
-    // dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
+    // The flexible bodies (null: rigid), shared with the contacts' surfaces.
     std::shared_ptr<const FlexibleBody> pistonBody_, linerBody_;
-    std::unique_ptr<modal::HeldModalDynamics> pistonDynamics_, linerDynamics_;
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
-    WorkTally work_;       // the contacts' and the response's work, since construction
-    // coupling.method newton with flexible bodies (else null): the last linearisation
-    std::unique_ptr<CoupledJacobianParts> newtonParts_;
-    Eigen::MatrixXd newtonJacobian_; // the coupled Jacobian as formed (before Broyden updates)
-    Eigen::MatrixXd newtonInverse_;  // inverse of the coupled Jacobian (Broyden-updated within a step)
-    Eigen::VectorXd unknownScale_;   // m of film-thickness change per unit of each unknown
-    // coupling.method partitioned with flexible bodies: units of (e, β, y) in clearances of film
-    // change, for the quasi-Newton acceleration of the joint fixed-point map (docs/coupling.md §1)
-    Eigen::VectorXd partitionedScale_;
-    int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
-    double newtonRate_ = -1.0;       // the a0/Δt it was formed for
-    Eigen::Matrix2d jacobian_;
-    bool haveJacobian_ = false;
+    WorkTally work_;       // the contacts' and the step's work, since construction
+    std::unique_ptr<StepSolver> stepper_;
     RunStatistics stats_;
 };
 

@@ -1,4 +1,4 @@
-// One time step of PistonSimulation (docs/coupling.md §1): the step's context (BDF2
+// StepSolver: one time step (docs/coupling.md §1) — the step's context (BDF2
 // coefficients, crank state, gas force, liner offset), the predictor, and the Newton/coupling
 // iteration — coupled Newton on (e, β, y) with coupling.method newton, else Newton on the motion
 // with the partitioned, accelerated modal fixed point — until the motion and the coupling
@@ -11,13 +11,47 @@
 #include <Eigen/LU>
 #include <fmt/format.h>
 
-#include "cosim/coupling/PistonSimulationState.hpp"
+#include "cosim/coupling/StepSolver.hpp"
 #include "fem/Stopwatch.hpp"
 
 namespace flexehd::cosim {
 
-PistonSimulation::Context PistonSimulation::stepContext(const State& s, const State& prev, double dtDeg) {
-    Context ctx;
+StepSolver::StepSolver(const EngineCase& c, const CrankKinematics& kin, const PistonDynamics& dyn,
+                       const CylinderPressure& pressure, const std::vector<std::unique_ptr<FilmContact>>& contacts,
+                       std::shared_ptr<const FlexibleBody> piston, std::shared_ptr<const FlexibleBody> liner,
+                       std::function<double(double)> linerOffset, WorkTally& work)
+    : case_(c), kin_(kin), dyn_(dyn), pressure_(pressure), contacts_(contacts), pistonBody_(std::move(piston)),
+      linerBody_(std::move(liner)), linerOffset_(std::move(linerOffset)), work_(work),
+      mp_(pistonBody_ ? pistonBody_->modes() : 0), ml_(linerBody_ ? linerBody_->modes() : 0) {
+    if (c.coupling.response == ElasticResponse::Dynamic) {
+        if (pistonBody_)
+            pistonDynamics_ = std::make_unique<modal::HeldModalDynamics>(pistonBody_->body(), pistonBody_->heldInterfaces());
+        if (linerBody_)
+            linerDynamics_ = std::make_unique<modal::HeldModalDynamics>(linerBody_->body(), linerBody_->heldInterfaces());
+    }
+    if (c.coupling.method == CouplingMethod::Newton && mp_ + ml_ > 0) newtonParts_ = std::make_unique<CoupledJacobianParts>();
+    contactsChanged();
+}
+
+StepSolver::~StepSolver() = default;
+
+void StepSolver::contactsChanged() {
+    if (case_.coupling.method != CouplingMethod::Partitioned || mp_ + ml_ == 0) return;
+    // A unit of e or β moves the film by up to 1 or the skirt reach; a modal coordinate by the
+    // largest film change of a unit of it over the contacts.
+    const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+    const int m = mp_ + ml_;
+    partitionedScale_.resize(2 + m);
+    partitionedScale_.head<2>() << 1.0, reach;
+    partitionedScale_.tail(m) = contacts_.front()->modalFilmChangeScale();
+    for (std::size_t k = 1; k < contacts_.size(); ++k)
+        partitionedScale_.tail(m) = partitionedScale_.tail(m).cwiseMax(contacts_[k]->modalFilmChangeScale());
+    for (Eigen::Index j = 0; j < partitionedScale_.size(); ++j)
+        partitionedScale_[j] = (partitionedScale_[j] > 0.0 ? partitionedScale_[j] : 1.0) / case_.piston.clearance;
+}
+
+StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, double dtDeg) {
+    StepContext ctx;
     ContactStep& st = ctx.step;
     ctx.crankDeg = s.crankDeg + dtDeg;
     st.dt = dtDeg * kin_.secondsPerDegree();
@@ -30,7 +64,7 @@ PistonSimulation::Context PistonSimulation::stepContext(const State& s, const St
     ctx.crank = kin_.at(ctx.crankDeg);
     st.pistonVelocity = ctx.crank.velocity;
     ctx.gas = dyn_.gasForce(pressure_(crankAngle720(ctx.crankDeg)));
-    st.linerOffset = linerOffset(ctx.crankDeg);
+    st.linerOffset = linerOffset_(ctx.crankDeg);
     ctx.now = &s;
     ctx.before = &prev;
     if (pistonDynamics_ || linerDynamics_) {
@@ -44,7 +78,7 @@ PistonSimulation::Context PistonSimulation::stepContext(const State& s, const St
     return ctx;
 }
 
-PistonSimulation::StepTolerances PistonSimulation::stepTolerances() const {
+StepSolver::StepTolerances StepSolver::stepTolerances() const {
     StepTolerances t;
     // Newton tolerances and finite-difference steps from the clearance c: 1e-5 c on the
     // lateral shift and on the tilt times the skirt reach (not from the local error tolerances,
@@ -57,7 +91,7 @@ PistonSimulation::StepTolerances PistonSimulation::stepTolerances() const {
     return t;
 }
 
-double PistonSimulation::couplingResidual(const Context& ctx, const Evaluation& ev, const Eigen::VectorXd& y) {
+double StepSolver::couplingResidual(const StepContext& ctx, const StepEvaluation& ev, const Eigen::VectorXd& y) {
     // max |Δh(H(y)) − Δh(y)| over every contact's film.
     const Eigen::VectorXd d = ev.Hy - y;
     double res = 0.0;
@@ -65,8 +99,8 @@ double PistonSimulation::couplingResidual(const Context& ctx, const Evaluation& 
     return res;
 }
 
-PistonSimulation::PassOutcome PistonSimulation::coupledNewtonPass(const Context& ctx, const StepTolerances& tol,
-                                                                 const Evaluation& ev, double couplingRes,
+StepSolver::PassOutcome StepSolver::coupledNewtonPass(const StepContext& ctx, const StepTolerances& tol,
+                                                                 const StepEvaluation& ev, double couplingRes,
                                                                  NewtonIterate& it, Eigen::Vector2d& x,
                                                                  Eigen::VectorXd& y, int& iterations,
                                                                  Eigen::VectorXd& dz, bool& resolved,
@@ -116,7 +150,7 @@ PistonSimulation::PassOutcome PistonSimulation::coupledNewtonPass(const Context&
             why = std::string("the film's linearisation for the coupled Newton step failed: ") + e.what();
             return PassOutcome::Failed;
         }
-        ++stats_.jacobians;
+        ++work_.jacobians;
     }
     if (relinearize || rate != newtonRate_) {
         if (!formCoupledJacobian(ctx, x, y, ev, tol.motion, iterations)) {
@@ -158,7 +192,7 @@ PistonSimulation::PassOutcome PistonSimulation::coupledNewtonPass(const Context&
     return PassOutcome::Update;
 }
 
-bool PistonSimulation::resolvedToTheUnknownsResolution(const StepTolerances& tol, const Evaluation& ev,
+bool StepSolver::resolvedToTheUnknownsResolution(const StepTolerances& tol, const StepEvaluation& ev,
                                                        double couplingRes, const Eigen::VectorXd& dz) const {
     // Where the film is thin and the step short, the squeeze film makes the motion so stiff that
     // a change of e, β by 1e-5 c_r (the resolution the motion test asks of them) changes its
@@ -173,14 +207,14 @@ bool PistonSimulation::resolvedToTheUnknownsResolution(const StepTolerances& tol
            std::abs(dz[0]) <= 1e-5 * tol.motion[0] && std::abs(dz[1]) <= 1e-5 * tol.motion[1];
 }
 
-bool PistonSimulation::motionJacobian(const Context& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
-                                      const Eigen::VectorXd& y, const Evaluation& ev, int& iterations) {
+bool StepSolver::motionJacobian(const StepContext& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
+                                      const Eigen::VectorXd& y, const StepEvaluation& ev, int& iterations) {
     // Finite differences of the motion residual (modal coordinates frozen).
     const Eigen::Vector2d delta = 1e-5 * tol.motion;
     for (int i = 0; i < 2; ++i) {
         Eigen::Vector2d xp = x;
         xp[i] += delta[i];
-        Evaluation e2;
+        StepEvaluation e2;
         try {
             e2 = evaluate(ctx, xp, y, false);
         } catch (const std::runtime_error&) {
@@ -189,11 +223,11 @@ bool PistonSimulation::motionJacobian(const Context& ctx, const StepTolerances& 
         ++iterations;
         jacobian_.col(i) = (e2.residual - ev.residual) / delta[i];
     }
-    ++stats_.jacobians;
+    ++work_.jacobians;
     return true;
 }
 
-void PistonSimulation::partitionedUpdate(const Evaluation& ev, const Eigen::Vector2d& dx, CouplingAccelerator& acc,
+void StepSolver::partitionedUpdate(const StepEvaluation& ev, const Eigen::Vector2d& dx, CouplingAccelerator& acc,
                                          Eigen::Vector2d& x, Eigen::VectorXd& y) {
     // One fixed-point map of the joint unknowns z = (e, β, y): the chord step of the motion
     // with y held and the modal response H with x held, accelerated together by IQN-ILS /
@@ -211,8 +245,8 @@ void PistonSimulation::partitionedUpdate(const Evaluation& ev, const Eigen::Vect
     work_.modal += t0.seconds();
 }
 
-void PistonSimulation::acceptStep(const Context& ctx, const State& s, const Eigen::Vector2d& x,
-                                  const Eigen::VectorXd& y, const Evaluation& ev, State& out) const {
+void StepSolver::acceptStep(const StepContext& ctx, const StepState& s, const Eigen::Vector2d& x,
+                                  const Eigen::VectorXd& y, const StepEvaluation& ev, StepState& out) const {
     out.crankDeg = ctx.crankDeg;
     out.time = s.time + ctx.step.dt;
     out.dt = ctx.step.dt;
@@ -225,9 +259,9 @@ void PistonSimulation::acceptStep(const Context& ctx, const State& s, const Eige
     for (std::size_t c = 0; c < contacts_.size(); ++c) out.films.push_back(contacts_[c]->accepted(ev.films[c]));
 }
 
-bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, Evaluation& ev, int& iterations,
+bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg, StepState& out, StepEvaluation& ev, int& iterations,
                                std::string& failure) {
-    const Context ctx = stepContext(s, prev, dtDeg);
+    const StepContext ctx = stepContext(s, prev, dtDeg);
     const double dt = ctx.step.dt;
     Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
     // The modal coordinates start from their linear extrapolation over the last step (at high
@@ -286,7 +320,7 @@ bool PistonSimulation::advance(State& s, State& prev, double dtDeg, State& out, 
                                 std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + tol.forceFloor) &&
                                 std::abs(ev.residual[1]) <= 1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach);
         if ((motionDone && couplingRes <= tol.coupling) || resolved) {
-            if (resolved && !(motionDone && couplingRes <= tol.coupling)) ++stats_.resolvedSteps;
+            if (resolved && !(motionDone && couplingRes <= tol.coupling)) ++work_.resolvedSteps;
             acceptStep(ctx, s, x, y, ev, out);
             return true;
         }
