@@ -39,7 +39,330 @@ std::vector<Face> buildFaces(const FilmGrid& g, const FilmState& film, double et
     return faces;
 }
 
+// The discrete JFO problem of one solve (docs/lube.md, the JFO scheme): the faces, the node → face
+// adjacency and the storage terms; the balance of a node and the scaled mass residual.
+class JfoNetwork {
+public:
+    // Balance of node k: F = D p_k − S + B φ_k − Sin (see the header).
+    struct Balance { double D, S, B, Sin; };
+
+    JfoNetwork(const FilmGrid& g, const FilmState& film, double eta, double dt, const JfoState* previous,
+               const std::vector<double>& inlet, double pcav)
+        : g_(g), film_(film), dt_(dt), previous_(previous), inlet_(inlet), pcav_(pcav),
+          faces_(buildFaces(g, film, eta)) {
+        // Node → faces adjacency (CSR).
+        const int n = g.size();
+        start_.assign(static_cast<std::size_t>(n) + 1, 0);
+        adj_.resize(2 * faces_.size());
+        for (const Face& f : faces_) {
+            ++start_[static_cast<std::size_t>(f.a) + 1];
+            ++start_[static_cast<std::size_t>(f.b) + 1];
+        }
+        for (int k = 0; k < n; ++k) start_[static_cast<std::size_t>(k) + 1] += start_[static_cast<std::size_t>(k)];
+        std::vector<int> fill(start_.begin(), start_.end() - 1);
+        for (std::size_t i = 0; i < faces_.size(); ++i) {
+            adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces_[i].a)]++)] = static_cast<int>(i);
+            adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces_[i].b)]++)] = static_cast<int>(i);
+        }
+    }
+
+    // visit(m, c, qo) for each face of node k: its other node m, Poiseuille coefficient c and the
+    // Couette coefficient qo of the flow out of k.
+    template <class Visit>
+    void forFaces(int k, Visit visit) const {
+        for (int q = start_[static_cast<std::size_t>(k)]; q < start_[static_cast<std::size_t>(k) + 1]; ++q) {
+            const Face& f = faces_[static_cast<std::size_t>(adj_[static_cast<std::size_t>(q)])];
+            const bool out = f.a == k;
+            visit(out ? f.b : f.a, f.c, out ? f.q : -f.q);
+        }
+    }
+    // Storage V h/dt of node k and the oil V φ_prev h_prev/dt it held (0, 0 when steady).
+    double storage(int k) const { return dt_ > 0.0 ? g_.area(k) * film_.h[k] / dt_ : 0.0; }
+    double previousOil(int k) const {
+        return dt_ > 0.0 ? g_.area(k) * previous_->fraction[k] * previous_->h[k] / dt_ : 0.0;
+    }
+    bool transient() const { return dt_ > 0.0; }
+    double inlet(int m) const { return inlet_[static_cast<std::size_t>(m)]; }
+
+    Balance balance(int k, const double* p, const double* phi) const {
+        Balance bl{0.0, 0.0, 0.0, 0.0};
+        forFaces(k, [&](int m, double c, double qo) {
+            bl.D += c;
+            bl.S += c * p[m];
+            if (qo > 0.0) bl.B += qo;
+            else bl.Sin -= qo * (g_.kind(m) == NodeKind::Film ? phi[m] : inlet(m));  // non-Film: its inlet fraction
+        });
+        if (transient()) {
+            bl.B += storage(k);
+            bl.Sin += previousOil(k);
+        }
+        return bl;
+    }
+
+    // The convergence criterion (header): scaled mass residual of the iterate.
+    double residual(const std::vector<int>& rows, const double* p, const double* phi) const {
+        const double pAmb = g_.ambientPressure();
+        double scale = 0.0, rmax = 0.0;
+        for (int k = 0; k < g_.size(); ++k) scale = std::max(scale, std::abs(p[k] - pAmb));
+        for (int k : rows) {
+            const Balance bl = balance(k, p, phi);
+            const double F = bl.D * p[k] - bl.S + bl.B * phi[k] - bl.Sin;
+            const bool full = phi[k] >= 1.0 && p[k] > pcav_;
+            const double r = (full || !(bl.B > 0.0)) ? std::abs(F) / bl.D / std::max(scale, 1e-300)
+                                                     : std::abs(F) / bl.B;
+            rmax = std::max(rmax, r);
+        }
+        return rmax;
+    }
+
+private:
+    const FilmGrid& g_;
+    const FilmState& film_;
+    double dt_;
+    const JfoState* previous_;
+    const std::vector<double>& inlet_;
+    double pcav_;
+    std::vector<Face> faces_;
+    std::vector<int> start_, adj_;
+};
+
+// The iterate a solve starts from (the warm start, else a flooded film) with the bounds and the
+// non-Film nodes' values imposed; returns the Film nodes.
+std::vector<int> startingIterate(const FilmGrid& g, const JfoResult* warmStart, const std::vector<double>& inlet,
+                                 double pcav, JfoResult& res) {
+    const int n = g.size();
+    if (warmStart) {
+        res.pressure = warmStart->pressure;
+        res.fraction = warmStart->fraction;
+    } else {
+        res.pressure = Eigen::VectorXd::Constant(n, std::max(pcav, g.ambientPressure()));
+        res.fraction = Eigen::VectorXd::Ones(n);
+    }
+    std::vector<int> rows;
+    for (int k = 0; k < n; ++k) {
+        if (g.kind(k) == NodeKind::Film) {
+            rows.push_back(k);
+            res.pressure[k] = std::max(res.pressure[k], pcav);
+            res.fraction[k] = std::clamp(res.fraction[k], 0.0, 1.0);
+        } else {
+            res.pressure[k] = g.prescribedPressure(k);
+            res.fraction[k] = g.kind(k) == NodeKind::Void ? 0.0 : inlet[static_cast<std::size_t>(k)];
+        }
+    }
+    return rows;
+}
+
+// Cold start of the active set from the Reynolds-condition solution (multigrid, nested): on a
+// flooded film its cavitated set is the JFO one but for the reformation fronts, so the partition
+// is nearly right and a few factorizations suffice. (Should that solve fail, the flooded start
+// stays: more factorizations, same answer.)
+void reynoldsConditionStart(const FilmGrid& g, const Lubricant& lubricant, const FilmState& film, double pcav,
+                            const std::vector<int>& rows, double* p, double* phi) {
+    try {
+        ReynoldsOptions ro;
+        ro.solver = SolverKind::Multigrid;
+        ro.cavitationPressure = pcav;
+        ro.control.tolerance = 1e-6;
+        ReynoldsSolver rs(g, lubricant, ro);
+        const Eigen::VectorXd pr = rs.solve(film).pressure;
+        for (int k : rows) {
+            p[k] = std::max(pr[k], pcav);
+            phi[k] = pr[k] > pcav ? 1.0 : 0.5;
+        }
+    } catch (const std::exception&) {
+    }
+}
+
+// The active-set linear system over the Film nodes. Unknown of Film node k: p_k (full film) or
+// φ_k (cavitated). Row k is the balance F_k = D p_k − Σ c_f p_m + B φ_k − Σ_in a_f φ_m − s_k = 0
+// (B: Couette outflow + storage, a_f: Couette inflow coefficients, s_k: previous oil); known p,
+// φ (the other state's variable, non-Film neighbours) go to the right-hand side. The matrix's
+// pattern is fixed; each partition rewrites its values through the kept pointers.
+class ActiveSetSystem {
+public:
+    ActiveSetSystem(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const double* p)
+        : nf_(static_cast<int>(rows.size())) {
+        const int n = g.size();
+        idx_.assign(static_cast<std::size_t>(n), -1);
+        for (int r = 0; r < nf_; ++r) idx_[static_cast<std::size_t>(rows[static_cast<std::size_t>(r)])] = r;
+        linkStart_.assign(static_cast<std::size_t>(nf_) + 1, 0);
+        D_.resize(static_cast<std::size_t>(nf_));
+        B_.resize(static_cast<std::size_t>(nf_));
+        known_.resize(static_cast<std::size_t>(nf_));
+        store_.resize(static_cast<std::size_t>(nf_));
+        std::vector<Eigen::Triplet<double, int>> trip;
+        for (int r = 0; r < nf_; ++r) {
+            const int k = rows[static_cast<std::size_t>(r)];
+            double d = 0.0, b = 0.0, kn = 0.0;
+            net.forFaces(k, [&](int m, double c, double qo) {
+                d += c;
+                const double a = qo > 0.0 ? 0.0 : -qo;
+                if (qo > 0.0) b += qo;
+                if (g.kind(m) == NodeKind::Film) {
+                    links_.push_back({m, c, a, nullptr});
+                    trip.emplace_back(r, idx_[static_cast<std::size_t>(m)], 0.0);
+                } else {
+                    kn -= c * p[m] + a * net.inlet(m);
+                }
+            });
+            b += net.storage(k);
+            D_[static_cast<std::size_t>(r)] = d;
+            B_[static_cast<std::size_t>(r)] = b;
+            known_[static_cast<std::size_t>(r)] = kn;
+            store_[static_cast<std::size_t>(r)] = net.previousOil(k);
+            trip.emplace_back(r, r, 0.0);
+            linkStart_[static_cast<std::size_t>(r) + 1] = static_cast<int>(links_.size());
+        }
+        M_.resize(nf_, nf_);
+        M_.setFromTriplets(trip.begin(), trip.end());
+        M_.makeCompressed();
+        diag_.resize(static_cast<std::size_t>(nf_));
+        for (int r = 0; r < nf_; ++r) {
+            diag_[static_cast<std::size_t>(r)] = &M_.coeffRef(r, r);
+            for (int l = linkStart_[static_cast<std::size_t>(r)]; l < linkStart_[static_cast<std::size_t>(r) + 1]; ++l)
+                links_[static_cast<std::size_t>(l)].value =
+                    &M_.coeffRef(r, idx_[static_cast<std::size_t>(links_[static_cast<std::size_t>(l)].m)]);
+        }
+    }
+
+    int size() const { return nf_; }
+    double B(int r) const { return B_[static_cast<std::size_t>(r)]; }
+
+    // The matrix and right-hand side of the partition cav (1: cavitated row).
+    void setPartition(const std::vector<char>& cav, double pcav, Eigen::VectorXd& rhs) {
+        rhs.resize(nf_);
+        for (int r = 0; r < nf_; ++r) {
+            const auto sr = static_cast<std::size_t>(r);
+            const bool c = cav[sr];
+            *diag_[sr] = c ? B_[sr] : D_[sr];
+            double kn = known_[sr] + (c ? D_[sr] * pcav : B_[sr]);  // p_k = p_cav, or φ_k = 1
+            for (int l = linkStart_[sr]; l < linkStart_[sr + 1]; ++l) {
+                Link& lk = links_[static_cast<std::size_t>(l)];
+                if (cav[static_cast<std::size_t>(idx_[static_cast<std::size_t>(lk.m)])]) {
+                    *lk.value = -lk.a;
+                    kn -= lk.c * pcav;
+                } else {
+                    *lk.value = -lk.c;
+                    kn -= lk.a;
+                }
+            }
+            rhs[r] = store_[sr] - kn;
+        }
+    }
+    const JfoMatrix& matrix() const { return M_; }
+
+private:
+    struct Link { int m; double c, a; double* value; };  // neighbour, Poiseuille, inflow Couette
+    int nf_;
+    std::vector<int> idx_, linkStart_;
+    std::vector<Link> links_;
+    std::vector<double> D_, B_, known_, store_;
+    JfoMatrix M_;
+    std::vector<double*> diag_;
+};
+
+// Clips the Film nodes to the bounds the Gauss–Seidel iteration keeps (a film fraction below 0
+// would be a dry node it clips).
+void clipToBounds(const std::vector<int>& rows, double pcav, double* p, double* phi) {
+    for (int k : rows) {
+        p[k] = std::max(p[k], pcav);
+        phi[k] = std::clamp(phi[k], 0.0, 1.0);
+    }
+}
+
+// JfoMethod::ActiveSet: the partition full film / cavitated solved and updated until it settles;
+// true when the settled iterate meets the tolerance (else the sweeps polish it, from a feasible
+// iterate).
+bool activeSetSolve(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const JfoOptions& o,
+                    JfoResult& res) {
+    const double pcav = o.cavitationPressure;
+    double* p = res.pressure.data();
+    double* phi = res.fraction.data();
+    ActiveSetSystem sys(net, g, rows, p);
+    const int nf = sys.size();
+    // Partition: cavitated where the film is partial (and a Couette outflow or storage term
+    // can carry it: B > 0), full film elsewhere.
+    std::vector<char> cav(static_cast<std::size_t>(nf));
+    for (int r = 0; r < nf; ++r) cav[static_cast<std::size_t>(r)] = sys.B(r) > 0.0 && phi[rows[static_cast<std::size_t>(r)]] < 1.0;
+    JfoLU lu;
+    Eigen::VectorXd rhs;
+    for (int it = 1; it <= o.maxActiveSetIterations; ++it) {
+        sys.setPartition(cav, pcav, rhs);
+        if (it == 1) lu.analyzePattern(sys.matrix());  // fill-reducing ordering, once per solve
+        lu.factorize(sys.matrix());
+        if (lu.info() != Eigen::Success)
+            throw std::runtime_error("JfoSolver: sparse LU failed in active-set step " + std::to_string(it) +
+                                     " (singular: a closed film-fraction loop with no supply, e.g. a steady "
+                                     "film without inlet?)");
+        const Eigen::VectorXd y = lu.solve(rhs);
+        res.factorizations = it;
+        bool changed = false;
+        for (int r = 0; r < nf; ++r) {
+            const auto sr = static_cast<std::size_t>(r);
+            const int k = rows[sr];
+            if (cav[sr]) {
+                p[k] = pcav;
+                phi[k] = y[r];
+                if (y[r] > 1.0) cav[sr] = 0, changed = true;
+            } else {
+                p[k] = y[r];
+                phi[k] = 1.0;
+                if (y[r] < pcav && sys.B(r) > 0.0) cav[sr] = 1, changed = true;
+            }
+        }
+        if (!std::isfinite(y.sum()))
+            throw std::runtime_error("JfoSolver: active-set step " + std::to_string(it) +
+                                     " gave a non-finite solution");
+        if (changed) continue;
+        // Partition settled: the balances hold to round-off.
+        clipToBounds(rows, pcav, p, phi);
+        res.residual = net.residual(rows, p, phi);
+        if (res.residual <= o.control.tolerance) return true;
+        break;  // polish with Gauss–Seidel sweeps
+    }
+    clipToBounds(rows, pcav, p, phi);
+    return false;
+}
+
+// The projected Gauss–Seidel sweeps (Ausas et al.) with over-relaxation w of the full-film
+// pressure, the residual checked every 10 sweeps; throws when they diverge or do not converge.
+void gaussSeidelSolve(const JfoNetwork& net, const std::vector<int>& rows, const JfoOptions& o, double w,
+                      JfoResult& res) {
+    const double pcav = o.cavitationPressure;
+    double* p = res.pressure.data();
+    double* phi = res.fraction.data();
+    const int checkEvery = 10;
+    double first = -1.0;
+    for (int it = 1; it <= o.control.maxIterations; ++it) {
+        for (int k : rows) {
+            const JfoNetwork::Balance bl = net.balance(k, p, phi);
+            const double phiStar = bl.B > 0.0 ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
+            if (bl.B > 0.0 && phiStar < 1.0) {  // cavitated: p = p_cav, φ from the balance
+                p[k] = pcav;
+                phi[k] = std::max(phiStar, 0.0);
+            } else {                            // full film: φ = 1, p from the balance (SOR)
+                if (bl.B > 0.0) phi[k] = 1.0;
+                const double pgs = (bl.S + bl.Sin - bl.B * phi[k]) / bl.D;
+                p[k] = std::max(pcav, p[k] + w * (pgs - p[k]));
+            }
+        }
+        if (it % checkEvery != 0 && it != o.control.maxIterations) continue;
+        const double rmax = net.residual(rows, p, phi);
+        res.iterations = it;
+        res.residual = rmax;
+        if (first < 0.0) first = rmax;
+        if (!std::isfinite(rmax) || rmax > 1e8 * std::max(first, 1.0))
+            throw std::runtime_error("JfoSolver: diverged after " + std::to_string(it) + " sweeps (residual " +
+                                     std::to_string(rmax) + ", omega " + std::to_string(w) + ")");
+        if (rmax <= o.control.tolerance) return;
+    }
+    throw std::runtime_error("JfoSolver: not converged after " + std::to_string(o.control.maxIterations) +
+                             " sweeps (residual " + std::to_string(res.residual) + " > tolerance " +
+                             std::to_string(o.control.tolerance) + ", omega " + std::to_string(w) + ")");
+}
+
 }  // namespace
+
 
 JfoSolver::JfoSolver(FilmGrid grid, Lubricant lubricant, JfoOptions options)
     : grid_(std::move(grid)), lubricant_(lubricant), options_(options),
@@ -78,262 +401,18 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
     if (dt > 0.0 && (!previous || previous->h.size() != n || previous->fraction.size() != n))
         throw std::invalid_argument("JfoSolver: a transient step needs the previous h and film "
                                     "fraction on every node");
-    const double pcav = options_.cavitationPressure, pAmb = g.ambientPressure();
-    const std::vector<Face> faces = buildFaces(g, film, lubricant_.referenceViscosity());
-
-    // Node → faces adjacency (CSR).
-    std::vector<int> start(static_cast<std::size_t>(n) + 1, 0), adj(2 * faces.size());
-    for (const Face& f : faces) {
-        ++start[static_cast<std::size_t>(f.a) + 1];
-        ++start[static_cast<std::size_t>(f.b) + 1];
-    }
-    for (int k = 0; k < n; ++k) start[static_cast<std::size_t>(k) + 1] += start[static_cast<std::size_t>(k)];
-    {
-        std::vector<int> fill(start.begin(), start.end() - 1);
-        for (std::size_t i = 0; i < faces.size(); ++i) {
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].a)]++)] = static_cast<int>(i);
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].b)]++)] = static_cast<int>(i);
-        }
-    }
-
+    const double pcav = options_.cavitationPressure;
+    const JfoNetwork net(g, film, lubricant_.referenceViscosity(), dt, previous, inlet_, pcav);
     JfoResult res;
     const bool warm = warmStart && warmStart->pressure.size() == n && warmStart->fraction.size() == n;
-    if (warm) {
-        res.pressure = warmStart->pressure;
-        res.fraction = warmStart->fraction;
-    } else {
-        res.pressure = Eigen::VectorXd::Constant(n, std::max(pcav, pAmb));
-        res.fraction = Eigen::VectorXd::Ones(n);
-    }
-    std::vector<int> rows;
-    for (int k = 0; k < n; ++k) {
-        if (g.kind(k) == NodeKind::Film) {
-            rows.push_back(k);
-            res.pressure[k] = std::max(res.pressure[k], pcav);
-            res.fraction[k] = std::clamp(res.fraction[k], 0.0, 1.0);
-        } else {
-            res.pressure[k] = g.prescribedPressure(k);
-            res.fraction[k] = g.kind(k) == NodeKind::Void ? 0.0 : inlet_[static_cast<std::size_t>(k)];
-        }
-    }
-    // Non-Film neighbours supply their inlet fraction (Void: a relief open to oil mist, 1).
-    auto supplyFraction = [&](int m) {
-        return g.kind(m) == NodeKind::Film ? res.fraction[m] : inlet_[static_cast<std::size_t>(m)];
-    };
-    double* p = res.pressure.data();
-    double* phi = res.fraction.data();
-    const double w = options_.omega > 0.0 ? options_.omega : PsorSolver::automaticOmega(g);
-
-    // Balance of node k: F = D p_k − S + B φ_k − Sin (see header).
-    struct Balance { double D, S, B, Sin; };
-    auto balance = [&](int k) {
-        Balance bl{0.0, 0.0, 0.0, 0.0};
-        for (int q = start[static_cast<std::size_t>(k)]; q < start[static_cast<std::size_t>(k) + 1]; ++q) {
-            const Face& f = faces[static_cast<std::size_t>(adj[static_cast<std::size_t>(q)])];
-            const bool out = f.a == k;
-            const int m = out ? f.b : f.a;
-            const double qo = out ? f.q : -f.q;  // Couette coefficient of the flow out of k
-            bl.D += f.c;
-            bl.S += f.c * p[m];
-            if (qo > 0.0) bl.B += qo;
-            else bl.Sin -= qo * supplyFraction(m);
-        }
-        if (dt > 0.0) {
-            const double V = g.area(k);
-            bl.B += V * film.h[k] / dt;
-            bl.Sin += V * previous->fraction[k] * previous->h[k] / dt;
-        }
-        return bl;
-    };
-
-    // The convergence criterion (header): scaled mass residual of the current iterate.
-    auto residual = [&]() {
-        double scale = 0.0, rmax = 0.0;
-        for (int k = 0; k < n; ++k) scale = std::max(scale, std::abs(p[k] - pAmb));
-        for (int k : rows) {
-            const Balance bl = balance(k);
-            const double F = bl.D * p[k] - bl.S + bl.B * phi[k] - bl.Sin;
-            const bool full = phi[k] >= 1.0 && p[k] > pcav;
-            const double r = (full || !(bl.B > 0.0)) ? std::abs(F) / bl.D / std::max(scale, 1e-300)
-                                                     : std::abs(F) / bl.B;
-            rmax = std::max(rmax, r);
-        }
-        return rmax;
-    };
-
+    const std::vector<int> rows = startingIterate(g, warm ? warmStart : nullptr, inlet_, pcav, res);
     if (options_.method == JfoMethod::ActiveSet) {
-        if (!warm) {
-            // Cold start from the Reynolds-condition solution (multigrid, nested): on a flooded
-            // film its cavitated set is the JFO one but for the reformation fronts, so the
-            // partition below is nearly right and a few factorizations suffice. (Should that
-            // solve fail, the flooded start stays: more factorizations, same answer.)
-            try {
-                ReynoldsOptions ro;
-                ro.solver = SolverKind::Multigrid;
-                ro.cavitationPressure = pcav;
-                ro.control.tolerance = 1e-6;
-                ReynoldsSolver rs(g, lubricant_, ro);
-                const Eigen::VectorXd pr = rs.solve(film).pressure;
-                for (int k : rows) {
-                    p[k] = std::max(pr[k], pcav);
-                    phi[k] = pr[k] > pcav ? 1.0 : 0.5;
-                }
-            } catch (const std::exception&) {
-            }
-        }
-        // Unknown of Film node k: p_k (full film) or φ_k (cavitated). Row k of the linear system
-        // is the balance F_k = D p_k − Σ c_f p_m + B φ_k − Σ_in a_f φ_m − s_k = 0 (B: Couette
-        // outflow + storage, a_f: Couette inflow coefficients, s_k: previous oil); known p, φ
-        // (the other state's variable, non-Film neighbours) go to the right-hand side.
-        const int nf = static_cast<int>(rows.size());
-        std::vector<int> idx(static_cast<std::size_t>(n), -1);
-        for (int r = 0; r < nf; ++r) idx[static_cast<std::size_t>(rows[static_cast<std::size_t>(r)])] = r;
-        struct Link { int m; double c, a; double* value; };  // neighbour, Poiseuille, inflow Couette
-        std::vector<Link> links;
-        std::vector<int> linkStart(static_cast<std::size_t>(nf) + 1, 0);
-        std::vector<double> D(static_cast<std::size_t>(nf)), B(static_cast<std::size_t>(nf)),
-            known(static_cast<std::size_t>(nf)), store(static_cast<std::size_t>(nf));
-        std::vector<Eigen::Triplet<double, int>> trip;
-        for (int r = 0; r < nf; ++r) {
-            const int k = rows[static_cast<std::size_t>(r)];
-            double d = 0.0, b = 0.0, kn = 0.0;
-            for (int q = start[static_cast<std::size_t>(k)]; q < start[static_cast<std::size_t>(k) + 1]; ++q) {
-                const Face& f = faces[static_cast<std::size_t>(adj[static_cast<std::size_t>(q)])];
-                const bool out = f.a == k;
-                const int m = out ? f.b : f.a;
-                const double qo = out ? f.q : -f.q;
-                d += f.c;
-                const double a = qo > 0.0 ? 0.0 : -qo;
-                if (qo > 0.0) b += qo;
-                if (g.kind(m) == NodeKind::Film) {
-                    links.push_back({m, f.c, a, nullptr});
-                    trip.emplace_back(r, idx[static_cast<std::size_t>(m)], 0.0);
-                } else {
-                    kn -= f.c * p[m] + a * inlet_[static_cast<std::size_t>(m)];
-                }
-            }
-            double s0 = 0.0;
-            if (dt > 0.0) {
-                const double V = g.area(k);
-                b += V * film.h[k] / dt;
-                s0 = V * previous->fraction[k] * previous->h[k] / dt;
-            }
-            D[static_cast<std::size_t>(r)] = d;
-            B[static_cast<std::size_t>(r)] = b;
-            known[static_cast<std::size_t>(r)] = kn;
-            store[static_cast<std::size_t>(r)] = s0;
-            trip.emplace_back(r, r, 0.0);
-            linkStart[static_cast<std::size_t>(r) + 1] = static_cast<int>(links.size());
-        }
-        JfoMatrix M(nf, nf);
-        M.setFromTriplets(trip.begin(), trip.end());
-        M.makeCompressed();
-        std::vector<double*> diag(static_cast<std::size_t>(nf));
-        for (int r = 0; r < nf; ++r) {
-            diag[static_cast<std::size_t>(r)] = &M.coeffRef(r, r);
-            for (int l = linkStart[static_cast<std::size_t>(r)]; l < linkStart[static_cast<std::size_t>(r) + 1]; ++l)
-                links[static_cast<std::size_t>(l)].value = &M.coeffRef(r, idx[static_cast<std::size_t>(links[static_cast<std::size_t>(l)].m)]);
-        }
-        // Partition: cavitated where the film is partial (and a Couette outflow or storage term
-        // can carry it: B > 0), full film elsewhere.
-        std::vector<char> cav(static_cast<std::size_t>(nf));
-        for (int r = 0; r < nf; ++r)
-            cav[static_cast<std::size_t>(r)] = B[static_cast<std::size_t>(r)] > 0.0 && phi[rows[static_cast<std::size_t>(r)]] < 1.0;
-        JfoLU lu;
-        Eigen::VectorXd rhs(nf);
-        for (int it = 1; it <= options_.maxActiveSetIterations; ++it) {
-            for (int r = 0; r < nf; ++r) {
-                const auto sr = static_cast<std::size_t>(r);
-                const bool c = cav[sr];
-                *diag[sr] = c ? B[sr] : D[sr];
-                double kn = known[sr] + (c ? D[sr] * pcav : B[sr]);  // p_k = p_cav, or φ_k = 1
-                for (int l = linkStart[sr]; l < linkStart[sr + 1]; ++l) {
-                    Link& lk = links[static_cast<std::size_t>(l)];
-                    if (cav[static_cast<std::size_t>(idx[static_cast<std::size_t>(lk.m)])]) {
-                        *lk.value = -lk.a;
-                        kn -= lk.c * pcav;
-                    } else {
-                        *lk.value = -lk.c;
-                        kn -= lk.a;
-                    }
-                }
-                rhs[r] = store[sr] - kn;
-            }
-            if (it == 1) lu.analyzePattern(M);  // fill-reducing ordering, once per solve
-            lu.factorize(M);
-            if (lu.info() != Eigen::Success)
-                throw std::runtime_error("JfoSolver: sparse LU failed in active-set step " +
-                                         std::to_string(it) + " (singular: a closed film-fraction "
-                                         "loop with no supply, e.g. a steady film without inlet?)");
-            const Eigen::VectorXd y = lu.solve(rhs);
-            res.factorizations = it;
-            bool changed = false;
-            for (int r = 0; r < nf; ++r) {
-                const auto sr = static_cast<std::size_t>(r);
-                const int k = rows[sr];
-                if (cav[sr]) {
-                    p[k] = pcav;
-                    phi[k] = y[r];
-                    if (y[r] > 1.0) cav[sr] = 0, changed = true;
-                } else {
-                    p[k] = y[r];
-                    phi[k] = 1.0;
-                    if (y[r] < pcav && B[sr] > 0.0) cav[sr] = 1, changed = true;
-                }
-            }
-            if (!std::isfinite(y.sum()))
-                throw std::runtime_error("JfoSolver: active-set step " + std::to_string(it) +
-                                         " gave a non-finite solution");
-            if (changed) continue;
-            // Partition settled: the balances hold to round-off. Bounds as the Gauss–Seidel
-            // iteration keeps them (a film fraction below 0 would be a dry node it clips).
-            for (int r = 0; r < nf; ++r) {
-                const int k = rows[static_cast<std::size_t>(r)];
-                p[k] = std::max(p[k], pcav);
-                phi[k] = std::clamp(phi[k], 0.0, 1.0);
-            }
-            res.residual = residual();
-            if (res.residual <= options_.control.tolerance) return res;
-            break;  // polish with Gauss–Seidel sweeps
-        }
-        for (int r = 0; r < nf; ++r) {  // the sweeps start from a feasible iterate
-            const int k = rows[static_cast<std::size_t>(r)];
-            p[k] = std::max(p[k], pcav);
-            phi[k] = std::clamp(phi[k], 0.0, 1.0);
-        }
+        if (!warm) reynoldsConditionStart(g, lubricant_, film, pcav, rows, res.pressure.data(), res.fraction.data());
+        if (activeSetSolve(net, g, rows, options_, res)) return res;
     }
-
-    const int checkEvery = 10;
-    double first = -1.0;
-    for (int it = 1; it <= options_.control.maxIterations; ++it) {
-        for (int k : rows) {
-            const Balance bl = balance(k);
-            const double phiStar = bl.B > 0.0 ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
-            if (bl.B > 0.0 && phiStar < 1.0) {  // cavitated: p = p_cav, φ from the balance
-                p[k] = pcav;
-                phi[k] = std::max(phiStar, 0.0);
-            } else {                            // full film: φ = 1, p from the balance (SOR)
-                if (bl.B > 0.0) phi[k] = 1.0;
-                const double pgs = (bl.S + bl.Sin - bl.B * phi[k]) / bl.D;
-                p[k] = std::max(pcav, p[k] + w * (pgs - p[k]));
-            }
-        }
-        if (it % checkEvery != 0 && it != options_.control.maxIterations) continue;
-        const double rmax = residual();
-        res.iterations = it;
-        res.residual = rmax;
-        if (first < 0.0) first = rmax;
-        if (!std::isfinite(rmax) || rmax > 1e8 * std::max(first, 1.0))
-            throw std::runtime_error("JfoSolver: diverged after " + std::to_string(it) +
-                                     " sweeps (residual " + std::to_string(rmax) + ", omega " +
-                                     std::to_string(w) + ")");
-        if (rmax <= options_.control.tolerance) return res;
-    }
-    throw std::runtime_error("JfoSolver: not converged after " +
-                             std::to_string(options_.control.maxIterations) +
-                             " sweeps (residual " + std::to_string(res.residual) +
-                             " > tolerance " + std::to_string(options_.control.tolerance) +
-                             ", omega " + std::to_string(w) + ")");
+    const double w = options_.omega > 0.0 ? options_.omega : PsorSolver::automaticOmega(g);
+    gaussSeidelSolve(net, rows, options_, w, res);
+    return res;
 }
 
 double JfoSolver::oilVolume(const FilmState& film, const Eigen::VectorXd& fraction) const {
