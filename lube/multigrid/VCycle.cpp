@@ -11,154 +11,137 @@ namespace flexehd::lube {
 using namespace multigrid;
 
 
-// One V-cycle step on a level smoothed by zebra z-lines (L.lines == Z), with the passes fused:
-// pre-smoothing + residual + restriction in three sweeps over the rows, post-smoothing +
-// prolongation in three more (plus, on the fine level, the search direction and the line-search
-// products). Even columns are eliminated top down (Thomas), odd columns bottom up (reverse
-// Thomas), so that
-//   pass A (rows ↓): forward elimination of the even lines;
-//   pass B (rows ↑): back substitution of the even lines, elimination of the odd lines one row
-//                    behind (their right-hand side needs the new even values of rows i ± 1);
-//   pass C (rows ↓): back substitution of the odd lines; one row behind, the residual of the
-//                    final values and its restriction (pre-smoothing), or the line search (fine
-//                    level, post-smoothing).
-// A line Gauss–Seidel step overwrites a whole line whatever its old values, so the correction
-// starts at zero without clearing x (the pre-smoothing's even lines see f only), and the coarse
-// correction need only be added to the odd columns before the post-smoothing (all columns when a
-// periodic level has an odd number of columns, where columns nθ − 1 and 0 are both even).
-template <bool Five>
-void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
-    using St = Stencil<Five>;
-    Level& L = levels[l];
-    Level& C = levels[l + 1];
-    // The line factors, unless deferred to the pre-smoothing's eliminations (factorZT).
-    const bool factorInPasses = factorZT<Five>(L, true);
-    const int nz = L.nz, nt = L.nt;
-    // No two of these overlap (restrict lets the compiler keep loaded values across stores).
-    double* __restrict x = L.x.data();
-    double* __restrict R = L.q.data();
-    const double* __restrict f = L.f.data();
-    double* __restrict M = L.zm.data();
-    double* __restrict W = L.zw.data();
-    const int* __restrict colLo = L.colLo.data();
-    const int* __restrict colHi = L.colHi.data();
-    const char* __restrict fr = L.free.data();
-    const double* __restrict A = L.a;
-    const bool allColumns = L.periodic && nt % 2 == 1;  // even columns need the correction too
+namespace {
 
-    // Right-hand side of line j at row i from the other-coloured columns (and corners).
-    auto lineRhs = [&](const auto& c, double fk, const double* xm, const double* x0, const double* xp,
-                       int jm, int jp) {
-        double r = fk - (c[St::W] * x0[jm] + c[St::E] * x0[jp]);
-        if constexpr (!Five) r -= c[0] * xm[jm] + c[2] * xm[jp] + c[6] * xp[jm] + c[8] * xp[jp];
-        return r;
-    };
-    const int* jmv = L.jmv.data();
-    const int* jpv = L.jpv.data();
-    // fn(j) for the columns of row i in their free range, by parity (runs of factorZT).
-    auto eachCol = [](const int* runs, const int* rowRuns, int i, auto&& fn) {
-        for (int q = rowRuns[i], qEnd = rowRuns[i + 1]; q < qEnd; q += 2)
-            for (int j = runs[q], end = runs[q + 1]; j < end; j += 2) fn(j);
-    };
-    const int* evenRuns = L.evenRuns.data();
-    const int* rowEven = L.rowEven.data();
-    const int* oddRuns = L.oddRuns.data();
-    const int* rowOdd = L.rowOdd.data();
-    auto eachEven = [&](int i, auto&& fn) { eachCol(evenRuns, rowEven, i, fn); };
-    auto eachOdd = [&](int i, auto&& fn) { eachCol(oddRuns, rowOdd, i, fn); };
-    // Factor: also the deferred line factors of the row (factorZT's top-down formulas).
-    auto evenElim = [&](auto factorTag, int i, bool pre) {
-        constexpr bool Factor = decltype(factorTag)::value;
-        const double* xm = x + L.im(i) * nt;
-        const double* x0 = x + i * nt;
-        const double* xp = x + L.ip(i) * nt;
-        const int row = i * nt;
-        const auto rs = rowStencil<Five>(A, nz, nt, i);
+// The sweeps of one fused V-cycle step on a level smoothed by zebra z-lines (L.lines == Z) and
+// its coarser level C, over the level's arrays (no two of them overlap: restrict lets the
+// compiler keep loaded values across stores). Even columns are eliminated top down (Thomas),
+// odd columns bottom up (reverse Thomas); see vcycleZT for the order of the passes.
+template <bool Five>
+class ZebraCycle {
+    using St = Stencil<Five>;
+
+public:
+    ZebraCycle(Level& L, Level& C)
+        : L_(L), nz_(L.nz), nt_(L.nt), x_(L.x.data()), R_(L.q.data()), f_(L.f.data()), M_(L.zm.data()),
+          W_(L.zw.data()), colLo_(L.colLo.data()), colHi_(L.colHi.data()), fr_(L.free.data()), A_(L.a),
+          allColumns_(L.periodic && L.nt % 2 == 1), jmv_(L.jmv.data()), jpv_(L.jpv.data()),
+          evenRuns_(L.evenRuns.data()), rowEven_(L.rowEven.data()), oddRuns_(L.oddRuns.data()),
+          rowOdd_(L.rowOdd.data()), cf_(C.f.data()), cx_(C.x.data()), ntC_(C.nt) {}
+
+    // Pass A, row i: forward elimination of the even lines (pre: the correction starts at zero,
+    // the right-hand side is f alone). Factor: also the deferred line factors of the row
+    // (factorZT's top-down formulas).
+    template <bool Factor>
+    void evenElim(int i, bool pre) {
+        double* __restrict R = R_;
+        double* __restrict M = M_;
+        double* __restrict W = W_;
+        const double* xm = x_ + L_.im(i) * nt_;
+        const double* x0 = x_ + i * nt_;
+        const double* xp = x_ + L_.ip(i) * nt_;
+        const int row = i * nt_;
+        const auto rs = rowStencil<Five>(A_, nz_, nt_, i);
         eachEven(i, [&](const int j) {
             const int k = row + j;
-            if (!fr[k]) {
+            if (!fr_[k]) {
                 R[k] = 0.0;
                 if constexpr (Factor) M[k] = W[k] = 0.0;
                 return;
             }
             const auto c = rs.at(j);
             if constexpr (Factor) {
-                const double m = safeInverse(c[St::C] - (i > colLo[j] ? c[St::S] * W[k - nt] : 0.0), c[St::C]);
+                const double m = safeInverse(c[St::C] - (i > colLo_[j] ? c[St::S] * W[k - nt_] : 0.0), c[St::C]);
                 M[k] = m;
                 W[k] = c[St::N] * m;
             }
-            const double s = i > 0 ? c[St::S] * R[k - nt] : 0.0;
-            const double rhs = pre ? f[k] : lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]);
+            const double s = i > 0 ? c[St::S] * R[k - nt_] : 0.0;
+            const double rhs = pre ? f_[k] : lineRhs(c, f_[k], xm, x0, xp, jmv_[j], jpv_[j]);
             R[k] = (rhs - s) * M[k];
         });
-    };
-    auto evenBack = [&](int i) {
-        const int row = i * nt;
-        if (i + 1 < nz)
-            eachEven(i, [&](const int j) { x[row + j] = R[row + j] - W[row + j] * x[row + j + nt]; });
+    }
+    void evenBack(int i) {
+        double* __restrict x = x_;
+        const double* __restrict R = R_;
+        const double* __restrict W = W_;
+        const int row = i * nt_;
+        if (i + 1 < nz_)
+            eachEven(i, [&](const int j) { x[row + j] = R[row + j] - W[row + j] * x[row + j + nt_]; });
         else
             eachEven(i, [&](const int j) { x[row + j] = R[row + j]; });
-    };
-    // Factor: also the deferred line factors of the row (factorZT's bottom-up formulas; the rows
-    // below are done, pass B runs upwards).
-    auto oddElim = [&](auto factorTag, int i) {
-        constexpr bool Factor = decltype(factorTag)::value;
-        const double* xm = x + L.im(i) * nt;
-        const double* x0 = x + i * nt;
-        const double* xp = x + L.ip(i) * nt;
-        const int row = i * nt;
-        const auto rs = rowStencil<Five>(A, nz, nt, i);
+    }
+    // Elimination of the odd lines, row i. Factor: also the deferred line factors of the row
+    // (factorZT's bottom-up formulas; the rows below are done, pass B runs upwards).
+    template <bool Factor>
+    void oddElim(int i) {
+        double* __restrict R = R_;
+        double* __restrict M = M_;
+        double* __restrict W = W_;
+        const double* xm = x_ + L_.im(i) * nt_;
+        const double* x0 = x_ + i * nt_;
+        const double* xp = x_ + L_.ip(i) * nt_;
+        const int row = i * nt_;
+        const auto rs = rowStencil<Five>(A_, nz_, nt_, i);
         eachOdd(i, [&](const int j) {
             const int k = row + j;
-            if (!fr[k]) {
+            if (!fr_[k]) {
                 R[k] = 0.0;
                 if constexpr (Factor) M[k] = W[k] = 0.0;
                 return;
             }
             const auto c = rs.at(j);
             if constexpr (Factor) {
-                const double m = safeInverse(c[St::C] - (i < colHi[j] ? c[St::N] * W[k + nt] : 0.0), c[St::C]);
+                const double m = safeInverse(c[St::C] - (i < colHi_[j] ? c[St::N] * W[k + nt_] : 0.0), c[St::C]);
                 M[k] = m;
                 W[k] = c[St::S] * m;
             }
-            const double nn = i + 1 < nz ? c[St::N] * R[k + nt] : 0.0;
-            R[k] = (lineRhs(c, f[k], xm, x0, xp, jmv[j], jpv[j]) - nn) * M[k];
+            const double nn = i + 1 < nz_ ? c[St::N] * R[k + nt_] : 0.0;
+            R[k] = (lineRhs(c, f_[k], xm, x0, xp, jmv_[j], jpv_[j]) - nn) * M[k];
         });
-    };
-    auto oddBack = [&](int i) {
-        const int row = i * nt;
+    }
+    void oddBack(int i) {
+        double* __restrict x = x_;
+        const double* __restrict R = R_;
+        const double* __restrict W = W_;
+        const int row = i * nt_;
         if (i > 0)
-            eachOdd(i, [&](const int j) { x[row + j] = R[row + j] - W[row + j] * x[row + j - nt]; });
+            eachOdd(i, [&](const int j) { x[row + j] = R[row + j] - W[row + j] * x[row + j - nt_]; });
         else
             eachOdd(i, [&](const int j) { x[row + j] = R[row + j]; });
-    };
-    auto passB = [&](auto factorTag) {
-        for (int i = nz - 1; i >= 0; --i) {
+    }
+    // Pass A over all rows.
+    template <bool Factor>
+    void passA(bool pre) {
+        for (int i = 0; i < nz_; ++i) evenElim<Factor>(i, pre);
+    }
+    // Pass B (rows ↑): back substitution of the even lines, elimination of the odd lines one row
+    // behind (their right-hand side needs the new even values of rows i ± 1).
+    template <bool Factor>
+    void passB() {
+        for (int i = nz_ - 1; i >= 0; --i) {
             evenBack(i);
-            if (i + 1 < nz) oddElim(factorTag, i + 1);
+            if (i + 1 < nz_) oddElim<Factor>(i + 1);
         }
-        oddElim(factorTag, 0);
-    };
+        oddElim<Factor>(0);
+    }
     // Residual of row i, restricted to the coarse right-hand side.
-    double* __restrict cf = C.f.data();
-    const int ntC = C.nt;
-    auto restrictRow = [&](int i) {
+    void restrictRow(int i) {
         const auto si = static_cast<std::size_t>(i);
-        double* c0 = cf + L.pz0[si] * ntC;
-        double* c1 = cf + L.pz1[si] * ntC;
-        const double w0 = L.wz0[si], w1 = L.wz1[si];
-        const double* xm = x + L.im(i) * nt;
-        const double* x0 = x + i * nt;
-        const double* xp = x + L.ip(i) * nt;
-        const auto rs = rowStencil<Five>(A, nz, nt, i);
+        double* c0 = cf_ + L_.pz0[si] * ntC_;
+        double* c1 = cf_ + L_.pz1[si] * ntC_;
+        const double w0 = L_.wz0[si], w1 = L_.wz1[si];
+        const double* xm = x_ + L_.im(i) * nt_;
+        const double* x0 = x_ + i * nt_;
+        const double* xp = x_ + L_.ip(i) * nt_;
+        const auto rs = rowStencil<Five>(A_, nz_, nt_, i);
         auto node = [&](int j) {
-            const int k = i * nt + j;
-            if (!fr[k]) return;
+            const int k = i * nt_ + j;
+            if (!fr_[k]) return;
             const auto c = rs.at(j);
-            const double r = f[k] - (c[St::C] * x0[j] + offDiag<Five>(c, xm, x0, xp, j, jmv[j], jpv[j]));
+            const double r = f_[k] - (c[St::C] * x0[j] + offDiag<Five>(c, xm, x0, xp, j, jmv_[j], jpv_[j]));
             const auto sj = static_cast<std::size_t>(j);
-            const int J0 = L.pt0[sj], J1 = L.pt1[sj];
-            const double wt1 = L.wt1[sj], a0 = L.wt0[sj] * r, a1 = wt1 * r;
+            const int J0 = L_.pt0[sj], J1 = L_.pt1[sj];
+            const double wt1 = L_.wt1[sj], a0 = L_.wt0[sj] * r, a1 = wt1 * r;
             // Zero weights (a fine row or column on a coarse one: most nodes) skipped; the
             // tests are uniform along a row and within a column parity.
             c0[J0] += w0 * a0;
@@ -172,56 +155,124 @@ void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
         // An odd line was solved last, against the final even lines, so its residual is zero
         // (rounding aside) — except at a node left out of its line solve (zero pivot inverse).
         eachOdd(i, [&](const int j) {
-            if (M[i * nt + j] == 0.0) node(j);
+            if (M_[i * nt_ + j] == 0.0) node(j);
         });
-    };
+    }
     // Coarse correction of row i (the columns the post-smoothing reads).
-    const double* __restrict cx = C.x.data();
-    auto correctRow = [&](int i) {
+    void correctRow(int i) {
         const auto si = static_cast<std::size_t>(i);
-        const double* c0 = cx + L.pz0[si] * ntC;
-        const double* c1 = cx + L.pz1[si] * ntC;
-        const double w0 = L.wz0[si], w1 = L.wz1[si];
+        const double* c0 = cx_ + L_.pz0[si] * ntC_;
+        const double* c1 = cx_ + L_.pz1[si] * ntC_;
+        const double w0 = L_.wz0[si], w1 = L_.wz1[si];
+        double* __restrict x = x_;
         auto node = [&](int j) {
-            const int k = i * nt + j;
-            if (!fr[k]) return;
+            const int k = i * nt_ + j;
+            if (!fr_[k]) return;
             const auto sj = static_cast<std::size_t>(j);
-            const int J0 = L.pt0[sj], J1 = L.pt1[sj];
-            x[k] += w0 * (L.wt0[sj] * c0[J0] + L.wt1[sj] * c0[J1]) + w1 * (L.wt0[sj] * c1[J0] + L.wt1[sj] * c1[J1]);
+            const int J0 = L_.pt0[sj], J1 = L_.pt1[sj];
+            x[k] += w0 * (L_.wt0[sj] * c0[J0] + L_.wt1[sj] * c0[J1]) + w1 * (L_.wt0[sj] * c1[J0] + L_.wt1[sj] * c1[J1]);
         };
         eachOdd(i, node);
-        if (allColumns) eachEven(i, node);
-    };
+        if (allColumns_) eachEven(i, node);
+    }
+
+private:
+    // Right-hand side of line j at row i from the other-coloured columns (and corners).
+    template <class Coefficients>
+    static double lineRhs(const Coefficients& c, double fk, const double* xm, const double* x0, const double* xp,
+                          int jm, int jp) {
+        double r = fk - (c[St::W] * x0[jm] + c[St::E] * x0[jp]);
+        if constexpr (!Five) r -= c[0] * xm[jm] + c[2] * xm[jp] + c[6] * xp[jm] + c[8] * xp[jp];
+        return r;
+    }
+    // fn(j) for the columns of row i in their free range, by parity (runs of factorZT).
+    template <class Fn>
+    static void eachCol(const int* runs, const int* rowRuns, int i, Fn&& fn) {
+        for (int q = rowRuns[i], qEnd = rowRuns[i + 1]; q < qEnd; q += 2)
+            for (int j = runs[q], end = runs[q + 1]; j < end; j += 2) fn(j);
+    }
+    template <class Fn>
+    void eachEven(int i, Fn&& fn) const { eachCol(evenRuns_, rowEven_, i, fn); }
+    template <class Fn>
+    void eachOdd(int i, Fn&& fn) const { eachCol(oddRuns_, rowOdd_, i, fn); }
+
+    const Level& L_;
+    const int nz_, nt_;
+    double* const x_;
+    double* const R_;
+    const double* const f_;
+    double* const M_;
+    double* const W_;
+    const int* const colLo_;
+    const int* const colHi_;
+    const char* const fr_;
+    const double* const A_;
+    const bool allColumns_;  // a periodic level with an odd number of columns: even ones need the correction too
+    const int* const jmv_;
+    const int* const jpv_;
+    const int* const evenRuns_;
+    const int* const rowEven_;
+    const int* const oddRuns_;
+    const int* const rowOdd_;
+    double* const cf_;
+    const double* const cx_;
+    const int ntC_;
+};
+
+}  // namespace
+
+// One V-cycle step on a level smoothed by zebra z-lines (L.lines == Z), with the passes fused:
+// pre-smoothing + residual + restriction in three sweeps over the rows, post-smoothing +
+// prolongation in three more (plus, on the fine level, the search direction and the line-search
+// products):
+//   pass A (rows ↓): forward elimination of the even lines;
+//   pass B (rows ↑): back substitution of the even lines, elimination of the odd lines one row
+//                    behind;
+//   pass C (rows ↓): back substitution of the odd lines; one row behind, the residual of the
+//                    final values and its restriction (pre-smoothing), or the line search (fine
+//                    level, post-smoothing).
+// A line Gauss–Seidel step overwrites a whole line whatever its old values, so the correction
+// starts at zero without clearing x (the pre-smoothing's even lines see f only), and the coarse
+// correction need only be added to the odd columns before the post-smoothing (all columns when a
+// periodic level has an odd number of columns, where columns nθ − 1 and 0 are both even).
+template <bool Five>
+void MultigridSolver::Hierarchy::vcycleZT(std::size_t l, LineSearch* ls) {
+    Level& L = levels[l];
+    Level& C = levels[l + 1];
+    // The line factors, unless deferred to the pre-smoothing's eliminations (factorZT).
+    const bool factorInPasses = factorZT<Five>(L, true);
+    ZebraCycle<Five> z(L, C);
+    const int nz = L.nz;
 
     // Pre-smoothing, residual, restriction.
     if (factorInPasses) {
-        for (int i = 0; i < nz; ++i) evenElim(std::true_type{}, i, true);
-        passB(std::true_type{});
+        z.template passA<true>(true);
+        z.template passB<true>();
     } else {
-        for (int i = 0; i < nz; ++i) evenElim(std::false_type{}, i, true);
-        passB(std::false_type{});
+        z.template passA<false>(true);
+        z.template passB<false>();
     }
     C.f.setZero();
     for (int i = 0; i < nz; ++i) {
-        oddBack(i);
-        if (i > 0) restrictRow(i - 1);
+        z.oddBack(i);
+        if (i > 0) z.restrictRow(i - 1);
     }
-    restrictRow(nz - 1);
+    z.restrictRow(nz - 1);
     vcycle(l + 1);
 
     // Prolongation, post-smoothing (and the line search on the fine level).
-    correctRow(0);
+    z.correctRow(0);
     for (int i = 0; i < nz; ++i) {
-        if (i + 1 < nz) correctRow(i + 1);
-        evenElim(std::false_type{}, i, false);
+        if (i + 1 < nz) z.correctRow(i + 1);
+        z.template evenElim<false>(i, false);
     }
-    passB(std::false_type{});
+    z.template passB<false>();
     if (!ls) {
-        for (int i = 0; i < nz; ++i) oddBack(i);
+        for (int i = 0; i < nz; ++i) z.oddBack(i);
         return;
     }
     for (int i = 0; i < nz; ++i) {
-        oddBack(i);
+        z.oddBack(i);
         ls->direction(L, i);
         if (i > 0) ls->curvature(L, i - 1);
     }
