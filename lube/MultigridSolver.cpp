@@ -76,24 +76,15 @@ void MultigridSolver::Hierarchy::LineSearch::curvature(const Level& F, int i) {
     den += sum;
 }
 
-SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p, double pLower,
-                                   const SolverControl& control) {
-    const FilmGrid& g = sys.grid();
-    const int n = g.size();
-    const int found = h_ ? h_->find(g) : -1;
-    if (found < 0) {
-        h_ = std::make_unique<Hierarchy>();
-        h_->buildGeometry(g);
-    }
-    Hierarchy& H = *h_;
-    H.base = found < 0 ? 0 : static_cast<std::size_t>(found);
-    H.extractFine(sys);
+// The starting point: prescribed values on the non-Film nodes, the bound on the Film nodes, the
+// free boundary (for the local relaxation of the first iteration) and the near flags; returns the
+// pressure scale's share of the columns without Film nodes (skipped by the passes: no defect, not
+// free, constant).
+double MultigridSolver::Hierarchy::startingPoint(const FilmGrid& g, Eigen::VectorXd& p, double pLower) {
+    Hierarchy& H = *this;
     Level& F = H.levels[H.base];
+    const int n = g.size();
     const bool bounded = std::isfinite(pLower);
-    const double* __restrict b = sys.rhs().data();
-    if (p.size() != n) p = sys.initialGuess(pLower);
-    // Prescribed values on the non-Film nodes, the bound on the Film nodes, and the free
-    // boundary of the starting point (for the local relaxation of the first iteration).
     const double* pp = g.prescribedPressures();
     for (int k = 0; k < n; ++k) {
         const auto sk = static_cast<std::size_t>(k);
@@ -105,8 +96,6 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
     H.near.resize(static_cast<std::size_t>(n));
     H.colFree.resize(static_cast<std::size_t>(F.nt));
     for (int i = 0; i < F.nz; ++i) H.markNear(i);
-    // Columns without Film nodes, skipped by the passes below: no defect, not free, and their
-    // (constant) share of the pressure scale.
     double deadScale = 0.0;
     for (int i = 0; i < F.nz; ++i) {
         int j = 0;
@@ -119,105 +108,149 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
             if (r < H.filmRuns.size()) j = H.filmRuns[r].second;
         }
     }
+    return deadScale;
+}
+
+// The nonlinear part of one iteration, returning the scaled residual of ReynoldsSystem::residual:
+// 1. the step of the previous iteration, p ← max(p_cav, p + α d); 2. one projected Gauss–Seidel
+// sweep (the nonlinear pre-smoother) in red–black order, and a second one on the nodes next to the
+// free boundary (near); 3. the defect b − Ap, the convergence criterion and the truncation (nodes
+// at the bound are frozen), and the near flags for the next iteration. Fused into one wavefront
+// over the rows — at step t: step of row t, red nodes of row t − 1, black of t − 2, near red of
+// t − 3, near black of t − 4, defect of t − 5, near flags of t − 6: each uses only rows that are
+// final for it, so the result is that of separate passes, in one pass over memory. Locals, not
+// captured references: the lambdas store through double pointers, after which referenced doubles
+// would have to be reloaded.
+double MultigridSolver::Hierarchy::nonlinearPass(const ReynoldsSystem& sys, Eigen::VectorXd& p, double pLower,
+                                                 double alpha, double deadScale) {
+    Hierarchy& H = *this;
+    Level& F = H.levels[H.base];
+    const bool bounded = std::isfinite(pLower);
+    const double pAmb = sys.grid().ambientPressure();
+    const double* __restrict b = sys.rhs().data();
     double* __restrict x = p.data();
     double* __restrict dir = H.dir.data();
     const double* __restrict invDiag = H.invDiag.data();
     const char* __restrict film = H.film.data();
     const int nz = F.nz, nt = F.nt;
+    const double lo = pLower, step = alpha;
+    const auto& runs = H.filmRuns;
+    auto stepRow = [&, lo, step, bounded](int i) {
+        for (const auto& [j0, j1] : runs)
+            for (int k = i * nt + j0, kEnd = i * nt + j1; k < kEnd; ++k) {
+                if (dir[k] == 0.0) continue;
+                double v = x[k] + step * dir[k];
+                if (bounded && v < lo) v = lo;
+                x[k] = v;
+            }
+    };
+    const double* __restrict A = F.a;
+    // Projected Gauss–Seidel update of the nodes of one colour in row i (all Film nodes, or
+    // only those flagged in `only`).
+    auto pgsRow = [&, lo, bounded](int i, int colour, const char* only) {
+        const double* xm = x + F.im(i) * nt;
+        double* x0 = x + i * nt;
+        const double* xp = x + F.ip(i) * nt;
+        const char* sel = (only ? only : film) + i * nt;
+        const int parity = (i + colour) % 2;
+        const double* a0 = symRowPtr(A, nt, i);
+        const double* aS = symSouthPtr(A, nz, nt, i);
+        for (const auto& [j0, j1] : runs)
+            forColumnsIn(F, j0 + ((j0 + parity) & 1), j1, 2, [&](int j, int jm, int jp, int jw) {
+                if (!sel[j]) return;
+                const int k = i * nt + j;
+                double v = (b[k] - offDiag<true>(symAt(a0, aS, j, jw), xm, x0, xp, j, jm, jp)) * invDiag[k];
+                if (bounded && v < lo) v = lo;
+                x0[j] = v;
+            });
+    };
+    // The second red–black sweep runs on the nodes next to the free boundary only (H.near: a
+    // frozen or non-Film node among the 8 neighbours, from the last truncation) — local
+    // relaxation where the coarse-grid correction is weakest (cavitation fronts, mask edges,
+    // open ends).
+    const char* near = H.near.data();
+    double rmax = 0.0, scale = deadScale;
+    double* __restrict ff = F.f.data();
+    char* __restrict fr = F.free.data();
+    auto defectRow = [&, lo, bounded, pAmb](int i) {
+        const double* xm = x + F.im(i) * nt;
+        const double* x0 = x + i * nt;
+        const double* xp = x + F.ip(i) * nt;
+        double rm = 0.0, sc = 0.0;
+        const double* a0 = symRowPtr(A, nt, i);
+        const double* aS = symSouthPtr(A, nz, nt, i);
+        for (const auto& [j0, j1] : runs)
+            forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp, int jw) {
+                const int k = i * nt + j;
+                sc = std::max(sc, std::abs(x0[j] - pAmb));
+                if (!film[k]) {
+                    ff[k] = 0.0;
+                    fr[k] = 0;
+                    return;
+                }
+                const SymRow c = symAt(a0, aS, j, jw);
+                const double w = b[k] - c[Stencil<true>::C] * x0[j] - offDiag<true>(c, xm, x0, xp, j, jm, jp);
+                ff[k] = w;
+                double rk = -w * invDiag[k];
+                if (bounded) rk = std::min(x0[j] - lo, rk);
+                rm = std::max(rm, std::abs(rk));
+                fr[k] = !(bounded && x0[j] <= lo);
+            });
+        rmax = std::max(rmax, rm);
+        scale = std::max(scale, sc);
+    };
+    for (int t = 0; t < nz + 6; ++t) {
+        if (alpha != 0.0 && t < nz) stepRow(t);
+        if (t >= 1 && t - 1 < nz) pgsRow(t - 1, 0, nullptr);
+        if (t >= 2 && t - 2 < nz) pgsRow(t - 2, 1, nullptr);
+        if (t >= 3 && t - 3 < nz) pgsRow(t - 3, 0, near);
+        if (t >= 4 && t - 4 < nz) pgsRow(t - 4, 1, near);
+        if (t >= 5 && t - 5 < nz) defectRow(t - 5);
+        if (t >= 6) H.markNear(t - 6);
+    }
+    return rmax == 0.0 ? 0.0 : rmax / std::max(scale, std::numeric_limits<double>::min());
+}
+
+// The linear part of one iteration: 4. the Galerkin operators follow the truncation; 5. one linear
+// V-cycle on the inactive nodes, whose correction, projected, is the search direction, with the
+// exact line search α = dᵀ(b − Ap)/dᵀAd (fused into the V-cycle's last pass on z-line levels).
+// Returns α.
+double MultigridSolver::Hierarchy::correctionStep(Eigen::VectorXd& p, double pLower) {
+    Hierarchy& H = *this;
+    Level& F = H.levels[H.base];
+    H.updateCoarse();
+    LineSearch ls{p.data(), pLower, std::isfinite(pLower), H.dir.data(), &H.filmRuns};
+    if (F.fusedZ) {
+        H.vcycleZT<true>(H.base, &ls);
+    } else {
+        H.vcycle(H.base);
+        for (int i = 0; i < F.nz; ++i) ls.direction(F, i);
+        for (int i = 0; i < F.nz; ++i) ls.curvature(F, i);
+    }
+    return ls.den > 0.0 && ls.num > 0.0 ? std::min(ls.num / ls.den, std::max(ls.alphaMax, 1.0)) : 0.0;
+}
+
+SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p, double pLower,
+                                   const SolverControl& control) {
+    const FilmGrid& g = sys.grid();
+    const int found = h_ ? h_->find(g) : -1;
+    if (found < 0) {
+        h_ = std::make_unique<Hierarchy>();
+        h_->buildGeometry(g);
+    }
+    Hierarchy& H = *h_;
+    H.base = found < 0 ? 0 : static_cast<std::size_t>(found);
+    H.extractFine(sys);
+    if (p.size() != g.size()) p = sys.initialGuess(pLower);
+    const double deadScale = H.startingPoint(g, p, pLower);
 
     // Iteration cap: each iteration is a whole V-cycle, so PSOR's sweep budget is far too many.
     const int maxIt = std::min(control.maxIterations, 500);
-    const double pAmb = g.ambientPressure();
     SolveReport rep;
     double first = -1.0;
     double alpha = 0.0;  // step along dir still to be applied (line search of the last iteration)
     for (;;) {
-        // 1. The step of the previous iteration, p ← max(p_cav, p + α d); 2. one projected
-        // Gauss–Seidel sweep (the nonlinear pre-smoother) in red–black order, and a second one
-        // on the nodes next to the free boundary (near); 3. the defect b − Ap, the convergence
-        // criterion of ReynoldsSystem::residual and the truncation (nodes at the bound are
-        // frozen), and the near flags for the next iteration. Fused into one wavefront over the
-        // rows — at step t: step of row t, red nodes of row t − 1, black of t − 2, near red of
-        // t − 3, near black of t − 4, defect of t − 5, near flags of t − 6: each uses only rows
-        // that are final for it, so the result is that of separate passes, in one pass over
-        // memory. Locals, not captured references: the lambdas store through double pointers,
-        // after which referenced doubles would have to be reloaded.
-        const double lo = pLower, step = alpha;
-        const auto& runs = H.filmRuns;
-        auto stepRow = [&, lo, step, bounded](int i) {
-            for (const auto& [j0, j1] : runs)
-                for (int k = i * nt + j0, kEnd = i * nt + j1; k < kEnd; ++k) {
-                    if (dir[k] == 0.0) continue;
-                    double v = x[k] + step * dir[k];
-                    if (bounded && v < lo) v = lo;
-                    x[k] = v;
-                }
-        };
-        const double* __restrict A = F.a;
-        // Projected Gauss–Seidel update of the nodes of one colour in row i (all Film nodes, or
-        // only those flagged in `only`).
-        auto pgsRow = [&, lo, bounded](int i, int colour, const char* only) {
-            const double* xm = x + F.im(i) * nt;
-            double* x0 = x + i * nt;
-            const double* xp = x + F.ip(i) * nt;
-            const char* sel = (only ? only : film) + i * nt;
-            const int parity = (i + colour) % 2;
-            const double* a0 = symRowPtr(A, nt, i);
-            const double* aS = symSouthPtr(A, nz, nt, i);
-            for (const auto& [j0, j1] : runs)
-                forColumnsIn(F, j0 + ((j0 + parity) & 1), j1, 2, [&](int j, int jm, int jp, int jw) {
-                    if (!sel[j]) return;
-                    const int k = i * nt + j;
-                    double v = (b[k] - offDiag<true>(symAt(a0, aS, j, jw), xm, x0, xp, j, jm, jp)) * invDiag[k];
-                    if (bounded && v < lo) v = lo;
-                    x0[j] = v;
-                });
-        };
-        // The second red–black sweep runs on the nodes next to the free boundary only (H.near: a
-        // frozen or non-Film node among the 8 neighbours, from the last truncation) — local
-        // relaxation where the coarse-grid correction is weakest (cavitation fronts, mask edges,
-        // open ends).
-        const char* near = H.near.data();
-        double rmax = 0.0, scale = deadScale;
-        double* __restrict ff = F.f.data();
-        char* __restrict fr = F.free.data();
-        auto defectRow = [&, lo, bounded, pAmb](int i) {
-            const double* xm = x + F.im(i) * nt;
-            const double* x0 = x + i * nt;
-            const double* xp = x + F.ip(i) * nt;
-            double rm = 0.0, sc = 0.0;
-            const double* a0 = symRowPtr(A, nt, i);
-            const double* aS = symSouthPtr(A, nz, nt, i);
-            for (const auto& [j0, j1] : runs)
-                forColumnsIn(F, j0, j1, 1, [&](int j, int jm, int jp, int jw) {
-                    const int k = i * nt + j;
-                    sc = std::max(sc, std::abs(x0[j] - pAmb));
-                    if (!film[k]) {
-                        ff[k] = 0.0;
-                        fr[k] = 0;
-                        return;
-                    }
-                    const SymRow c = symAt(a0, aS, j, jw);
-                    const double w = b[k] - c[Stencil<true>::C] * x0[j] - offDiag<true>(c, xm, x0, xp, j, jm, jp);
-                    ff[k] = w;
-                    double rk = -w * invDiag[k];
-                    if (bounded) rk = std::min(x0[j] - lo, rk);
-                    rm = std::max(rm, std::abs(rk));
-                    fr[k] = !(bounded && x0[j] <= lo);
-                });
-            rmax = std::max(rmax, rm);
-            scale = std::max(scale, sc);
-        };
-        for (int t = 0; t < nz + 6; ++t) {
-            if (alpha != 0.0 && t < nz) stepRow(t);
-            if (t >= 1 && t - 1 < nz) pgsRow(t - 1, 0, nullptr);
-            if (t >= 2 && t - 2 < nz) pgsRow(t - 2, 1, nullptr);
-            if (t >= 3 && t - 3 < nz) pgsRow(t - 3, 0, near);
-            if (t >= 4 && t - 4 < nz) pgsRow(t - 4, 1, near);
-            if (t >= 5 && t - 5 < nz) defectRow(t - 5);
-            if (t >= 6) H.markNear(t - 6);
-        }
-        rep.residual = rmax == 0.0 ? 0.0 : rmax / std::max(scale, std::numeric_limits<double>::min());
+        rep.residual = H.nonlinearPass(sys, p, pLower, alpha, deadScale);
         if (first < 0.0) first = rep.residual;
         if (!std::isfinite(rep.residual) || rep.residual > 1e8 * std::max(first, 1.0))
             throw std::runtime_error("MultigridSolver: diverged after " +
@@ -226,20 +259,7 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
         if (rep.residual <= control.tolerance && rep.iterations >= std::min(control.minIterations, maxIt))
             return rep;
         if (rep.iterations == maxIt) break;
-        // 4. The Galerkin operators follow the truncation.
-        H.updateCoarse();
-        // 5. One linear V-cycle on the inactive nodes; its correction, projected, is the search
-        // direction, with the exact line search α = dᵀ(b − Ap)/dᵀAd (fused into the V-cycle's
-        // last pass on z-line levels).
-        Hierarchy::LineSearch ls{x, pLower, bounded, dir, &H.filmRuns};
-        if (F.fusedZ) {
-            H.vcycleZT<true>(H.base, &ls);
-        } else {
-            H.vcycle(H.base);
-            for (int i = 0; i < nz; ++i) ls.direction(F, i);
-            for (int i = 0; i < nz; ++i) ls.curvature(F, i);
-        }
-        alpha = ls.den > 0.0 && ls.num > 0.0 ? std::min(ls.num / ls.den, std::max(ls.alphaMax, 1.0)) : 0.0;
+        alpha = H.correctionStep(p, pLower);
         ++rep.iterations;
     }
     throw std::runtime_error("MultigridSolver: not converged after " + std::to_string(maxIt) +

@@ -45,6 +45,12 @@ struct MultigridSolver::Hierarchy {
 
     void buildGeometry(const FilmGrid& g);
     void extractFine(const ReynoldsSystem& sys);
+    // The outer iteration's stages (MultigridSolver.cpp): the starting point (returns the
+    // pressure scale of the columns without Film nodes), the fused nonlinear pass (returns the
+    // scaled residual), the truncated V-cycle correction with its line search (returns α).
+    double startingPoint(const FilmGrid& g, Eigen::VectorXd& p, double pLower);
+    double nonlinearPass(const ReynoldsSystem& sys, Eigen::VectorXd& p, double pLower, double alpha, double deadScale);
+    double correctionStep(Eigen::VectorXd& p, double pLower);
     // Coarse nodes whose Galerkin rows must be rebuilt: flags, list, and flags per coarse row.
     struct Dirty {
         std::vector<char> flag, rows;
