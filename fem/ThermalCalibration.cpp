@@ -68,93 +68,88 @@ ThermalCalibration::ThermalCalibration(const SteadyHeatConduction& problem, std:
                                     " parameters; give at least as many points as parameters");
 }
 
-CalibrationResult ThermalCalibration::run() const {
-    const auto n = Eigen::Index(parameters_.size());
-    const auto m = Eigen::Index(measurements_.size());
-    using Kind = CalibrationParameter::Kind;
-    Eigen::VectorXd measured(m);
-    for (Eigen::Index i = 0; i < m; ++i) measured(i) = measurements_[std::size_t(i)].temperature;
+ConvectionParameters ThermalCalibration::parametersAt(const Eigen::VectorXd& q) const {
+    ConvectionParameters p = problem_.nominal();
+    for (Eigen::Index j = 0; j < q.size(); ++j) {
+        const int g = boundary_[std::size_t(j)];
+        if (parameters_[std::size_t(j)].kind == CalibrationParameter::Kind::HeatTransferScale) p.hScale(g) = std::exp(q(j));
+        else p.fluidTemperature(g) = q(j);
+    }
+    return p;
+}
 
-    ConvectionParameters base = problem_.nominal();
-    // q ↔ parameters: q_j = ln s_g or T_g.
-    auto apply = [&](const Eigen::VectorXd& q) {
-        ConvectionParameters p = base;
-        for (Eigen::Index j = 0; j < n; ++j) {
-            const int g = boundary_[std::size_t(j)];
-            if (parameters_[std::size_t(j)].kind == Kind::HeatTransferScale) p.hScale(g) = std::exp(q(j));
-            else p.fluidTemperature(g) = q(j);
-        }
-        return p;
-    };
-    Eigen::VectorXd lo(n), hi(n), q(n);
+ThermalCalibration::Bounds ThermalCalibration::bounds(Eigen::VectorXd& q) const {
+    const auto n = Eigen::Index(parameters_.size());
+    const ConvectionParameters base = problem_.nominal();
+    Bounds b{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+    q.resize(n);
     for (Eigen::Index j = 0; j < n; ++j) {
         const int g = boundary_[std::size_t(j)];
-        if (parameters_[std::size_t(j)].kind == Kind::HeatTransferScale) {
-            lo(j) = std::log(options_.minScale), hi(j) = std::log(options_.maxScale), q(j) = std::log(base.hScale(g));
+        if (parameters_[std::size_t(j)].kind == CalibrationParameter::Kind::HeatTransferScale) {
+            b.lo(j) = std::log(options_.minScale), b.hi(j) = std::log(options_.maxScale), q(j) = std::log(base.hScale(g));
         } else {
-            lo(j) = options_.minFluidTemperature, hi(j) = options_.maxFluidTemperature, q(j) = base.fluidTemperature(g);
+            b.lo(j) = options_.minFluidTemperature, b.hi(j) = options_.maxFluidTemperature, q(j) = base.fluidTemperature(g);
         }
-        q(j) = std::clamp(q(j), lo(j), hi(j));
+        q(j) = std::clamp(q(j), b.lo(j), b.hi(j));
     }
+    return b;
+}
 
-    struct Evaluation {
-        Eigen::VectorXd T, r;
-        Eigen::MatrixXd J;
-        double cost = 0.0;
-    };
-    int evaluations = 0;
-    auto evaluate = [&](const Eigen::VectorXd& qv) {
-        ++evaluations;
-        const ConvectionParameters p = apply(qv);
-        const auto s = problem_.solveWithSensitivity(p);
-        Evaluation e;
-        e.T = s.T;
-        e.r.resize(m);
-        e.J.resize(m, n);
-        for (Eigen::Index i = 0; i < m; ++i) {
-            const auto& loc = locations_[std::size_t(i)];
-            e.r(i) = loc.interpolate(s.T) - measured(i);
-            for (Eigen::Index j = 0; j < n; ++j) {
-                const int g = boundary_[std::size_t(j)];
-                // ∂T/∂ln s = s ∂T/∂s; ∂T/∂T_g directly.
-                e.J(i, j) = parameters_[std::size_t(j)].kind == Kind::HeatTransferScale
-                                ? p.hScale(g) * loc.interpolate(s.dT_dScale.col(g))
-                                : loc.interpolate(s.dT_dFluid.col(g));
-            }
+ThermalCalibration::Evaluation ThermalCalibration::evaluate(const Eigen::VectorXd& q,
+                                                            const Eigen::VectorXd& measured) const {
+    const auto n = q.size(), m = measured.size();
+    const ConvectionParameters p = parametersAt(q);
+    const auto s = problem_.solveWithSensitivity(p);
+    Evaluation e;
+    e.T = s.T;
+    e.r.resize(m);
+    e.J.resize(m, n);
+    for (Eigen::Index i = 0; i < m; ++i) {
+        const auto& loc = locations_[std::size_t(i)];
+        e.r(i) = loc.interpolate(s.T) - measured(i);
+        for (Eigen::Index j = 0; j < n; ++j) {
+            const int g = boundary_[std::size_t(j)];
+            // ∂T/∂ln s = s ∂T/∂s; ∂T/∂T_g directly.
+            e.J(i, j) = parameters_[std::size_t(j)].kind == CalibrationParameter::Kind::HeatTransferScale
+                            ? p.hScale(g) * loc.interpolate(s.dT_dScale.col(g))
+                            : loc.interpolate(s.dT_dFluid.col(g));
         }
-        e.cost = 0.5 * e.r.squaredNorm();
-        return e;
-    };
+    }
+    e.cost = 0.5 * e.r.squaredNorm();
+    return e;
+}
 
-    Evaluation cur = evaluate(q);
-    CalibrationResult res;
-    res.initialRms = std::sqrt(cur.r.squaredNorm() / double(m));
-
-    // Identifiability at the start: every parameter must move some measured temperature,
-    // and the columns must be independent (a parameter change of 1 = a factor e on h or 1 K).
-    const Eigen::VectorXd colNorm = cur.J.colwise().norm();
+void ThermalCalibration::requireIdentifiable(const Eigen::MatrixXd& J) const {
+    // Every parameter must move some measured temperature, and the columns must be independent
+    // (a parameter change of 1 = a factor e on h or 1 K).
+    const auto n = J.cols();
+    const Eigen::VectorXd colNorm = J.colwise().norm();
     for (Eigen::Index j = 0; j < n; ++j)
         if (!(colNorm(j) > 1e-6))
             throw std::invalid_argument("calibration parameter " + parameters_[std::size_t(j)].label() +
                                         " has no effect on the measured temperatures (sensitivity " +
                                         fmtNumber("%.3g", colNorm(j)) +
                                         " K); drop it or add measurement points near that surface");
-    {
-        const Eigen::MatrixXd Jn = cur.J * colNorm.cwiseInverse().asDiagonal();
-        Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
-        const Eigen::VectorXd sv = svd.singularValues();
-        if (sv(n - 1) < 1e-8 * sv(0)) {
-            const Eigen::VectorXd v = svd.matrixV().col(n - 1);
-            std::string involved;
-            for (Eigen::Index j = 0; j < n; ++j)
-                if (std::abs(v(j)) > 0.1) involved += (involved.empty() ? "" : ", ") + parameters_[std::size_t(j)].label();
-            throw std::invalid_argument("calibration is under-determined: the measurement points cannot separate " +
-                                        involved + " (fewer independent points than parameters)");
-        }
+    const Eigen::MatrixXd Jn = J * colNorm.cwiseInverse().asDiagonal();
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
+    const Eigen::VectorXd sv = svd.singularValues();
+    if (sv(n - 1) < 1e-8 * sv(0)) {
+        const Eigen::VectorXd v = svd.matrixV().col(n - 1);
+        std::string involved;
+        for (Eigen::Index j = 0; j < n; ++j)
+            if (std::abs(v(j)) > 0.1) involved += (involved.empty() ? "" : ", ") + parameters_[std::size_t(j)].label();
+        throw std::invalid_argument("calibration is under-determined: the measurement points cannot separate " +
+                                    involved + " (fewer independent points than parameters)");
     }
+}
 
+bool ThermalCalibration::fit(Eigen::VectorXd& q, Evaluation& cur, const Bounds& b, const Eigen::VectorXd& measured,
+                             int& iterations, int& evaluations) const {
     // Levenberg–Marquardt with bounds: parameters at a bound whose gradient points outwards
     // are held there (active set), the others take the damped Gauss–Newton step, projected.
+    const auto n = q.size(), m = measured.size();
+    const Eigen::VectorXd& lo = b.lo;
+    const Eigen::VectorXd& hi = b.hi;
     double lambda = 1e-3;
     int it = 0;
     bool converged = false;
@@ -192,7 +187,8 @@ CalibrationResult ThermalCalibration::run() const {
                 converged = true;  // no further progress possible
                 break;
             }
-            Evaluation next = evaluate(qNew);
+            Evaluation next = evaluate(qNew, measured);
+            ++evaluations;
             if (next.cost < cur.cost) {
                 const double drop = (cur.cost - next.cost) / std::max(cur.cost, 1e-300);
                 q = qNew;
@@ -206,15 +202,22 @@ CalibrationResult ThermalCalibration::run() const {
         }
         if (!accepted && !converged) converged = true;  // no descent at any damping: a minimum to round-off
     }
+    iterations = it;
+    return converged;
+}
 
-    res.parameters = apply(q);
+CalibrationResult ThermalCalibration::result(const Eigen::VectorXd& q, const Evaluation& cur, const Bounds& b,
+                                             const Eigen::VectorXd& measured) const {
+    const auto n = q.size(), m = measured.size();
+    CalibrationResult res;
+    res.parameters = parametersAt(q);
     res.values.resize(n);
     res.atBound.resize(std::size_t(n));
     for (Eigen::Index j = 0; j < n; ++j) {
-        const bool scale = parameters_[std::size_t(j)].kind == Kind::HeatTransferScale;
+        const bool scale = parameters_[std::size_t(j)].kind == CalibrationParameter::Kind::HeatTransferScale;
         res.values(j) = scale ? std::exp(q(j)) : q(j);
-        res.atBound[std::size_t(j)] = q(j) <= lo(j) + 1e-9 * (1.0 + std::abs(lo(j))) ||
-                                      q(j) >= hi(j) - 1e-9 * (1.0 + std::abs(hi(j)));
+        res.atBound[std::size_t(j)] = q(j) <= b.lo(j) + 1e-9 * (1.0 + std::abs(b.lo(j))) ||
+                                      q(j) >= b.hi(j) - 1e-9 * (1.0 + std::abs(b.hi(j)));
     }
     res.temperature = cur.T;
     res.residuals = cur.r;
@@ -223,17 +226,33 @@ CalibrationResult ThermalCalibration::run() const {
     Eigen::Index worst = 0;
     res.maxAbs = cur.r.cwiseAbs().maxCoeff(&worst);
     res.worst = int(worst);
-    res.iterations = it;
+    return res;
+}
+
+CalibrationResult ThermalCalibration::run() const {
+    const auto m = Eigen::Index(measurements_.size());
+    Eigen::VectorXd measured(m);
+    for (Eigen::Index i = 0; i < m; ++i) measured(i) = measurements_[std::size_t(i)].temperature;
+    Eigen::VectorXd q;
+    const Bounds b = bounds(q);
+    Evaluation cur = evaluate(q, measured);
+    const double initialRms = std::sqrt(cur.r.squaredNorm() / double(m));
+    requireIdentifiable(cur.J);
+    int iterations = 0, evaluations = 1;
+    const bool converged = fit(q, cur, b, measured, iterations, evaluations);
+
+    CalibrationResult res = result(q, cur, b, measured);
+    res.initialRms = initialRms;
+    res.iterations = iterations;
     res.evaluations = evaluations;
     res.converged = converged;
-
     std::string why;
     if (!converged) why += "no convergence in " + std::to_string(options_.maxIterations) + " iterations; ";
     if (res.rms > options_.tolerance)
         why += "RMS residual " + fmtNumber("%.3g", res.rms) + " K exceeds the tolerance " +
-               fmtNumber("%.3g", options_.tolerance) + " K (largest at '" + measurements_[worst].name + "': " +
-               fmtNumber("%+.3g", cur.r(worst)) + " K); ";
-    for (Eigen::Index j = 0; j < n; ++j)
+               fmtNumber("%.3g", options_.tolerance) + " K (largest at '" + measurements_[std::size_t(res.worst)].name +
+               "': " + fmtNumber("%+.3g", cur.r(res.worst)) + " K); ";
+    for (Eigen::Index j = 0; j < q.size(); ++j)
         if (res.atBound[std::size_t(j)])
             why += parameters_[std::size_t(j)].label() + " stopped at its bound " + fmtNumber("%g", res.values(j)) + "; ";
     res.matched = why.empty();

@@ -70,6 +70,27 @@ public:
     const std::vector<PointLocation>& locations() const { return locations_; }
 
 private:
+    // The fit's unknowns q: q_j = ln s_g (heat-transfer scale) or T_g (fluid temperature).
+    struct Bounds { Eigen::VectorXd lo, hi; };
+    /// The model at q: the temperature field, the residuals at the points, their Jacobian in q.
+    struct Evaluation {
+        Eigen::VectorXd T, r;
+        Eigen::MatrixXd J;
+        double cost = 0.0;  ///< ½ ‖r‖²
+    };
+    ConvectionParameters parametersAt(const Eigen::VectorXd& q) const;
+    /// The bounds of q and its start (the nominal values, clamped).
+    Bounds bounds(Eigen::VectorXd& q) const;
+    Evaluation evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& measured) const;
+    /// Throws when a parameter moves no measured temperature or the columns are dependent.
+    void requireIdentifiable(const Eigen::MatrixXd& J) const;
+    /// Levenberg–Marquardt with bounds from q, cur; returns whether it converged.
+    bool fit(Eigen::VectorXd& q, Evaluation& cur, const Bounds& b, const Eigen::VectorXd& measured, int& iterations,
+             int& evaluations) const;
+    /// The result at the fit's end, with the diagnosis when it does not match the measurements.
+    CalibrationResult result(const Eigen::VectorXd& q, const Evaluation& cur, const Bounds& b,
+                             const Eigen::VectorXd& measured) const;
+
     const SteadyHeatConduction& problem_;
     std::vector<CalibrationParameter> parameters_;
     std::vector<TemperatureMeasurement> measurements_;
