@@ -84,49 +84,164 @@ CraigBamptonReducer::CraigBamptonReducer(const fem::Mesh& mesh, const fem::Elast
     material_.validate();
 }
 
-ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs, const ReductionSettings& settings,
-                                        ReductionReport* report) const {
-    ReductionReport rep;
-    fem::Stopwatch t;
+namespace {
+
+// The cheap checks, before anything that can take minutes on a production mesh.
+void requireReducible(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs, const ReductionSettings& settings) {
     if (specs.empty())
         throw std::invalid_argument("reduction: no interface given; the body must be held at an interface");
-    // Cheap checks first: everything below can take minutes on a production mesh.
     if (!(settings.cutoffHz >= 0.0)) throw std::invalid_argument("reduction: cut-off frequency must be >= 0 Hz");
     if (!(settings.dampingRatio >= 0.0 && settings.dampingRatio < 1.0))
         throw std::invalid_argument("reduction: damping ratio must lie in [0, 1)");
     if (settings.axialHats == 1 || settings.axialHats < 0 || settings.axialOrder < 0 ||
         settings.circumferentialOrder < 0)
         throw std::invalid_argument("reduction: load patterns need orders >= 0 and axial hats 0 or >= 2");
-    for (const auto& surface : settings.staticCorrection) fem::BoundarySurface(mesh_, surface);
+    for (const auto& surface : settings.staticCorrection) fem::BoundarySurface(mesh, surface);
     for (const auto& s : specs)
-        if (mesh_.group(s.group).dim != 2)
-            throw std::invalid_argument("interface '" + s.group + "' is a volume group of mesh '" + mesh_.source +
+        if (mesh.group(s.group).dim != 2)
+            throw std::invalid_argument("interface '" + s.group + "' is a volume group of mesh '" + mesh.source +
                                         "'; an interface is a surface group (the surfaces where the body is held)");
+}
+
+// The interfaces: node sets tied to reference nodes (RBE2, or averaging) in dofs.
+std::vector<Interface> tieInterfaces(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs, fem::DofMap& dofs) {
+    std::vector<Interface> interfaces;
+    for (const auto& s : specs) {
+        Interface itf{s.group, s.kind, Eigen::Vector3d::Zero(), mesh.groupNodes(s.group)};
+        if (itf.nodes.empty()) throw std::invalid_argument("interface '" + s.group + "' has no nodes");
+        for (auto n : itf.nodes) itf.referencePoint += mesh.nodes.col(n);
+        itf.referencePoint /= double(itf.nodes.size());
+        if (s.referencePoint) itf.referencePoint = *s.referencePoint;
+        try {
+            if (s.kind == InterfaceKind::Rbe2)
+                dofs.addRigidLink(itf.nodes, mesh.nodes, itf.referencePoint);
+            else
+                dofs.addAveragingLink(itf.nodes, mesh.nodes, itf.referencePoint);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("interface '" + s.group + "': " + e.what());
+        }
+        interfaces.push_back(std::move(itf));
+    }
+    dofs.finalize();
+    return interfaces;
+}
+
+// The static correction: residual attachment modes, M-orthogonal to Φ. Always inertia relief,
+// the interior's static response to the inertia forces of a unit boundary acceleration,
+// −(M_ii Ψ + M_ib): it carries the coupling between the interface's (rigid) motion and elastic
+// deformation that fixed-interface modes converge to slowly; then the responses to the surface
+// pressure patterns of settings.staticCorrection.
+Eigen::MatrixXd staticCorrection(const fem::Mesh& mesh, const fem::ElasticityAssembler& assembler,
+                                 const fem::DofMap& dofs, const fem::StaticSolver& factor, const fem::SparseMatrix& Mii,
+                                 const Eigen::MatrixXd& Mib, const Eigen::MatrixXd& Psi, const Eigen::MatrixXd& Phi,
+                                 const ReductionSettings& settings, int& inertiaRelief) {
+    const Eigen::Index ni = Mii.rows();
+    Eigen::MatrixXd X = factor.solve(Eigen::MatrixXd(-(Mii.selfadjointView<Eigen::Upper>() * Psi + Mib)));
+    if (Phi.cols() > 0) X -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * X));
+    inertiaRelief = int(X.cols());
+    for (const auto& surface : settings.staticCorrection) {
+        const fem::BoundarySurface s(mesh, surface);
+        const Eigen::MatrixXd P =
+            surfacePressurePatterns(mesh, surface, settings.axialOrder, settings.circumferentialOrder, settings.axialHats);
+        Eigen::MatrixXd Fi(ni, P.cols());
+        for (Eigen::Index j = 0; j < P.cols(); ++j)
+            Fi.col(j) = (dofs.transformation().transpose() * assembler.pressureLoad(s, Eigen::VectorXd(P.col(j))))
+                            .head(ni);
+        Eigen::MatrixXd Xs = factor.solve(Fi);
+        if (Phi.cols() > 0) Xs -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * Xs));
+        X.conservativeResize(Eigen::NoChange, X.cols() + Xs.cols());
+        X.rightCols(Xs.cols()) = Xs;
+    }
+    return X;
+}
+
+// The basis B = [Ψ Φ X; I 0 0] in the free DOFs, its columns scaled to unit M-norm, and its
+// projected matrices Mb = D Bᵀ M B D, Kb = D Bᵀ K B D.
+void projectedBasis(const fem::SparseMatrix& Kr, const fem::SparseMatrix& Mr, const Eigen::MatrixXd& Psi,
+                    const Eigen::MatrixXd& Phi, const Eigen::MatrixXd& X, Eigen::MatrixXd& B, Eigen::MatrixXd& Mb,
+                    Eigen::MatrixXd& Kb) {
+    const Eigen::Index nf = Kr.rows(), nb = Psi.cols(), ni = nf - nb;
+    const Eigen::Index m0 = nb + Phi.cols() + X.cols();
+    B = Eigen::MatrixXd::Zero(nf, m0);
+    B.topLeftCorner(ni, nb) = Psi;
+    B.bottomLeftCorner(nb, nb).setIdentity();
+    B.block(0, nb, ni, Phi.cols()) = Phi;
+    B.block(0, nb + Phi.cols(), ni, X.cols()) = X;
+    // Unit M-norm columns (D = diag(Bᵀ M B)^-1/2): attachment vectors of unit-pascal
+    // patterns are ~1e-12 m, and a dependence threshold must compare directions.
+    // Sparse x (n x 100) dense: with full storage and row-major dense operands Eigen's
+    // kernel streams contiguous rows (axpy per non-zero); col-major operands make it
+    // stride through memory, ~5x slower here.
+    using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const RowMatrix Brow = B;
+    const Eigen::MatrixXd MB = RowMatrix(fem::SparseMatrix(Mr.selfadjointView<Eigen::Upper>()) * Brow);
+    const Eigen::MatrixXd KB = RowMatrix(fem::SparseMatrix(Kr.selfadjointView<Eigen::Upper>()) * Brow);
+    const Eigen::VectorXd norms = (B.cwiseProduct(MB)).colwise().sum().transpose();
+    // A pattern that loads nothing (e.g. sin mθ on a surface in a plane through the axis)
+    // gives a zero vector: weight 0 here, dropped below as a dependent direction.
+    Eigen::VectorXd d(norms.size());
+    for (Eigen::Index j = 0; j < norms.size(); ++j)
+        d(j) = norms(j) > 1e-28 * norms.maxCoeff() ? 1.0 / std::sqrt(norms(j)) : 0.0;
+    B = B * d.asDiagonal();
+    Mb = multiplyTransposed(B, MB) * d.asDiagonal();
+    Kb = multiplyTransposed(B, KB) * d.asDiagonal();
+}
+
+// Orthonormalisation: Mb = U S Uᵀ, dependent directions dropped, then Kq = V Λ Vᵀ; the body's
+// shapes, modal mass and stiffness, interface motion, frequencies, rigid-body flags and damping.
+void orthonormalise(const fem::DofMap& dofs, const fem::SparseMatrix& Kr, const fem::SparseMatrix& Mr,
+                    const Eigen::MatrixXd& B, const Eigen::MatrixXd& Mb, const Eigen::MatrixXd& Kb, Eigen::Index nb,
+                    double dampingRatio, ReducedBody& body, int& droppedDependent) {
+    const Eigen::Index m0 = B.cols();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> me(0.5 * (Mb + Mb.transpose()));
+    const double smax = me.eigenvalues().maxCoeff();
+    std::vector<Eigen::Index> keep;
+    for (Eigen::Index k = 0; k < m0; ++k)
+        if (me.eigenvalues()(k) > 1e-10 * smax) keep.push_back(k);
+    if (smax <= 0.0) throw std::runtime_error("reduction: the basis is empty");
+    droppedDependent = int(m0 - keep.size());
+    Eigen::MatrixXd Q(m0, keep.size());
+    for (std::size_t k = 0; k < keep.size(); ++k)
+        Q.col(k) = me.eigenvectors().col(keep[k]) / std::sqrt(me.eigenvalues()(keep[k]));
+    const Eigen::MatrixXd Kq = Q.transpose() * Kb * Q;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ke(0.5 * (Kq + Kq.transpose()));
+    const Eigen::MatrixXd C = Q * ke.eigenvectors();
+    const Eigen::MatrixXd BC = multiply(B, C);
+
+    body.shapes = dofs.expandHomogeneous(BC);
+    body.massMatrix = C.transpose() * Mb * C;
+    body.stiffnessMatrix = C.transpose() * Kb * C;
+    body.interfaceMotion = BC.bottomRows(nb);
+    const Eigen::VectorXd lambda = ke.eigenvalues();
+    const double rigidThreshold = fem::rigidBodyThreshold(Kr, Mr);
+    const int m = int(lambda.size());
+    body.frequenciesHz.resize(m);
+    body.rigidBody.assign(m, 0);
+    body.dampingRatios = Eigen::VectorXd::Constant(m, dampingRatio);
+    for (int k = 0; k < m; ++k) {
+        body.frequenciesHz(k) = std::copysign(std::sqrt(std::abs(lambda(k))), lambda(k)) / (2 * std::numbers::pi);
+        if (std::abs(lambda(k)) < rigidThreshold) {  // same criterion as fem::ModalAnalysis
+            body.rigidBody[k] = 1;
+            body.frequenciesHz(k) = 0.0;  // the eigenvalue is round-off of either sign
+            body.dampingRatios(k) = 0.0;
+        }
+    }
+}
+
+}  // namespace
+
+ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs, const ReductionSettings& settings,
+                                        ReductionReport* report) const {
+    ReductionReport rep;
+    fem::Stopwatch t;
+    requireReducible(mesh_, specs, settings);
     ReducedBody body;
     body.mesh = mesh_;
     body.material = material_;
     body.settings = settings;
     body.elementOrder = mesh_.order();
-
-    // --- interfaces: node sets tied to reference nodes (RBE2) ---
     fem::DofMap dofs(mesh_.numNodes(), 3);
-    for (const auto& s : specs) {
-        Interface itf{s.group, s.kind, Eigen::Vector3d::Zero(), mesh_.groupNodes(s.group)};
-        if (itf.nodes.empty()) throw std::invalid_argument("interface '" + s.group + "' has no nodes");
-        for (auto n : itf.nodes) itf.referencePoint += mesh_.nodes.col(n);
-        itf.referencePoint /= double(itf.nodes.size());
-        if (s.referencePoint) itf.referencePoint = *s.referencePoint;
-        try {
-            if (s.kind == InterfaceKind::Rbe2)
-                dofs.addRigidLink(itf.nodes, mesh_.nodes, itf.referencePoint);
-            else
-                dofs.addAveragingLink(itf.nodes, mesh_.nodes, itf.referencePoint);
-        } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("interface '" + s.group + "': " + e.what());
-        }
-        body.interfaces.push_back(std::move(itf));
-    }
-    dofs.finalize();
+    body.interfaces = tieInterfaces(mesh_, specs, dofs);
 
     fem::ElasticityAssembler assembler(mesh_);
     const fem::SparseMatrix Kr = dofs.reduce(assembler.stiffness(material_));
@@ -158,90 +273,14 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     body.settings.normalModes = rep.normalModes;
     rep.normalModeSeconds = t.lap();
 
-    // --- static correction: residual attachment modes, M-orthogonal to Φ ---
-    // Always: inertia relief, the interior's static response to the inertia forces of a
-    // unit boundary acceleration, -(M_ii Ψ + M_ib). It carries the coupling between the
-    // interface's (rigid) motion and elastic deformation that fixed-interface modes
-    // converge to slowly.
-    Eigen::MatrixXd X = factor->solve(Eigen::MatrixXd(-(Mii.selfadjointView<Eigen::Upper>() * Psi + Mib)));
-    if (Phi.cols() > 0) X -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * X));
-    rep.inertiaReliefModes = int(X.cols());
-    for (const auto& surface : settings.staticCorrection) {
-        const fem::BoundarySurface s(mesh_, surface);
-        const Eigen::MatrixXd P =
-            surfacePressurePatterns(mesh_, surface, settings.axialOrder, settings.circumferentialOrder, settings.axialHats);
-        Eigen::MatrixXd Fi(ni, P.cols());
-        for (Eigen::Index j = 0; j < P.cols(); ++j)
-            Fi.col(j) = (dofs.transformation().transpose() * assembler.pressureLoad(s, Eigen::VectorXd(P.col(j))))
-                            .head(ni);
-        Eigen::MatrixXd Xs = factor->solve(Fi);
-        if (Phi.cols() > 0) Xs -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * Xs));
-        X.conservativeResize(Eigen::NoChange, X.cols() + Xs.cols());
-        X.rightCols(Xs.cols()) = Xs;
-    }
+    const Eigen::MatrixXd X =
+        staticCorrection(mesh_, assembler, dofs, *factor, Mii, Mib, Psi, Phi, settings, rep.inertiaReliefModes);
     rep.staticCorrectionModes = int(X.cols()) - rep.inertiaReliefModes;
     rep.staticCorrectionSeconds = t.lap();
 
-    // --- basis in the free DOFs and its projected matrices ---
-    const Eigen::Index m0 = nb + Phi.cols() + X.cols();
-    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(nf, m0);
-    B.topLeftCorner(ni, nb) = Psi;
-    B.bottomLeftCorner(nb, nb).setIdentity();
-    B.block(0, nb, ni, Phi.cols()) = Phi;
-    B.block(0, nb + Phi.cols(), ni, X.cols()) = X;
-    // Unit M-norm columns (D = diag(Bᵀ M B)^-1/2): attachment vectors of unit-pascal
-    // patterns are ~1e-12 m, and a dependence threshold must compare directions.
-    // Sparse x (n x 100) dense: with full storage and row-major dense operands Eigen's
-    // kernel streams contiguous rows (axpy per non-zero); col-major operands make it
-    // stride through memory, ~5x slower here.
-    using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-    const RowMatrix Brow = B;
-    const Eigen::MatrixXd MB = RowMatrix(fem::SparseMatrix(Mr.selfadjointView<Eigen::Upper>()) * Brow);
-    const Eigen::MatrixXd KB = RowMatrix(fem::SparseMatrix(Kr.selfadjointView<Eigen::Upper>()) * Brow);
-    const Eigen::VectorXd norms = (B.cwiseProduct(MB)).colwise().sum().transpose();
-    // A pattern that loads nothing (e.g. sin mθ on a surface in a plane through the axis)
-    // gives a zero vector: weight 0 here, dropped below as a dependent direction.
-    Eigen::VectorXd d(norms.size());
-    for (Eigen::Index j = 0; j < norms.size(); ++j)
-        d(j) = norms(j) > 1e-28 * norms.maxCoeff() ? 1.0 / std::sqrt(norms(j)) : 0.0;
-    B = B * d.asDiagonal();
-    const Eigen::MatrixXd Mb = multiplyTransposed(B, MB) * d.asDiagonal();  // D Bᵀ M B D
-    const Eigen::MatrixXd Kb = multiplyTransposed(B, KB) * d.asDiagonal();
-
-    // --- orthonormalisation: Mb = U S Uᵀ, drop dependent directions, then Kq = V Λ Vᵀ ---
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> me(0.5 * (Mb + Mb.transpose()));
-    const double smax = me.eigenvalues().maxCoeff();
-    std::vector<Eigen::Index> keep;
-    for (Eigen::Index k = 0; k < m0; ++k)
-        if (me.eigenvalues()(k) > 1e-10 * smax) keep.push_back(k);
-    if (smax <= 0.0) throw std::runtime_error("reduction: the basis is empty");
-    rep.droppedDependent = int(m0 - keep.size());
-    Eigen::MatrixXd Q(m0, keep.size());
-    for (std::size_t k = 0; k < keep.size(); ++k)
-        Q.col(k) = me.eigenvectors().col(keep[k]) / std::sqrt(me.eigenvalues()(keep[k]));
-    const Eigen::MatrixXd Kq = Q.transpose() * Kb * Q;
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ke(0.5 * (Kq + Kq.transpose()));
-    const Eigen::MatrixXd C = Q * ke.eigenvectors();
-    const Eigen::MatrixXd BC = multiply(B, C);
-
-    body.shapes = dofs.expandHomogeneous(BC);
-    body.massMatrix = C.transpose() * Mb * C;
-    body.stiffnessMatrix = C.transpose() * Kb * C;
-    body.interfaceMotion = BC.bottomRows(nb);
-    const Eigen::VectorXd lambda = ke.eigenvalues();
-    const double rigidThreshold = fem::rigidBodyThreshold(Kr, Mr);
-    const int m = int(lambda.size());
-    body.frequenciesHz.resize(m);
-    body.rigidBody.assign(m, 0);
-    body.dampingRatios = Eigen::VectorXd::Constant(m, settings.dampingRatio);
-    for (int k = 0; k < m; ++k) {
-        body.frequenciesHz(k) = std::copysign(std::sqrt(std::abs(lambda(k))), lambda(k)) / (2 * std::numbers::pi);
-        if (std::abs(lambda(k)) < rigidThreshold) {  // same criterion as fem::ModalAnalysis
-            body.rigidBody[k] = 1;
-            body.frequenciesHz(k) = 0.0;  // the eigenvalue is round-off of either sign
-            body.dampingRatios(k) = 0.0;
-        }
-    }
+    Eigen::MatrixXd B, Mb, Kb;
+    projectedBasis(Kr, Mr, Psi, Phi, X, B, Mb, Kb);
+    orthonormalise(dofs, Kr, Mr, B, Mb, Kb, nb, settings.dampingRatio, body, rep.droppedDependent);
     rep.orthonormaliseSeconds = t.lap();
     if (report) *report = rep;
     return body;
