@@ -407,10 +407,9 @@ std::vector<PressureSample> readPressureTable(const std::string& path) {
     return samples;
 }
 
-EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options) {
-    const fs::path absolute = fs::absolute(fs::path(path)).lexically_normal();
-    YamlSource ctx{path, absolute.parent_path()};
+namespace {
 
+YAML::Node loadCaseYaml(const std::string& path, const fs::path& absolute) {
     std::string error;
     const std::string content = readWholeFile(absolute, error);
     if (!error.empty()) throw std::runtime_error(path + ": cannot read the case file: " + error);
@@ -422,7 +421,125 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
             fmt::format("{}:{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
     }
     if (!root.IsDefined() || root.IsNull()) throw std::runtime_error(path + ": the case file is empty");
+    return root;
+}
 
+// engine.pin_tdc_depth where the liner's tables or mesh need the piston placed on them.
+void requirePinTdcDepth(const YamlSection& engine, const EngineCase& c) {
+    if ((c.liner.boreDistortion.format != BoreDistortionFormat::None || !c.thermal.file.empty()) &&
+        !engine.has("pin_tdc_depth"))
+        engine.missing("pin_tdc_depth",
+                       "the depth of the pin axis below the deck at TDC in m (required with liner.bore_distortion "
+                       "or thermal: it places the piston on the liner's tables)");
+    if (c.linerBody.model == BodyModel::Flexible && !engine.has("pin_tdc_depth"))
+        engine.missing("pin_tdc_depth",
+                       "the depth of the pin axis below the deck at TDC in m (required with a "
+                       "flexible liner: it places the piston on the liner mesh)");
+}
+
+// The skirt top below the deck at TDC.
+void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c) {
+    if ((engine.has("pin_tdc_depth") || c.linerBody.model == BodyModel::Flexible) &&
+        !(c.engine.pinTdcDepth > c.piston.skirtTop))
+        engine.fail("pin_tdc_depth",
+                    fmt::format("at TDC the skirt top (piston.skirt_top = {:g} m above the pin) would stand above the "
+                                "deck: pin_tdc_depth must exceed it, got {:g} m",
+                                c.piston.skirtTop, c.engine.pinTdcDepth));
+}
+
+void readCylinderPressure(const YamlSection& top, const YamlSource& ctx, EngineCase& c) {
+    const std::string csv =
+        text(top, "cylinder_pressure", "",
+             "the path of the cylinder-pressure CSV (crank angle in deg, pressure in Pa)", true);
+    const fs::path resolved = ctx.resolve(csv);
+    c.cylinderPressureFile = resolved.string();
+    try {
+        c.cylinderPressure = readPressureTable(c.cylinderPressureFile);
+    } catch (const std::exception& e) {
+        top.fail("cylinder_pressure", e.what());
+    }
+}
+
+void readGrid(const YamlSection& grid, const PistonSpec& piston, GridSpec& g) {
+    g.axialNodes = integer(grid, "axial_nodes", 3, 100000, g.axialNodes, "nodes");
+    g.circumferentialNodes = integer(grid, "circumferential_nodes", 8, 100000, g.circumferentialNodes, "nodes");
+    // Each skirt panel (2 × half angle wide) must hold at least 3 grid columns.
+    const double spacing = 2 * kPi / g.circumferentialNodes;
+    const double halfAngle = std::min(piston.skirtHalfAngle, kPi / 2);
+    if (2 * halfAngle / spacing < 2.0)
+        grid.fail("circumferential_nodes",
+                  fmt::format("{} nodes around the circumference leave fewer than 3 across a skirt panel of {:g} "
+                              "deg; use at least {}",
+                              g.circumferentialNodes, 2 * halfAngle / kDeg,
+                              static_cast<int>(std::ceil(2.0 * 2 * kPi / (2 * halfAngle)))));
+}
+
+void readTime(const YamlSection& time, TimeSpec& t) {
+    t.startDeg = number(time, "start_deg", {"crank angle", "deg"}, Sign::NonNegative, t.startDeg);
+    if (!(t.startDeg < 720.0))
+        time.fail("start_deg", fmt::format("expected a crank angle in [0, 720) deg, got {:g}", t.startDeg));
+    t.maxStepDeg = number(time, "max_step_deg", {"crank-angle step", "deg"}, Sign::Positive, t.maxStepDeg);
+    t.minStepDeg = number(time, "min_step_deg", {"crank-angle step", "deg"}, Sign::Positive, t.minStepDeg);
+    if (t.maxStepDeg > 10.0)
+        time.fail("max_step_deg", fmt::format("expected at most 10 deg, got {:g}", t.maxStepDeg));
+    if (!(t.maxStepDeg >= t.minStepDeg))
+        time.fail(
+            time.has("max_step_deg") ? "max_step_deg" : "min_step_deg",
+            fmt::format("expected max_step_deg ({:g}) >= min_step_deg ({:g})", t.maxStepDeg, t.minStepDeg));
+    t.lateralTolerance =
+        number(time, "lateral_tolerance", {"length", "m"}, Sign::Positive, t.lateralTolerance);
+    if (time.has("tilt_tolerance_deg"))
+        t.tiltTolerance = number(time, "tilt_tolerance_deg", {"angle", "deg"}, Sign::Positive, 0.0) * kDeg;
+    t.maxCycles = integer(time, "max_cycles", 1, 1000, t.maxCycles, "cycles");
+    t.periodicityTolerance =
+        number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, t.periodicityTolerance);
+}
+
+void readCoupling(const YamlSection& coupling, CouplingSpec& k) {
+    k.tolerance =
+        number(coupling, "tolerance", {"relative tolerance", ""}, Sign::Positive, k.tolerance);
+    if (!(k.tolerance < 1.0))
+        coupling.fail("tolerance",
+                      fmt::format("expected a relative tolerance below 1, got {:g}", k.tolerance));
+    k.maxIterations = integer(coupling, "max_iterations", 1, 10000, k.maxIterations, "iterations");
+    k.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0
+                                  ? CouplingAcceleration::IqnIls
+                                  : CouplingAcceleration::Aitken;
+    k.method = choice(coupling, "method", {"newton", "partitioned"}, 0) == 0 ? CouplingMethod::Newton
+                                                                                      : CouplingMethod::Partitioned;
+    // Default: the whole film thickness's rate with the Newton method (the partitioned iteration
+    // cannot carry it; docs/coupling.md section 3).
+    k.elasticSqueeze =
+        boolean(coupling, "elastic_squeeze", k.method == CouplingMethod::Newton);
+    if (k.elasticSqueeze && k.method == CouplingMethod::Partitioned)
+        coupling.fail("elastic_squeeze",
+                      "the elastic deformation rate in the squeeze term needs coupling.method: newton (the partitioned "
+                      "iteration's gain grows as 1/time step and does not converge with it; docs/coupling.md section 3)");
+}
+
+void readOutput(const YamlSection& output, const YamlSource& ctx, OutputSpec& o) {
+    const fs::path dir = ctx.resolve(text(output, "directory", "results", "a directory path"));
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        output.fail("directory", fmt::format("{} exists and is not a directory", dir.string()));
+    o.directory = dir.string();
+    o.vtkEveryDeg = number(output, "vtk_every_deg", {"crank-angle spacing (0 = no VTK)", "deg"}, Sign::NonNegative,
+                           o.vtkEveryDeg);
+    if (o.vtkEveryDeg > 720.0 || (o.vtkEveryDeg > 0.0 && o.vtkEveryDeg < 0.01))
+        output.fail("vtk_every_deg",
+                    fmt::format("expected 0 (no VTK) or 0.01 to 720 deg, got {:g}: a snapshot every 0.01 deg is already "
+                                "72 000 files per cycle, and snapshots closer than the time steps only shorten them",
+                                o.vtkEveryDeg));
+    o.modeShapes = boolean(output, "mode_shapes", o.modeShapes);
+}
+
+}  // namespace
+
+EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options) {
+    const fs::path absolute = fs::absolute(fs::path(path)).lexically_normal();
+    YamlSource ctx{path, absolute.parent_path()};
+
+    const YAML::Node root = loadCaseYaml(path, absolute);
     const YamlSection top(ctx, root, "",
                       {"name", "engine", "piston", "lubricant", "contact", "cylinder_pressure", "bodies", "grid",
                        "time", "coupling", "output", "liner", "thermal"});
@@ -444,27 +561,14 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     readEngine(engine, c.engine);
     readLiner(top, c.engine, c.liner);
     readThermal(top, options, c.thermal);
-    if ((c.liner.boreDistortion.format != BoreDistortionFormat::None || !c.thermal.file.empty()) &&
-        !engine.has("pin_tdc_depth"))
-        engine.missing("pin_tdc_depth",
-                       "the depth of the pin axis below the deck at TDC in m (required with liner.bore_distortion "
-                       "or thermal: it places the piston on the liner's tables)");
-    if (c.linerBody.model == BodyModel::Flexible && !engine.has("pin_tdc_depth"))
-        engine.missing("pin_tdc_depth",
-                       "the depth of the pin axis below the deck at TDC in m (required with a "
-                       "flexible liner: it places the piston on the liner mesh)");
+    requirePinTdcDepth(engine, c);
 
     if (!top.has("piston")) top.missing("piston", "the piston section (mass, pin_mass, inertia, skirt_top, ...)");
     const YamlSection piston(ctx, top.get("piston"), "piston",
                          {"mass", "pin_mass", "inertia", "cg_x", "cg_z", "skirt_top", "skirt_bottom", "clearance",
                           "skirt_half_angle_deg", "profile", "ovality"});
     readPiston(piston, c.engine, c.piston);
-    if ((engine.has("pin_tdc_depth") || c.linerBody.model == BodyModel::Flexible) &&
-        !(c.engine.pinTdcDepth > c.piston.skirtTop))
-        engine.fail("pin_tdc_depth",
-                    fmt::format("at TDC the skirt top (piston.skirt_top = {:g} m above the pin) would stand above the "
-                                "deck: pin_tdc_depth must exceed it, got {:g} m",
-                                c.piston.skirtTop, c.engine.pinTdcDepth));
+    requireSkirtBelowDeck(engine, c);
 
     const YamlSection lubricant(ctx, top.get("lubricant"), "lubricant",
                             {"viscosity", "density", "barus_alpha", "cavitation_pressure"});
@@ -477,93 +581,21 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
          "coating_youngs_modulus", "coating_poisson_ratio", "hard_contact_stiffness"});
     readContact(contact, c.contact);
 
-    {
-        const std::string csv =
-            text(top, "cylinder_pressure", "",
-                 "the path of the cylinder-pressure CSV (crank angle in deg, pressure in Pa)", true);
-        const fs::path resolved = ctx.resolve(csv);
-        c.cylinderPressureFile = resolved.string();
-        try {
-            c.cylinderPressure = readPressureTable(c.cylinderPressureFile);
-        } catch (const std::exception& e) {
-            top.fail("cylinder_pressure", e.what());
-        }
-    }
+    readCylinderPressure(top, ctx, c);
 
     const YamlSection grid(ctx, top.get("grid"), "grid", {"axial_nodes", "circumferential_nodes"});
-    c.grid.axialNodes = integer(grid, "axial_nodes", 3, 100000, c.grid.axialNodes, "nodes");
-    c.grid.circumferentialNodes = integer(grid, "circumferential_nodes", 8, 100000, c.grid.circumferentialNodes, "nodes");
-    {
-        // Each skirt panel (2 × half angle wide) must hold at least 3 grid columns.
-        const double spacing = 2 * kPi / c.grid.circumferentialNodes;
-        const double halfAngle = std::min(c.piston.skirtHalfAngle, kPi / 2);
-        if (2 * halfAngle / spacing < 2.0)
-            grid.fail("circumferential_nodes",
-                      fmt::format("{} nodes around the circumference leave fewer than 3 across a skirt panel of {:g} "
-                                  "deg; use at least {}",
-                                  c.grid.circumferentialNodes, 2 * halfAngle / kDeg,
-                                  static_cast<int>(std::ceil(2.0 * 2 * kPi / (2 * halfAngle)))));
-    }
+    readGrid(grid, c.piston, c.grid);
 
     const YamlSection time(ctx, top.get("time"), "time",
                        {"start_deg", "max_step_deg", "min_step_deg", "lateral_tolerance", "tilt_tolerance_deg",
                         "max_cycles", "periodicity_tolerance"});
-    c.time.startDeg = number(time, "start_deg", {"crank angle", "deg"}, Sign::NonNegative, c.time.startDeg);
-    if (!(c.time.startDeg < 720.0))
-        time.fail("start_deg", fmt::format("expected a crank angle in [0, 720) deg, got {:g}", c.time.startDeg));
-    c.time.maxStepDeg = number(time, "max_step_deg", {"crank-angle step", "deg"}, Sign::Positive, c.time.maxStepDeg);
-    c.time.minStepDeg = number(time, "min_step_deg", {"crank-angle step", "deg"}, Sign::Positive, c.time.minStepDeg);
-    if (c.time.maxStepDeg > 10.0)
-        time.fail("max_step_deg", fmt::format("expected at most 10 deg, got {:g}", c.time.maxStepDeg));
-    if (!(c.time.maxStepDeg >= c.time.minStepDeg))
-        time.fail(
-            time.has("max_step_deg") ? "max_step_deg" : "min_step_deg",
-            fmt::format("expected max_step_deg ({:g}) >= min_step_deg ({:g})", c.time.maxStepDeg, c.time.minStepDeg));
-    c.time.lateralTolerance =
-        number(time, "lateral_tolerance", {"length", "m"}, Sign::Positive, c.time.lateralTolerance);
-    if (time.has("tilt_tolerance_deg"))
-        c.time.tiltTolerance = number(time, "tilt_tolerance_deg", {"angle", "deg"}, Sign::Positive, 0.0) * kDeg;
-    c.time.maxCycles = integer(time, "max_cycles", 1, 1000, c.time.maxCycles, "cycles");
-    c.time.periodicityTolerance =
-        number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, c.time.periodicityTolerance);
+    readTime(time, c.time);
 
     const YamlSection coupling(ctx, top.get("coupling"), "coupling", {"tolerance", "max_iterations", "method", "acceleration", "elastic_squeeze"});
-    c.coupling.tolerance =
-        number(coupling, "tolerance", {"relative tolerance", ""}, Sign::Positive, c.coupling.tolerance);
-    if (!(c.coupling.tolerance < 1.0))
-        coupling.fail("tolerance",
-                      fmt::format("expected a relative tolerance below 1, got {:g}", c.coupling.tolerance));
-    c.coupling.maxIterations = integer(coupling, "max_iterations", 1, 10000, c.coupling.maxIterations, "iterations");
-    c.coupling.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0
-                                  ? CouplingAcceleration::IqnIls
-                                  : CouplingAcceleration::Aitken;
-    c.coupling.method = choice(coupling, "method", {"newton", "partitioned"}, 0) == 0 ? CouplingMethod::Newton
-                                                                                      : CouplingMethod::Partitioned;
-    // Default: the whole film thickness's rate with the Newton method (the partitioned iteration
-    // cannot carry it; docs/coupling.md section 3).
-    c.coupling.elasticSqueeze =
-        boolean(coupling, "elastic_squeeze", c.coupling.method == CouplingMethod::Newton);
-    if (c.coupling.elasticSqueeze && c.coupling.method == CouplingMethod::Partitioned)
-        coupling.fail("elastic_squeeze",
-                      "the elastic deformation rate in the squeeze term needs coupling.method: newton (the partitioned "
-                      "iteration's gain grows as 1/time step and does not converge with it; docs/coupling.md section 3)");
+    readCoupling(coupling, c.coupling);
 
     const YamlSection output(ctx, top.get("output"), "output", {"directory", "vtk_every_deg", "mode_shapes"});
-    {
-        const fs::path dir = ctx.resolve(text(output, "directory", "results", "a directory path"));
-        std::error_code ec;
-        if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-            output.fail("directory", fmt::format("{} exists and is not a directory", dir.string()));
-        c.output.directory = dir.string();
-    }
-    c.output.vtkEveryDeg = number(output, "vtk_every_deg", {"crank-angle spacing (0 = no VTK)", "deg"},
-                                  Sign::NonNegative, c.output.vtkEveryDeg);
-    if (c.output.vtkEveryDeg > 720.0 || (c.output.vtkEveryDeg > 0.0 && c.output.vtkEveryDeg < 0.01))
-        output.fail("vtk_every_deg",
-                    fmt::format("expected 0 (no VTK) or 0.01 to 720 deg, got {:g}: a snapshot every 0.01 deg is already "
-                                "72 000 files per cycle, and snapshots closer than the time steps only shorten them",
-                                c.output.vtkEveryDeg));
-    c.output.modeShapes = boolean(output, "mode_shapes", c.output.modeShapes);
+    readOutput(output, ctx, c.output);
     return c;
 }
 
