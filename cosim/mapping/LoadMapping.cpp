@@ -111,6 +111,17 @@ typename fem::Shape<T>::Values shape(double xi, double eta) {
     return fem::Shape<T>::N(Eigen::Vector3d(xi, eta, 0.0));
 }
 
+// A surface triangle and its (z, θ) image: θ unwrapped relative to vertex 0 (seam at ±π), the
+// affine map ref → image (J, its inverse) and the image's extent.
+template <int kN>
+struct TriangleImage {
+    Eigen::Matrix<double, 3, kN> X;  // vertices (and mid-edge nodes) in space
+    std::array<int, kN> node{};
+    std::array<Point, kN> P;         // their images (z − axialOffset, θ)
+    Eigen::Matrix2d J, Jinv;
+    double det = 0.0, zLo = 0.0, zHi = 0.0, tLo = 0.0, tHi = 0.0;
+};
+
 struct Setup {
     const fem::Mesh& mesh;
     const fem::BoundarySurface& surf;
@@ -123,158 +134,183 @@ struct Setup {
     std::vector<Eigen::Triplet<double>>* circShear = nullptr;      // τ_θ e_θ, when requested
     double zMin = std::numeric_limits<double>::infinity();
     double zMax = -std::numeric_limits<double>::infinity();
+    double facetNum = 0.0, facetDen = 0.0;
 
     template <fem::ElementType T>
     void run();
+    // The stages of run, per surface triangle k.
+    template <fem::ElementType T>
+    TriangleImage<fem::Shape<T>::kNodes> image(std::size_t k);
+    /// Faceting: ∫ n_out dA of the curved FE triangle vs the cylinder over the same image.
+    template <fem::ElementType T>
+    void faceting(const TriangleImage<fem::Shape<T>::kNodes>& im, std::size_t k);
+    /// The grid cells overlapped by the image: rows by bisection, columns per periodic shift.
+    template <fem::ElementType T>
+    void overlappedCells(const TriangleImage<fem::Shape<T>::kNodes>& im);
+    /// The load mapping's entries of one piece of the image inside grid cell (i, c) (θ from tc0).
+    template <fem::ElementType T>
+    void addPiece(const TriangleImage<fem::Shape<T>::kNodes>& im, const Polygon& piece, int i, int c, double tc0);
 };
 
 template <fem::ElementType T>
-void Setup::run() {
+TriangleImage<fem::Shape<T>::kNodes> Setup::image(std::size_t k) {
     constexpr int kN = fem::Shape<T>::kNodes;
+    TriangleImage<kN> im;
+    const fem::Index t = surf.triangles()[k];
+    for (int a = 0; a < kN; ++a) {
+        im.node[static_cast<std::size_t>(a)] = mesh.surface.nodes(a, t);
+        im.X.col(a) = mesh.nodes.col(mesh.surface.nodes(a, t));
+    }
+    const auto& X = im.X;
+    auto& P = im.P;
+    const double ref = std::atan2(X(1, 0), X(0, 0));
+    for (int a = 0; a < kN; ++a) {
+        double th = std::atan2(X(1, a), X(0, a));
+        th += 2.0 * kPi * std::round((ref - th) / (2.0 * kPi));
+        P[static_cast<std::size_t>(a)] = Point(X(2, a) - opt.axialOffset, th);
+    }
+    im.J.col(0) = P[1] - P[0];
+    im.J.col(1) = P[2] - P[0];
+    im.det = im.J.determinant();
+    im.tLo = std::min({P[0](1), P[1](1), P[2](1)});
+    im.tHi = std::max({P[0](1), P[1](1), P[2](1)});
+    if (im.tHi - im.tLo >= kPi)
+        throw std::runtime_error("triangle " + std::to_string(mesh.surface.tags[t]) + " of surface '" + surf.name() +
+                                 "' spans half a turn or more");
+    if (std::abs(im.det) <= 1e-14 * (im.J.col(0).norm() * im.J.col(1).norm()))
+        throw std::invalid_argument("triangle " + std::to_string(mesh.surface.tags[t]) + " of surface '" + surf.name() +
+                                    "' has a degenerate (z, θ) image: the surface is not a "
+                                    "cylinder about z there");
+    im.Jinv = im.J.inverse();
+    im.zLo = std::min({P[0](0), P[1](0), P[2](0)});
+    im.zHi = std::max({P[0](0), P[1](0), P[2](0)});
+    zMin = std::min(zMin, im.zLo);
+    zMax = std::max(zMax, im.zHi);
+    if constexpr (kN == 6)
+        for (int e = 0; e < 3; ++e) {
+            const Point mid = 0.5 * (P[static_cast<std::size_t>(fem::kTri6Edges[e][0])] +
+                                     P[static_cast<std::size_t>(fem::kTri6Edges[e][1])]);
+            const Point d = P[static_cast<std::size_t>(3 + e)] - mid;
+            stats.midNodeOffset = std::max(stats.midNodeOffset, std::hypot(d(0), stats.surfaceRadius * d(1)));
+        }
+    return im;
+}
+
+template <fem::ElementType T>
+void Setup::faceting(const TriangleImage<fem::Shape<T>::kNodes>& im, std::size_t k) {
+    Eigen::Vector3d fe = Eigen::Vector3d::Zero(), cyl = Eigen::Vector3d::Zero();
+    const double s = surf.orientation()[k];
+    const double sigma = stats.outward;
+    double area = 0.0;
+    for (const RulePoint& q : rule) {
+        const Eigen::Matrix<double, 3, 2> tg = im.X * fem::Shape<T>::dN(Eigen::Vector3d(q.xi, q.eta, 0.0));
+        fe += q.weight * s * tg.col(0).cross(tg.col(1));
+        const Point x = im.P[0] + im.J * Point(q.xi, q.eta);
+        const double w = q.weight * std::abs(im.det) * stats.surfaceRadius;
+        cyl += w * sigma * Eigen::Vector3d(std::cos(x(1)), std::sin(x(1)), 0.0);
+        area += w;
+    }
+    facetNum += (fe - cyl).norm();
+    facetDen += area;
+}
+
+template <fem::ElementType T>
+void Setup::overlappedCells(const TriangleImage<fem::Shape<T>::kNodes>& im) {
     const lube::FilmGrid& g = grid;
-    const double R = g.radius();
     const double dTh = g.dTheta();
     const double th0 = g.theta(0);
     const int nz = g.nAxial(), nt = g.nTheta();
     const int nCellsTheta = g.periodic() ? nt : nt - 1;
     const std::vector<double>& zg = g.axial();
-    const double sigma = stats.outward;
+    const int iLo = std::max(0, static_cast<int>(std::upper_bound(zg.begin(), zg.end(), im.zLo) - zg.begin()) - 1);
+    const int iHi = std::min(nz - 2, static_cast<int>(std::upper_bound(zg.begin(), zg.end(), im.zHi) - zg.begin()) - 1);
+    if (iLo > iHi) return;
+    const Polygon tri = {im.P[0], im.P[1], im.P[2]};
+    // Periodic grids: one shift (cells indexed modulo nθ). Open arcs: the image may sit one
+    // turn away from the arc, or straddle its ends when the arc is a full turn.
+    const int shiftLo = g.periodic() ? 0 : -1, shiftHi = g.periodic() ? 0 : 1;
+    for (int sh = shiftLo; sh <= shiftHi; ++sh) {
+        const double off = 2.0 * kPi * sh;
+        int cLo = static_cast<int>(std::floor((im.tLo + off - th0) / dTh));
+        int cHi = static_cast<int>(std::floor((im.tHi + off - th0) / dTh));
+        if (!g.periodic()) {
+            cLo = std::max(cLo, 0);
+            cHi = std::min(cHi, nCellsTheta - 1);
+        }
+        for (int i = iLo; i <= iHi; ++i) {
+            const double z0 = zg[static_cast<std::size_t>(i)], z1 = zg[static_cast<std::size_t>(i + 1)];
+            Polygon strip = clip(clip(tri, 0, z0, true), 0, z1, false);
+            if (strip.size() < 3) continue;
+            for (int c = cLo; c <= cHi; ++c) {
+                // Cell c spans [θ0 + c Δθ, θ0 + (c+1) Δθ] in the image's unwrapped θ − off.
+                const double tc0 = th0 + c * dTh - off, tc1 = tc0 + dTh;
+                const Polygon piece = clip(clip(strip, 1, tc0, true), 1, tc1, false);
+                if (piece.size() < 3) continue;
+                const double pieceArea = std::abs(polygonArea(piece));
+                if (pieceArea <= 1e-14 * (z1 - z0) * dTh) continue;
+                ++stats.fragments;
+                stats.coveredArea += g.radius() * pieceArea;
+                addPiece<T>(im, piece, i, c, tc0);
+            }
+        }
+    }
+}
 
-    double facetNum = 0.0, facetDen = 0.0;
+template <fem::ElementType T>
+void Setup::addPiece(const TriangleImage<fem::Shape<T>::kNodes>& im, const Polygon& piece, int i, int c, double tc0) {
+    constexpr int kN = fem::Shape<T>::kNodes;
+    const lube::FilmGrid& g = grid;
+    const double R = g.radius(), dTh = g.dTheta(), sigma = stats.outward;
+    const int nt = g.nTheta();
+    const double z0 = g.axial()[static_cast<std::size_t>(i)], z1 = g.axial()[static_cast<std::size_t>(i + 1)];
+    // block(a, 2 l + d): ∫ N_a φ_l n_d over the piece, φ_l the cell's bilinears,
+    // (n_0, n_1) = (cos θ, sin θ); block(a, 8 + l): ∫ N_a φ_l (for τ_z).
+    Eigen::Matrix<double, kN, 12> block = Eigen::Matrix<double, kN, 12>::Zero();
+    for (std::size_t f = 1; f + 1 < piece.size(); ++f) {
+        const Point& A = piece[0];
+        const Point e1 = piece[f] - A, e2 = piece[f + 1] - A;
+        const double jac = std::abs(e1(0) * e2(1) - e1(1) * e2(0));
+        for (const RulePoint& q : rule) {
+            const Point x = A + q.xi * e1 + q.eta * e2;
+            const Point ref2 = im.Jinv * (x - im.P[0]);
+            const auto N = shape<T>(ref2(0), ref2(1));
+            const double s = (x(0) - z0) / (z1 - z0), r = (x(1) - tc0) / dTh;
+            const double phi[4] = {(1 - s) * (1 - r), (1 - s) * r, s * (1 - r), s * r};
+            const double w = q.weight * jac * R;
+            const double cs = w * std::cos(x(1)), sn = w * std::sin(x(1));
+            for (int l = 0; l < 4; ++l) {
+                block.col(2 * l) += (phi[l] * cs) * N;
+                block.col(2 * l + 1) += (phi[l] * sn) * N;
+                if (axialShear) block.col(8 + l) += (phi[l] * w) * N;
+            }
+        }
+    }
+    // Grid nodes of the cell: (i, c), (i, c+1), (i+1, c), (i+1, c+1).
+    const int jc0 = ((c % nt) + nt) % nt, jc1 = ((c + 1) % nt + nt) % nt;
+    const int cols[4] = {g.index(i, jc0), g.index(i, jc1), g.index(i + 1, jc0), g.index(i + 1, jc1)};
+    // F = −∫ p N n_out dA, n_out = σ (cos θ, sin θ, 0).
+    for (int a = 0; a < kN; ++a)
+        for (int l = 0; l < 4; ++l)
+            for (int d = 0; d < 2; ++d)
+                triplets.emplace_back(3 * im.node[static_cast<std::size_t>(a)] + d, cols[l], -sigma * block(a, 2 * l + d));
+    // Shear: F = ∫ τ_z N e_z dA and F = ∫ τ_θ N (−sin θ, cos θ, 0) dA.
+    if (axialShear)
+        for (int a = 0; a < kN; ++a)
+            for (int l = 0; l < 4; ++l) {
+                const int n3 = 3 * im.node[static_cast<std::size_t>(a)];
+                axialShear->emplace_back(n3 + 2, cols[l], block(a, 8 + l));
+                circShear->emplace_back(n3, cols[l], -block(a, 2 * l + 1));
+                circShear->emplace_back(n3 + 1, cols[l], block(a, 2 * l));
+            }
+}
+
+template <fem::ElementType T>
+void Setup::run() {
+    facetNum = facetDen = 0.0;
     for (std::size_t k = 0; k < surf.triangles().size(); ++k) {
-        const fem::Index t = surf.triangles()[k];
-        Eigen::Matrix<double, 3, kN> X;
-        std::array<int, kN> node{};
-        for (int a = 0; a < kN; ++a) {
-            node[static_cast<std::size_t>(a)] = mesh.surface.nodes(a, t);
-            X.col(a) = mesh.nodes.col(mesh.surface.nodes(a, t));
-        }
-        // Parameter images, θ unwrapped relative to vertex 0 (seam at ±π).
-        std::array<Point, kN> P;
-        const double ref = std::atan2(X(1, 0), X(0, 0));
-        for (int a = 0; a < kN; ++a) {
-            double th = std::atan2(X(1, a), X(0, a));
-            th += 2.0 * kPi * std::round((ref - th) / (2.0 * kPi));
-            P[static_cast<std::size_t>(a)] = Point(X(2, a) - opt.axialOffset, th);
-        }
-        const Point& v0 = P[0];
-        Eigen::Matrix2d J;
-        J.col(0) = P[1] - v0;
-        J.col(1) = P[2] - v0;
-        const double det = J.determinant();
-        double tLo = std::min({P[0](1), P[1](1), P[2](1)}), tHi = std::max({P[0](1), P[1](1), P[2](1)});
-        if (tHi - tLo >= kPi)
-            throw std::runtime_error("triangle " + std::to_string(mesh.surface.tags[t]) + " of surface '" + surf.name() +
-                                     "' spans half a turn or more");
-        if (std::abs(det) <= 1e-14 * (J.col(0).norm() * J.col(1).norm()))
-            throw std::invalid_argument("triangle " + std::to_string(mesh.surface.tags[t]) + " of surface '" + surf.name() +
-                                        "' has a degenerate (z, θ) image: the surface is not a "
-                                        "cylinder about z there");
-        const Eigen::Matrix2d Jinv = J.inverse();
-        const double zLo = std::min({P[0](0), P[1](0), P[2](0)});
-        const double zHi = std::max({P[0](0), P[1](0), P[2](0)});
-        zMin = std::min(zMin, zLo);
-        zMax = std::max(zMax, zHi);
-        if constexpr (kN == 6)
-            for (int e = 0; e < 3; ++e) {
-                const Point mid = 0.5 * (P[static_cast<std::size_t>(fem::kTri6Edges[e][0])] +
-                                         P[static_cast<std::size_t>(fem::kTri6Edges[e][1])]);
-                const Point d = P[static_cast<std::size_t>(3 + e)] - mid;
-                stats.midNodeOffset =
-                    std::max(stats.midNodeOffset, std::hypot(d(0), stats.surfaceRadius * d(1)));
-            }
-
-        // Faceting: ∫ n_out dA of the curved FE triangle vs the cylinder over the same image.
-        {
-            Eigen::Vector3d fe = Eigen::Vector3d::Zero(), cyl = Eigen::Vector3d::Zero();
-            const double s = surf.orientation()[k];
-            double area = 0.0;
-            for (const RulePoint& q : rule) {
-                const Eigen::Matrix<double, 3, 2> tg =
-                    X * fem::Shape<T>::dN(Eigen::Vector3d(q.xi, q.eta, 0.0));
-                fe += q.weight * s * tg.col(0).cross(tg.col(1));
-                const Point x = v0 + J * Point(q.xi, q.eta);
-                const double w = q.weight * std::abs(det) * stats.surfaceRadius;
-                cyl += w * sigma * Eigen::Vector3d(std::cos(x(1)), std::sin(x(1)), 0.0);
-                area += w;
-            }
-            facetNum += (fe - cyl).norm();
-            facetDen += area;
-        }
-
-        // Grid cells overlapped by the image: rows by bisection, columns per periodic shift.
-        const int iLo = std::max(0, static_cast<int>(std::upper_bound(zg.begin(), zg.end(), zLo) - zg.begin()) - 1);
-        const int iHi = std::min(nz - 2, static_cast<int>(std::upper_bound(zg.begin(), zg.end(), zHi) - zg.begin()) - 1);
-        if (iLo > iHi) continue;
-        const Polygon tri = {P[0], P[1], P[2]};
-        // Periodic grids: one shift (cells indexed modulo nθ). Open arcs: the image may sit one
-        // turn away from the arc, or straddle its ends when the arc is a full turn.
-        const int shiftLo = g.periodic() ? 0 : -1, shiftHi = g.periodic() ? 0 : 1;
-        for (int sh = shiftLo; sh <= shiftHi; ++sh) {
-            const double off = 2.0 * kPi * sh;
-            int cLo = static_cast<int>(std::floor((tLo + off - th0) / dTh));
-            int cHi = static_cast<int>(std::floor((tHi + off - th0) / dTh));
-            if (!g.periodic()) {
-                cLo = std::max(cLo, 0);
-                cHi = std::min(cHi, nCellsTheta - 1);
-            }
-            for (int i = iLo; i <= iHi; ++i) {
-                const double z0 = zg[static_cast<std::size_t>(i)], z1 = zg[static_cast<std::size_t>(i + 1)];
-                Polygon strip = clip(clip(tri, 0, z0, true), 0, z1, false);
-                if (strip.size() < 3) continue;
-                for (int c = cLo; c <= cHi; ++c) {
-                    // Cell c spans [θ0 + c Δθ, θ0 + (c+1) Δθ] in the image's unwrapped θ − off.
-                    const double tc0 = th0 + c * dTh - off, tc1 = tc0 + dTh;
-                    const Polygon piece = clip(clip(strip, 1, tc0, true), 1, tc1, false);
-                    if (piece.size() < 3) continue;
-                    const double pieceArea = std::abs(polygonArea(piece));
-                    if (pieceArea <= 1e-14 * (z1 - z0) * dTh) continue;
-                    ++stats.fragments;
-                    stats.coveredArea += R * pieceArea;
-                    // block(a, 2 l + d): ∫ N_a φ_l n_d over the piece, φ_l the cell's bilinears,
-                    // (n_0, n_1) = (cos θ, sin θ); block(a, 8 + l): ∫ N_a φ_l (for τ_z).
-                    Eigen::Matrix<double, kN, 12> block = Eigen::Matrix<double, kN, 12>::Zero();
-                    for (std::size_t f = 1; f + 1 < piece.size(); ++f) {
-                        const Point& A = piece[0];
-                        const Point e1 = piece[f] - A, e2 = piece[f + 1] - A;
-                        const double jac = std::abs(e1(0) * e2(1) - e1(1) * e2(0));
-                        for (const RulePoint& q : rule) {
-                            const Point x = A + q.xi * e1 + q.eta * e2;
-                            const Point ref2 = Jinv * (x - v0);
-                            const auto N = shape<T>(ref2(0), ref2(1));
-                            const double s = (x(0) - z0) / (z1 - z0), r = (x(1) - tc0) / dTh;
-                            const double phi[4] = {(1 - s) * (1 - r), (1 - s) * r, s * (1 - r), s * r};
-                            const double w = q.weight * jac * R;
-                            const double cs = w * std::cos(x(1)), sn = w * std::sin(x(1));
-                            for (int l = 0; l < 4; ++l) {
-                                block.col(2 * l) += (phi[l] * cs) * N;
-                                block.col(2 * l + 1) += (phi[l] * sn) * N;
-                                if (axialShear) block.col(8 + l) += (phi[l] * w) * N;
-                            }
-                        }
-                    }
-                    // Grid nodes of the cell: (i, c), (i, c+1), (i+1, c), (i+1, c+1).
-                    const int jc0 = ((c % nt) + nt) % nt, jc1 = ((c + 1) % nt + nt) % nt;
-                    const int cols[4] = {g.index(i, jc0), g.index(i, jc1), g.index(i + 1, jc0),
-                                         g.index(i + 1, jc1)};
-                    // F = −∫ p N n_out dA, n_out = σ (cos θ, sin θ, 0).
-                    for (int a = 0; a < kN; ++a)
-                        for (int l = 0; l < 4; ++l)
-                            for (int d = 0; d < 2; ++d)
-                                triplets.emplace_back(3 * node[static_cast<std::size_t>(a)] + d, cols[l],
-                                                      -sigma * block(a, 2 * l + d));
-                    // Shear: F = ∫ τ_z N e_z dA and F = ∫ τ_θ N (−sin θ, cos θ, 0) dA.
-                    if (axialShear)
-                        for (int a = 0; a < kN; ++a)
-                            for (int l = 0; l < 4; ++l) {
-                                const int n3 = 3 * node[static_cast<std::size_t>(a)];
-                                axialShear->emplace_back(n3 + 2, cols[l], block(a, 8 + l));
-                                circShear->emplace_back(n3, cols[l], -block(a, 2 * l + 1));
-                                circShear->emplace_back(n3 + 1, cols[l], block(a, 2 * l));
-                            }
-                }
-            }
-        }
+        const auto im = image<T>(k);
+        faceting<T>(im, k);
+        overlappedCells<T>(im);
     }
     stats.facetingError = facetDen > 0.0 ? facetNum / facetDen : 0.0;
 }
