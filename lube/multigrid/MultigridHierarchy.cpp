@@ -52,6 +52,114 @@ void chooseLines(Level& L) {
 }  // namespace multigrid
 
 
+namespace {
+
+// The coarse level C of F (z halved if cz, θ halved if ct) and the prolongation weights of F's
+// rows and columns from C's.
+void coarsen(Level& F, Level& C, bool cz, bool ct) {
+    C.periodic = F.periodic;
+    std::vector<int> map;
+    if (cz) {
+        for (int i = 0; i < F.nz; i += 2) map.push_back(i);
+        if (map.back() != F.nz - 1) map.push_back(F.nz - 1);
+    } else {
+        for (int i = 0; i < F.nz; ++i) map.push_back(i);
+    }
+    C.nz = static_cast<int>(map.size());
+    for (int i : map) C.z.push_back(F.z[static_cast<std::size_t>(i)]);
+    C.nt = ct ? (F.periodic ? F.nt / 2 : (F.nt + 1) / 2) : F.nt;
+    const auto nzF = static_cast<std::size_t>(F.nz), ntF = static_cast<std::size_t>(F.nt);
+    F.pz0.assign(nzF, 0); F.pz1.assign(nzF, 0); F.wz0.assign(nzF, 1.0); F.wz1.assign(nzF, 0.0);
+    F.pt0.assign(ntF, 0); F.pt1.assign(ntF, 0); F.wt0.assign(ntF, 1.0); F.wt1.assign(ntF, 0.0);
+    for (int I = 0; I + 1 < C.nz; ++I) {
+        const int i0 = map[static_cast<std::size_t>(I)], i1 = map[static_cast<std::size_t>(I) + 1];
+        for (int i = i0; i <= i1; ++i) {
+            const auto si = static_cast<std::size_t>(i);
+            if (i == i1) { F.pz0[si] = F.pz1[si] = I + 1; F.wz0[si] = 1; F.wz1[si] = 0; continue; }
+            const double t = (F.z[si] - F.z[static_cast<std::size_t>(i0)]) /
+                             (F.z[static_cast<std::size_t>(i1)] - F.z[static_cast<std::size_t>(i0)]);
+            F.pz0[si] = I; F.pz1[si] = I + 1; F.wz0[si] = 1 - t; F.wz1[si] = t;
+        }
+    }
+    if (C.nz == 1) { F.pz0[0] = F.pz1[0] = 0; }
+    for (int j = 0; j < F.nt; ++j) {
+        const auto sj = static_cast<std::size_t>(j);
+        F.thetaHalved = ct;
+        if (!ct) { F.pt0[sj] = F.pt1[sj] = j; continue; }
+        if (j % 2 == 0) { F.pt0[sj] = F.pt1[sj] = j / 2; continue; }
+        F.pt0[sj] = j / 2;
+        F.pt1[sj] = (j / 2 + 1) % C.nt;
+        F.wt0[sj] = F.wt1[sj] = 0.5;
+    }
+}
+
+// A prolongation weight pair as slots −1, 0, +1 about the coarse node `first` (periodic: modulo
+// nPeriodic).
+Level::Rel prolongationSlots(int first, int p0, int p1, double w0, double w1, int nPeriodic) {
+    auto slot = [&](int p) {
+        int d = p - first;
+        if (nPeriodic > 0) {
+            if (d > 1) d -= nPeriodic;
+            else if (d < -1) d += nPeriodic;
+        }
+        return d + 1;
+    };
+    Level::Rel q{{slot(p0), slot(p1)}, {w0, w1}};
+    for (int m = 0; m < 2; ++m) {
+        if (q.w[m] == 0.0) q.r[m] = 1;  // unused slot, weight 0
+        if (q.r[m] < 0 || q.r[m] > 2)
+            throw std::logic_error("MultigridSolver: prolongation stencil wider than 3 coarse nodes");
+    }
+    return q;
+}
+
+// The prolongation of each fine row and column's 3 neighbours relative to its own coarse node.
+void prolongationRelations(Level& F, const Level& C) {
+    const auto nzF = static_cast<std::size_t>(F.nz), ntF = static_cast<std::size_t>(F.nt);
+    const auto rel = prolongationSlots;
+    F.zRel.resize(3 * nzF);
+    F.tRel.resize(3 * ntF);
+    for (int i = 0; i < F.nz; ++i)
+        for (int di = -1; di <= 1; ++di) {
+            const auto i2 = static_cast<std::size_t>(di < 0 ? F.im(i) : di > 0 ? F.ip(i) : i);
+            F.zRel[static_cast<std::size_t>(3 * i + di + 1)] =
+                rel(F.pz0[static_cast<std::size_t>(i)], F.pz0[i2], F.pz1[i2], F.wz0[i2], F.wz1[i2], 0);
+        }
+    for (int j = 0; j < F.nt; ++j)
+        for (int dj = -1; dj <= 1; ++dj) {
+            const auto j2 = static_cast<std::size_t>(dj < 0 ? F.jm(j) : dj > 0 ? F.jp(j) : j);
+            F.tRel[static_cast<std::size_t>(3 * j + dj + 1)] =
+                rel(F.pt0[static_cast<std::size_t>(j)], F.pt0[j2], F.pt1[j2], F.wt0[j2], F.wt1[j2],
+                    C.periodic ? C.nt : 0);
+        }
+}
+
+// The per-level arrays that are not arena slices, sized and reset.
+void resetLevelArrays(Level& L) {
+    const auto n = static_cast<std::size_t>(L.size());
+    L.free.assign(n, 0);
+    L.x.assign(n, 0.0);
+    L.f.resize(n);  // zeroed before each restriction (coarse), or the defect (fine)
+    L.r.resize(0);  // allocated by residualT (levels not smoothed by the fused z-line cycle)
+    L.q.resize(n);  // written before it is read (line eliminations)
+    for (auto* v : {&L.zm, &L.zw, &L.tm, &L.tw, &L.tl, &L.tu}) v->clear();  // on first use
+    for (auto* v : {&L.tAlpha, &L.tGamma, &L.tDen}) v->assign(static_cast<std::size_t>(L.nz), 0.0);
+    L.colOk.assign(static_cast<std::size_t>(L.nt), 0);
+    L.colFrom.assign(static_cast<std::size_t>(L.nt), 0);
+    L.colTo.assign(static_cast<std::size_t>(L.nt), L.nz - 1);
+    L.colLo.assign(static_cast<std::size_t>(L.nt), L.nz);  // empty ranges
+    L.colHi.assign(static_cast<std::size_t>(L.nt), -1);
+    L.jmv.resize(static_cast<std::size_t>(L.nt));
+    L.jpv.resize(static_cast<std::size_t>(L.nt));
+    for (int j = 0; j < L.nt; ++j) {
+        L.jmv[static_cast<std::size_t>(j)] = L.jm(j);
+        L.jpv[static_cast<std::size_t>(j)] = L.jp(j);
+    }
+    L.rowOk.assign(static_cast<std::size_t>(L.nz), 0);
+}
+
+}  // namespace
+
 void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
     levels.clear();
     Level L0;
@@ -68,74 +176,14 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
                                    : (F.nt % 2 == 1 && (F.nt + 1) / 2 >= 3);
         if (!cz && !ct) break;
         Level C;
-        C.periodic = F.periodic;
-        std::vector<int> map;
-        if (cz) {
-            for (int i = 0; i < F.nz; i += 2) map.push_back(i);
-            if (map.back() != F.nz - 1) map.push_back(F.nz - 1);
-        } else {
-            for (int i = 0; i < F.nz; ++i) map.push_back(i);
-        }
-        C.nz = static_cast<int>(map.size());
-        for (int i : map) C.z.push_back(F.z[static_cast<std::size_t>(i)]);
-        C.nt = ct ? (F.periodic ? F.nt / 2 : (F.nt + 1) / 2) : F.nt;
-        const auto nzF = static_cast<std::size_t>(F.nz), ntF = static_cast<std::size_t>(F.nt);
-        F.pz0.assign(nzF, 0); F.pz1.assign(nzF, 0); F.wz0.assign(nzF, 1.0); F.wz1.assign(nzF, 0.0);
-        F.pt0.assign(ntF, 0); F.pt1.assign(ntF, 0); F.wt0.assign(ntF, 1.0); F.wt1.assign(ntF, 0.0);
-        for (int I = 0; I + 1 < C.nz; ++I) {
-            const int i0 = map[static_cast<std::size_t>(I)], i1 = map[static_cast<std::size_t>(I) + 1];
-            for (int i = i0; i <= i1; ++i) {
-                const auto si = static_cast<std::size_t>(i);
-                if (i == i1) { F.pz0[si] = F.pz1[si] = I + 1; F.wz0[si] = 1; F.wz1[si] = 0; continue; }
-                const double t = (F.z[si] - F.z[static_cast<std::size_t>(i0)]) /
-                                 (F.z[static_cast<std::size_t>(i1)] - F.z[static_cast<std::size_t>(i0)]);
-                F.pz0[si] = I; F.pz1[si] = I + 1; F.wz0[si] = 1 - t; F.wz1[si] = t;
-            }
-        }
-        if (C.nz == 1) { F.pz0[0] = F.pz1[0] = 0; }
-        for (int j = 0; j < F.nt; ++j) {
-            const auto sj = static_cast<std::size_t>(j);
-            F.thetaHalved = ct;
-            if (!ct) { F.pt0[sj] = F.pt1[sj] = j; continue; }
-            if (j % 2 == 0) { F.pt0[sj] = F.pt1[sj] = j / 2; continue; }
-            F.pt0[sj] = j / 2;
-            F.pt1[sj] = (j / 2 + 1) % C.nt;
-            F.wt0[sj] = F.wt1[sj] = 0.5;
-        }
-        auto rel = [](int first, int p0, int p1, double w0, double w1, int nPeriodic) {
-            auto slot = [&](int p) {
-                int d = p - first;
-                if (nPeriodic > 0) {
-                    if (d > 1) d -= nPeriodic;
-                    else if (d < -1) d += nPeriodic;
-                }
-                return d + 1;
-            };
-            Level::Rel q{{slot(p0), slot(p1)}, {w0, w1}};
-            for (int m = 0; m < 2; ++m) {
-                if (q.w[m] == 0.0) q.r[m] = 1;  // unused slot, weight 0
-                if (q.r[m] < 0 || q.r[m] > 2)
-                    throw std::logic_error("MultigridSolver: prolongation stencil wider than 3 coarse nodes");
-            }
-            return q;
-        };
-        F.zRel.resize(3 * nzF);
-        F.tRel.resize(3 * ntF);
-        for (int i = 0; i < F.nz; ++i)
-            for (int di = -1; di <= 1; ++di) {
-                const auto i2 = static_cast<std::size_t>(di < 0 ? F.im(i) : di > 0 ? F.ip(i) : i);
-                F.zRel[static_cast<std::size_t>(3 * i + di + 1)] =
-                    rel(F.pz0[static_cast<std::size_t>(i)], F.pz0[i2], F.pz1[i2], F.wz0[i2], F.wz1[i2], 0);
-            }
-        for (int j = 0; j < F.nt; ++j)
-            for (int dj = -1; dj <= 1; ++dj) {
-                const auto j2 = static_cast<std::size_t>(dj < 0 ? F.jm(j) : dj > 0 ? F.jp(j) : j);
-                F.tRel[static_cast<std::size_t>(3 * j + dj + 1)] =
-                    rel(F.pt0[static_cast<std::size_t>(j)], F.pt0[j2], F.pt1[j2], F.wt0[j2], F.wt1[j2],
-                        C.periodic ? C.nt : 0);
-            }
+        coarsen(F, C, cz, ct);
+        prolongationRelations(F, C);
         levels.push_back(std::move(C));
     }
+    allocateArena();
+}
+
+void MultigridSolver::Hierarchy::allocateArena() {
     // Arena slices, each a whole number of cache lines: per level x, f, q, zm, zw and the Galerkin
     // stencil (9 per node, coarse levels); dir and invDiag for the finest. The θ-line factors and
     // the residual of unfused levels (rare) get their own storage on first use.
@@ -163,25 +211,7 @@ void MultigridSolver::Hierarchy::buildGeometry(const FilmGrid& g) {
             L.own.resize(9 * n);  // filled by the first (full) Galerkin product
             L.a = L.own.data();
         }
-        L.free.assign(n, 0);
-        L.x.assign(n, 0.0);
-        L.f.resize(n);  // zeroed before each restriction (coarse), or the defect (fine)
-        L.r.resize(0);  // allocated by residualT (levels not smoothed by the fused z-line cycle)
-        L.q.resize(n);  // written before it is read (line eliminations)
-        for (auto* v : {&L.zm, &L.zw, &L.tm, &L.tw, &L.tl, &L.tu}) v->clear();  // on first use
-        for (auto* v : {&L.tAlpha, &L.tGamma, &L.tDen}) v->assign(static_cast<std::size_t>(L.nz), 0.0);
-        L.colOk.assign(static_cast<std::size_t>(L.nt), 0);
-        L.colFrom.assign(static_cast<std::size_t>(L.nt), 0);
-        L.colTo.assign(static_cast<std::size_t>(L.nt), L.nz - 1);
-        L.colLo.assign(static_cast<std::size_t>(L.nt), L.nz);  // empty ranges
-        L.colHi.assign(static_cast<std::size_t>(L.nt), -1);
-        L.jmv.resize(static_cast<std::size_t>(L.nt));
-        L.jpv.resize(static_cast<std::size_t>(L.nt));
-        for (int j = 0; j < L.nt; ++j) {
-            L.jmv[static_cast<std::size_t>(j)] = L.jm(j);
-            L.jpv[static_cast<std::size_t>(j)] = L.jp(j);
-        }
-        L.rowOk.assign(static_cast<std::size_t>(L.nz), 0);
+        resetLevelArrays(L);
         maxLine = std::max({maxLine, static_cast<std::size_t>(L.nz), static_cast<std::size_t>(L.nt)});
     }
     for (auto* v : {&lo, &d, &up, &rhs}) v->assign(maxLine, 0.0);

@@ -44,6 +44,9 @@ struct MultigridSolver::Hierarchy {
     void markNear(int i);
 
     void buildGeometry(const FilmGrid& g);
+    /// The levels' arrays: arena slices (x, f, q, zm, zw, the Galerkin stencils, dir, invDiag)
+    /// and the per-level bookkeeping, sized and reset.
+    void allocateArena();
     void extractFine(const ReynoldsSystem& sys);
     // The outer iteration's stages (MultigridSolver.cpp): the starting point (returns the
     // pressure scale of the columns without Film nodes), the fused nonlinear pass (returns the
