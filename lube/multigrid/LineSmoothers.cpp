@@ -10,6 +10,124 @@ namespace flexehd::lube {
 using namespace multigrid;
 
 
+namespace {
+
+// First and last free row of every column into a, b (nz, −1: none), row by row (contiguous,
+// branch-free).
+void freeRowRanges(const Level& L, int* a, int* b) {
+    const int nt = L.nt, nz = L.nz;
+    const char* fr = L.free.data();
+    std::fill_n(a, nt, nz);
+    std::fill_n(b, nt, -1);
+    for (int i = 0; i < nz; ++i) {
+        const char* f = fr + i * nt;
+        for (int j = 0; j < nt; ++j) {
+            a[j] = f[j] && a[j] == nz ? i : a[j];
+            b[j] = f[j] ? i : b[j];
+        }
+    }
+}
+
+// The stale columns' valid factor rows (from, to) and, on fused levels (ranged), their new free
+// row ranges [a, b] from freeRowRanges, with x and q cleared where the sweeps read them outside.
+void updateColumnRanges(Level& L, const std::vector<int>& down, const std::vector<int>& up, bool ranged,
+                        const int* rangeLo, const int* rangeHi) {
+    const int nt = L.nt, nz = L.nz;
+    int* from = L.colFrom.data();
+    int* to = L.colTo.data();
+    int* lo = L.colLo.data();
+    int* hi = L.colHi.data();
+    double* x = L.x.data();
+    double* q = L.q.data();
+    for (const std::vector<int>* v : {&down, &up})
+        for (const int j : *v) {
+            // Rows outside the old range were not factored: a top-down factor is valid only up
+            // to the old last free row, a bottom-up one down to the old first (empty range:
+            // lo = nz, hi = −1, nothing valid).
+            from[j] = std::min(from[j], hi[j] + 1);
+            to[j] = std::max(to[j], lo[j] - 1);
+            if (!ranged) {
+                lo[j] = 0;
+                hi[j] = nz - 1;
+                continue;
+            }
+            // New range (from freeRowRanges). The sweeps skip the rows outside, and read
+            // them as neighbours (x) and as the eliminated row next to the range (q): x = 0 on the
+            // rows that leave it (outside the old range it is 0 already), q = 0 next to it.
+            const int a = rangeLo[j], b = rangeHi[j];
+            for (int i = lo[j]; i <= hi[j]; ++i)
+                if (i < a || i > b) x[i * nt + j] = 0.0;
+            if (a > 0 && a < nz) q[(a - 1) * nt + j] = 0.0;
+            if (b >= 0 && b + 1 < nz) q[(b + 1) * nt + j] = 0.0;
+            lo[j] = a;
+            hi[j] = b;
+        }
+}
+
+// The Thomas factors of the stale columns, row by row (contiguous memory) from the first changed
+// row: top down for `down`, bottom up for `up`.
+template <bool Five>
+void factorColumns(Level& L, const std::vector<int>& down, const std::vector<int>& up) {
+    using St = Stencil<Five>;
+    const int nt = L.nt, nz = L.nz;
+    double* zm = L.zm.data();
+    double* zw = L.zw.data();
+    const char* fr = L.free.data();
+    const int* from = L.colFrom.data();
+    const int* to = L.colTo.data();
+    const int* lo = L.colLo.data();
+    const int* hi = L.colHi.data();
+    for (int i = 0; i < nz; ++i)
+        for (const int j : down) {
+            if (i < from[j] || i < lo[j] || i > hi[j]) continue;
+            const auto sk = static_cast<std::size_t>(i * nt + j);
+            if (!fr[sk]) {
+                zm[sk] = zw[sk] = 0.0;
+                continue;
+            }
+            const auto c = stencilAt<Five>(L.a, nz, nt, i, j);
+            const double m = safeInverse(c[St::C] - (i > lo[j] ? c[St::S] * zw[sk - static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
+            zm[sk] = m;
+            zw[sk] = c[St::N] * m;
+        }
+    for (int i = nz - 1; i >= 0; --i)
+        for (const int j : up) {
+            if (i > to[j] || i < lo[j] || i > hi[j]) continue;
+            const auto sk = static_cast<std::size_t>(i * nt + j);
+            if (!fr[sk]) {
+                zm[sk] = zw[sk] = 0.0;
+                continue;
+            }
+            const auto c = stencilAt<Five>(L.a, nz, nt, i, j);
+            const double m = safeInverse(c[St::C] - (i < hi[j] ? c[St::N] * zw[sk + static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
+            zm[sk] = m;
+            zw[sk] = c[St::S] * m;
+        }
+}
+
+// Runs [first, end) of the in-range columns of one parity per row (row[i + 1]: the runs up to
+// row i), column j + 2 continuing a run that ends at j.
+void columnRuns(const Level& L, const std::vector<int>& cols, std::vector<int>& row, std::vector<int>& runs) {
+    const int* lo = L.colLo.data();
+    const int* hi = L.colHi.data();
+    for (int i = 0; i < L.nz; ++i) {
+        int first = -1, last = 0;
+        for (const int j : cols) {
+            if (lo[j] > i || i > hi[j]) continue;
+            if (first >= 0 && j == last + 2) {
+                last = j;
+                continue;
+            }
+            if (first >= 0) runs.insert(runs.end(), {first, last + 2});
+            first = last = j;
+        }
+        if (first >= 0) runs.insert(runs.end(), {first, last + 2});
+        row[static_cast<std::size_t>(i) + 1] = static_cast<int>(runs.size());
+    }
+}
+
+}  // namespace
+
 // Factorization of the z-lines (columns) whose stencil or truncation changed: Thomas
 // multipliers of lo_i x_{i−1} + d_i x_i + up_i x_{i+1} with lo = a(−1,0), d = a(0,0),
 // up = a(+1,0); frozen nodes are identity rows.
@@ -25,7 +143,6 @@ void MultigridSolver::Hierarchy::factorZ(Level& L) {
 // of in a pass of its own over the stencil.
 template <bool Five>
 bool MultigridSolver::Hierarchy::factorZT(Level& L, bool mayDefer) {
-    using St = Stencil<Five>;
     const int nt = L.nt, nz = L.nz;
     if (L.zm.empty()) {
         // Written below: on first use every column is stale from row 0 (invalidateLines).
@@ -42,91 +159,21 @@ bool MultigridSolver::Hierarchy::factorZT(Level& L, bool mayDefer) {
     for (int j = 0; j < nt; ++j)
         if (!L.colOk[static_cast<std::size_t>(j)]) (reverseOdd && j % 2 == 1 ? up : down).push_back(j);
     if (down.empty() && up.empty()) return false;
-    double* zm = L.zm.data();
-    double* zw = L.zw.data();
-    const char* fr = L.free.data();
-    int* from = L.colFrom.data();
-    int* to = L.colTo.data();
     // Fused levels: the free row range of each stale column; only the rows in range are factored
     // (the fused sweeps read no factor outside; the rows next to the range are frozen, whose
     // factors are 0, so the recursions start afresh at its ends). Other levels: all rows.
     const bool ranged = L.fusedZ;
-    int* lo = L.colLo.data();
-    int* hi = L.colHi.data();
-    double* x = L.x.data();
-    double* q = L.q.data();
-    if (ranged) {
-        // First and last free row of every column, row by row (contiguous, branch-free).
-        int* a = rangeLo.data();
-        int* b = rangeHi.data();
-        std::fill_n(a, nt, nz);
-        std::fill_n(b, nt, -1);
-        for (int i = 0; i < nz; ++i) {
-            const char* f = fr + i * nt;
-            for (int j = 0; j < nt; ++j) {
-                a[j] = f[j] && a[j] == nz ? i : a[j];
-                b[j] = f[j] ? i : b[j];
-            }
-        }
-    }
-    for (const std::vector<int>* v : {&down, &up})
-        for (const int j : *v) {
-            // Rows outside the old range were not factored: a top-down factor is valid only up
-            // to the old last free row, a bottom-up one down to the old first (empty range:
-            // lo = nz, hi = −1, nothing valid).
-            from[j] = std::min(from[j], hi[j] + 1);
-            to[j] = std::max(to[j], lo[j] - 1);
-            if (!ranged) {
-                lo[j] = 0;
-                hi[j] = nz - 1;
-                continue;
-            }
-            // New range (from the scan above). The sweeps skip the rows outside, and read
-            // them as neighbours (x) and as the eliminated row next to the range (q): x = 0 on the
-            // rows that leave it (outside the old range it is 0 already), q = 0 next to it.
-            const int a = rangeLo[sj(j)], b = rangeHi[sj(j)];
-            for (int i = lo[j]; i <= hi[j]; ++i)
-                if (i < a || i > b) x[i * nt + j] = 0.0;
-            if (a > 0 && a < nz) q[(a - 1) * nt + j] = 0.0;
-            if (b >= 0 && b + 1 < nz) q[(b + 1) * nt + j] = 0.0;
-            lo[j] = a;
-            hi[j] = b;
-        }
+    if (ranged) freeRowRanges(L, rangeLo.data(), rangeHi.data());
+    updateColumnRanges(L, down, up, ranged, rangeLo.data(), rangeHi.data());
     // Deferred to the caller when every column is stale over its whole free range.
     bool defer = mayDefer && ranged && down.size() + up.size() == static_cast<std::size_t>(nt);
     if (defer) {
-        for (const int j : down) defer &= from[j] <= lo[j];
-        for (const int j : up) defer &= to[j] >= hi[j];
+        for (const int j : down) defer &= L.colFrom[sj(j)] <= L.colLo[sj(j)];
+        for (const int j : up) defer &= L.colTo[sj(j)] >= L.colHi[sj(j)];
     }
-    // Row by row over the stale columns (contiguous memory), from the first changed row.
-    for (int i = 0; i < nz && !defer; ++i)
-        for (const int j : down) {
-            if (i < from[j] || i < lo[j] || i > hi[j]) continue;
-            const auto sk = static_cast<std::size_t>(i * nt + j);
-            if (!fr[sk]) {
-                zm[sk] = zw[sk] = 0.0;
-                continue;
-            }
-            const auto c = stencilAt<Five>(L.a, nz, nt, i, j);
-            const double m = safeInverse(c[St::C] - (i > lo[j] ? c[St::S] * zw[sk - static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
-            zm[sk] = m;
-            zw[sk] = c[St::N] * m;
-        }
-    for (int i = nz - 1; i >= 0 && !defer; --i)
-        for (const int j : up) {
-            if (i > to[j] || i < lo[j] || i > hi[j]) continue;
-            const auto sk = static_cast<std::size_t>(i * nt + j);
-            if (!fr[sk]) {
-                zm[sk] = zw[sk] = 0.0;
-                continue;
-            }
-            const auto c = stencilAt<Five>(L.a, nz, nt, i, j);
-            const double m = safeInverse(c[St::C] - (i < hi[j] ? c[St::N] * zw[sk + static_cast<std::size_t>(nt)] : 0.0), c[St::C]);
-            zm[sk] = m;
-            zw[sk] = c[St::S] * m;
-        }
+    if (!defer) factorColumns<Five>(L, down, up);
     if (ranged) {
-        // Per-row lists of the columns in range.
+        // Per-row lists of the columns in range, by parity.
         L.rowEven.assign(static_cast<std::size_t>(nz) + 1, 0);
         L.rowOdd.assign(static_cast<std::size_t>(nz) + 1, 0);
         L.evenRuns.clear();
@@ -136,27 +183,9 @@ bool MultigridSolver::Hierarchy::factorZT(Level& L, bool mayDefer) {
         live.clear();
         liveOdd.clear();
         for (int j = 0; j < nt; ++j)
-            if (lo[j] <= hi[j]) (j % 2 ? liveOdd : live).push_back(j);
-        // Runs [first, end) of the in-range columns of one parity, column j + 2 continuing a run
-        // that ends at j.
-        auto build = [&](const std::vector<int>& cols, std::vector<int>& row, std::vector<int>& runs) {
-            for (int i = 0; i < nz; ++i) {
-                int first = -1, last = 0;
-                for (const int j : cols) {
-                    if (lo[j] > i || i > hi[j]) continue;
-                    if (first >= 0 && j == last + 2) {
-                        last = j;
-                        continue;
-                    }
-                    if (first >= 0) runs.insert(runs.end(), {first, last + 2});
-                    first = last = j;
-                }
-                if (first >= 0) runs.insert(runs.end(), {first, last + 2});
-                row[static_cast<std::size_t>(i) + 1] = static_cast<int>(runs.size());
-            }
-        };
-        build(live, L.rowEven, L.evenRuns);
-        build(liveOdd, L.rowOdd, L.oddRuns);
+            if (L.colLo[sj(j)] <= L.colHi[sj(j)]) (j % 2 ? liveOdd : live).push_back(j);
+        columnRuns(L, live, L.rowEven, L.evenRuns);
+        columnRuns(L, liveOdd, L.rowOdd, L.oddRuns);
     }
     std::fill(L.colOk.begin(), L.colOk.end(), 1);
     std::fill(L.colFrom.begin(), L.colFrom.end(), nz);
