@@ -71,84 +71,115 @@ ReynoldsSystem::ReynoldsSystem(const FilmGrid& grid, const FilmState& film, doub
 // −c_f towards Film neighbours, c_f p_nb into b towards Fixed/Void ones. Constant: ρ and η are
 // the scalars rho[0], eta[0] (face means of equal values are those values exactly, so the result
 // is that of constant vectors).
+namespace {
+
+// The assembly of ReynoldsSystem's stencil and right-hand side, row by row: faceCoefficients of
+// row i, then nodeEquations of row i (which needs the faces above, of row i − 1, kept in the
+// rolling buffer cUp, mUp).
 template <bool Constant>
-void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const double* eta) {
-    const FilmGrid& grid = *grid_;
-    const int n = grid.size();
-    const int nz = grid.nAxial(), nt = grid.nTheta();
-    const bool periodic = grid.periodic();
-    const double R = grid.radius();
-    const double Uz = film.sumAxial(), Ut = film.sumCircumferential();
-    const NodeKind* kind = grid.kinds();
-    const double* pp = grid.prescribedPressures();
-    const double* h = film.h.data();
-    const bool squeeze = film.dhdt.size() != 0;
-    const double* dhdt = squeeze ? film.dhdt.data() : nullptr;
-    st_.resize(static_cast<std::size_t>(3) * static_cast<std::size_t>(n));  // every entry written below
-    b_.resize(n);
-    double* st = st_.data();
-    double* bv = b_.data();
-    std::vector<double> colL(sj(nt));  // axial face length R·Δθ_j
-    std::vector<double> faceD(sj(nt));  // circumferential node (or arc-end) distance R·Δθ_f
-    for (int j = 0; j < nt; ++j) {
-        colL[sj(j)] = R * grid.angularWidth(j);
-        faceD[sj(j)] = R * grid.faceAngle(j);
+class StencilAssembly {
+public:
+    StencilAssembly(const FilmGrid& grid, const FilmState& film, const double* rho, const double* eta, double* st,
+                    double* bv)
+        : grid_(grid), nz_(grid.nAxial()), nt_(grid.nTheta()), periodic_(grid.periodic()),
+          Uz_(film.sumAxial()), Ut_(film.sumCircumferential()), kind_(grid.kinds()),
+          pp_(grid.prescribedPressures()), h_(film.h.data()), squeeze_(film.dhdt.size() != 0),
+          dhdt_(squeeze_ ? film.dhdt.data() : nullptr), rho_(rho), eta_(eta), st_(st), bv_(bv),
+          colL_(sj(nt_)), faceD_(sj(nt_)), cUp_(sj(nt_), 0.0), mUp_(sj(nt_), 0.0), cDn_(sj(nt_), 0.0),
+          mDn_(sj(nt_), 0.0), cT_(sj(nt_), 0.0), mT_(sj(nt_), 0.0) {
+        const double R = grid.radius();
+        for (int j = 0; j < nt_; ++j) {
+            colL_[sj(j)] = R * grid.angularWidth(j);   // axial face length R·Δθ_j
+            faceD_[sj(j)] = R * grid.faceAngle(j);     // circumferential node (or arc-end) distance R·Δθ_f
+        }
     }
-    std::vector<double> cUp(sj(nt), 0.0), mUp(sj(nt), 0.0), cDn(sj(nt), 0.0), mDn(sj(nt), 0.0),
-        cT(sj(nt), 0.0), mT(sj(nt), 0.0);
-    auto rhoAt = [&](int k) { return Constant ? rho[0] : rho[k]; };
+
+    void run() {
+        for (int i = 0; i < nz_; ++i) {
+            faceCoefficients(i);
+            nodeEquations(i);
+            cUp_.swap(cDn_);
+            mUp_.swap(mDn_);
+        }
+    }
+
+private:
+    static constexpr NodeKind Film = NodeKind::Film;
+
     // Face a–b: c_f and the Couette mass flux a → b (face values as faceValue()).
     // q (constant ρ, η): ρ L / (12 η d) of the face, so c_f = h_f³ q without a division per face.
-    auto face = [&](int a, int b, double U, double L, double d, double q, double& c, double& m) {
+    void face(int a, int b, double U, double L, double d, double q, double& c, double& m) const {
+        const double* h = h_;
+        const double* rho = rho_;
+        const double* eta = eta_;
         double hf, rf, ef;
-        if (kind[a] != NodeKind::Void && kind[b] != NodeKind::Void) {
+        if (kind_[a] != NodeKind::Void && kind_[b] != NodeKind::Void) {
             hf = 0.5 * (h[a] + h[b]);
             rf = Constant ? rho[0] : 0.5 * (rho[a] + rho[b]);
             ef = Constant ? eta[0] : 0.5 * (eta[a] + eta[b]);
         } else {  // the film ends at this face (faceValue: extrapolated at an arc's cut)
-            hf = faceValue(grid, h, a, b);
-            rf = Constant ? rho[0] : faceValue(grid, rho, a, b);
-            ef = Constant ? eta[0] : faceValue(grid, eta, a, b);
+            hf = faceValue(grid_, h, a, b);
+            rf = Constant ? rho[0] : faceValue(grid_, rho, a, b);
+            ef = Constant ? eta[0] : faceValue(grid_, eta, a, b);
         }
         if constexpr (Constant) c = hf * hf * hf * q;
         else c = rf * hf * hf * hf * L / (12.0 * ef * d);
         m = 0.5 * U * rf * hf * L;
-    };
-    constexpr NodeKind Film = NodeKind::Film;
-    for (int i = 0; i < nz; ++i) {
-        const int row = i * nt;
-        const bool hasDown = i + 1 < nz;
-        const double dz = hasDown ? grid.z(i + 1) - grid.z(i) : 0.0;
-        const double Lt = grid.axialWidth(i);
-        const double qz = Constant && hasDown ? rho[0] / (12.0 * eta[0] * dz) : 0.0;  // × colL[j]
-        const double qt = Constant ? rho[0] * Lt / (12.0 * eta[0]) : 0.0;  // ÷ faceD[j]
+    }
+
+    // The down (axial) and right (circumferential) faces of row i into cDn, mDn, cT, mT.
+    void faceCoefficients(int i) {
+        const int nt = nt_, row = i * nt;
+        const NodeKind* kind = kind_;
+        const bool hasDown = i + 1 < nz_;
+        const double dz = hasDown ? grid_.z(i + 1) - grid_.z(i) : 0.0;
+        const double Lt = grid_.axialWidth(i);
+        const double qz = Constant && hasDown ? rho_[0] / (12.0 * eta_[0] * dz) : 0.0;  // × colL[j]
+        const double qt = Constant ? rho_[0] * Lt / (12.0 * eta_[0]) : 0.0;  // ÷ faceD[j]
+        const double Uz = Uz_, Ut = Ut_;
+        double* cDn = cDn_.data();
+        double* mDn = mDn_.data();
+        double* cT = cT_.data();
+        double* mT = mT_.data();
+        const double* colL = colL_.data();
+        const double* faceD = faceD_.data();
         for (int j = 0; j < nt; ++j) {
             const int k = row + j;
             const bool kf = kind[k] == Film;
-            cDn[sj(j)] = mDn[sj(j)] = 0.0;
-            if (hasDown && (kf || kind[k + nt] == Film))
-                face(k, k + nt, Uz, colL[sj(j)], dz, qz * colL[sj(j)], cDn[sj(j)], mDn[sj(j)]);
-            cT[sj(j)] = mT[sj(j)] = 0.0;
-            if (j + 1 < nt || periodic) {
+            cDn[j] = mDn[j] = 0.0;
+            if (hasDown && (kf || kind[k + nt] == Film)) face(k, k + nt, Uz, colL[j], dz, qz * colL[j], cDn[j], mDn[j]);
+            cT[j] = mT[j] = 0.0;
+            if (j + 1 < nt || periodic_) {
                 const int kr = j + 1 < nt ? k + 1 : row;
-                if (kf || kind[kr] == Film) face(k, kr, Ut, Lt, faceD[sj(j)], qt / faceD[sj(j)], cT[sj(j)], mT[sj(j)]);
+                if (kf || kind[kr] == Film) face(k, kr, Ut, Lt, faceD[j], qt / faceD[j], cT[j], mT[j]);
             }
         }
+    }
+
+    // The stencil and right-hand side of row i's nodes: centre Σ_f c_f, −c_f towards Film
+    // neighbours, c_f p_nb into b towards Fixed/Void ones, the Couette fluxes and the squeeze
+    // term; identity rows on the non-Film nodes.
+    void nodeEquations(int i) {
+        const int nt = nt_, row = i * nt;
+        const NodeKind* kind = kind_;
+        const double* pp = pp_;
+        const bool periodic = periodic_, hasDown = i + 1 < nz_;
+        const double Lt = grid_.axialWidth(i);
         for (int j = 0; j < nt; ++j) {
             const int k = row + j;
-            double* c = st + 3 * static_cast<std::size_t>(k);
+            double* c = st_ + 3 * static_cast<std::size_t>(k);
             if (kind[k] != Film) {
-                c[kStencilE] = c[kStencilN] = 0.0;
-                c[kStencilC] = 1.0;
-                bv[k] = pp[k];
+                c[ReynoldsSystem::kStencilE] = c[ReynoldsSystem::kStencilN] = 0.0;
+                c[ReynoldsSystem::kStencilC] = 1.0;
+                bv_[k] = pp[k];
                 continue;
             }
             const bool hasLeft = j > 0 || periodic, hasRight = j + 1 < nt || periodic;
             const int up = k - nt, down = k + nt;
             const int left = j > 0 ? k - 1 : k + nt - 1, right = j + 1 < nt ? k + 1 : row;
             const std::size_t jl = j > 0 ? sj(j - 1) : sj(nt - 1);
-            const double cu = i > 0 ? cUp[sj(j)] : 0.0, cd = hasDown ? cDn[sj(j)] : 0.0;
-            const double cl = hasLeft ? cT[jl] : 0.0, cr = hasRight ? cT[sj(j)] : 0.0;
+            const double cu = i > 0 ? cUp_[sj(j)] : 0.0, cd = hasDown ? cDn_[sj(j)] : 0.0;
+            const double cl = hasLeft ? cT_[jl] : 0.0, cr = hasRight ? cT_[sj(j)] : 0.0;
             const bool upFilm = i > 0 && kind[up] == Film, downFilm = hasDown && kind[down] == Film;
             const bool leftFilm = hasLeft && kind[left] == Film, rightFilm = hasRight && kind[right] == Film;
             // Face-visiting order of forEachFace (up, left, down, right; the periodic wrap
@@ -165,32 +196,56 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
                 bk -= mf;
             };
             if (j > 0) {
-                inflow(i > 0, upFilm, up, cu, mUp[sj(j)]);
-                inflow(true, leftFilm, left, cl, mT[jl]);
-                outflow(hasDown, downFilm, down, cd, mDn[sj(j)]);
-                outflow(hasRight, rightFilm, right, cr, mT[sj(j)]);
-                c[kStencilC] = cu + cl + cd + cr;
+                inflow(i > 0, upFilm, up, cu, mUp_[sj(j)]);
+                inflow(true, leftFilm, left, cl, mT_[jl]);
+                outflow(hasDown, downFilm, down, cd, mDn_[sj(j)]);
+                outflow(hasRight, rightFilm, right, cr, mT_[sj(j)]);
+                c[ReynoldsSystem::kStencilC] = cu + cl + cd + cr;
             } else {
-                inflow(i > 0, upFilm, up, cu, mUp[sj(j)]);
-                outflow(hasDown, downFilm, down, cd, mDn[sj(j)]);
-                outflow(hasRight, rightFilm, right, cr, mT[sj(j)]);
-                inflow(hasLeft, leftFilm, left, cl, mT[jl]);
-                c[kStencilC] = cu + cd + cr + cl;
+                inflow(i > 0, upFilm, up, cu, mUp_[sj(j)]);
+                outflow(hasDown, downFilm, down, cd, mDn_[sj(j)]);
+                outflow(hasRight, rightFilm, right, cr, mT_[sj(j)]);
+                inflow(hasLeft, leftFilm, left, cl, mT_[jl]);
+                c[ReynoldsSystem::kStencilC] = cu + cd + cr + cl;
             }
-            if (squeeze) bk -= colL[sj(j)] * Lt * rhoAt(k) * dhdt[k];  // squeeze: ∂(ρh)/∂t V_k (area(k))
-            bv[k] = bk;
+            if (squeeze_) bk -= colL_[sj(j)] * Lt * (Constant ? rho_[0] : rho_[k]) * dhdt_[k];  // ∂(ρh)/∂t V_k
+            bv_[k] = bk;
             // Only the east and north couplings are stored: the west one is the west neighbour's
             // east one and the south one the south neighbour's north one (A is symmetric: the
             // same face value, and 0 from both sides when either node is not Film).
-            c[kStencilN] = downFilm ? -cd : 0.0;
-            c[kStencilE] = rightFilm ? -cr : 0.0;
-            if (!(c[kStencilC] > 0.0))
+            c[ReynoldsSystem::kStencilN] = downFilm ? -cd : 0.0;
+            c[ReynoldsSystem::kStencilE] = rightFilm ? -cr : 0.0;
+            if (!(c[ReynoldsSystem::kStencilC] > 0.0))
                 throw std::invalid_argument("ReynoldsSystem: film node " + std::to_string(k) +
                                             " has no flow path (isolated by Void nodes?)");
         }
-        cUp.swap(cDn);
-        mUp.swap(mDn);
     }
+
+    const FilmGrid& grid_;
+    const int nz_, nt_;
+    const bool periodic_;
+    const double Uz_, Ut_;
+    const NodeKind* const kind_;
+    const double* const pp_;
+    const double* const h_;
+    const bool squeeze_;
+    const double* const dhdt_;
+    const double* const rho_;
+    const double* const eta_;
+    double* const st_;
+    double* const bv_;
+    std::vector<double> colL_, faceD_;
+    std::vector<double> cUp_, mUp_, cDn_, mDn_, cT_, mT_;
+};
+
+}  // namespace
+
+template <bool Constant>
+void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const double* eta) {
+    const int n = grid_->size();
+    st_.resize(static_cast<std::size_t>(3) * static_cast<std::size_t>(n));  // every entry written below
+    b_.resize(n);
+    StencilAssembly<Constant>(*grid_, film, rho, eta, st_.data(), b_.data()).run();
 }
 
 // A in compressed columns from the stencil (symmetric: column k = row k), rows in increasing
@@ -212,7 +267,7 @@ void ReynoldsSystem::buildMatrix() const {
             const int k = i * nt + j;
             const double* c = &st_[3 * static_cast<std::size_t>(k)];
             outer[k] = nnz;
-            diag_[k] = c[kStencilC];
+            diag_[k] = c[ReynoldsSystem::kStencilC];
             if (!film_(k)) {
                 inner[nnz] = k;
                 val[nnz++] = 1.0;
@@ -229,12 +284,12 @@ void ReynoldsSystem::buildMatrix() const {
             const double cS = up ? st_[3 * static_cast<std::size_t>(k - nt) + kStencilN] : 0.0;
             const double cW = l ? st_[3 * static_cast<std::size_t>(left) + kStencilE] : 0.0;
             if (up) emit(k - nt, cS);
-            if (periodic && j == nt - 1 && r) emit(right, c[kStencilE]);
+            if (periodic && j == nt - 1 && r) emit(right, c[ReynoldsSystem::kStencilE]);
             if (l && left < k) emit(left, cW);
-            emit(k, c[kStencilC]);
-            if (r && right > k) emit(right, c[kStencilE]);
+            emit(k, c[ReynoldsSystem::kStencilC]);
+            if (r && right > k) emit(right, c[ReynoldsSystem::kStencilE]);
             if (periodic && j == 0 && l) emit(left, cW);
-            if (down) emit(k + nt, c[kStencilN]);
+            if (down) emit(k + nt, c[ReynoldsSystem::kStencilN]);
         }
     }
     outer[n] = nnz;
@@ -274,9 +329,9 @@ double ReynoldsSystem::residual(const Eigen::VectorXd& p, double pLower) const {
             const double* c = &st_[3 * static_cast<std::size_t>(k)];
             const double cS = i > 0 ? st_[3 * static_cast<std::size_t>(k - nt) + kStencilN] : 0.0;
             const double cW = st_[3 * static_cast<std::size_t>(i * nt + westStencilColumn(j, nt)) + kStencilE];
-            const double w = cS * xm[j] + cW * x0[jm] + c[kStencilC] * x0[j] +
-                             c[kStencilE] * x0[jp] + c[kStencilN] * xp[j] - b_[k];
-            double r = w / c[kStencilC];
+            const double w = cS * xm[j] + cW * x0[jm] + c[ReynoldsSystem::kStencilC] * x0[j] +
+                             c[ReynoldsSystem::kStencilE] * x0[jp] + c[ReynoldsSystem::kStencilN] * xp[j] - b_[k];
+            double r = w / c[ReynoldsSystem::kStencilC];
             if (bounded) r = std::min(x0[j] - pLower, r);
             rmax = std::max(rmax, std::abs(r));
         }
