@@ -120,121 +120,142 @@ void MultigridSolver::Hierarchy::galerkinT(const Level& F, Level& C, const Dirty
 // fine node, with the z-slots of the rows i − 1, i, i + 1 as a 3×4 matrix Z (per row) and the
 // θ-vectors T of the columns j − 1, j, j + 1: v_di = Σ_dj a(di, dj) T_dj, Y = Σ_di Z_di ⊗ v_di,
 // then the same scatter as galerkinT. Same products, summed in a different order.
+namespace {
+
+// The prolongation of fine row i of a θ-halved level: its parent coarse rows PI (with offsets oI
+// from pz0(i) and weights WZ), Z[di][r] the weight of coarse row slot r (relative to pz0(i) − 1)
+// in the prolongation of fine row i + di − 1, the row slots [rLo, rHi) of Y that can be nonzero
+// (a Z row slot with a nonzero weight: Y is only formed and scattered there — the other slots add
+// exact zeros, on the usual halved rows half of a parent's 3 rows, as do the θ slots the column
+// parity excludes), per parent the scatter rows [sLo, sHi), and the row's shape: 1 a fine row on
+// a coarse row (one parent, Y rows 0..2), 2 a row halfway between two (parents at offsets 0 and
+// 1, Y rows 1..2), 0 anything else (ends of a graded or odd axis: run-time bounds).
+struct HalvedRow {
+    int nI = 0, PI[2] = {0, 0}, oI[2] = {0, 0};
+    double WZ[2] = {0.0, 0.0};
+    double Z[3][4] = {};
+    int rLo = 4, rHi = 0, sLo[2] = {0, 0}, sHi[2] = {0, 0};
+    int shape = 0;
+};
+
+HalvedRow halvedRow(const Level& F, int i) {
+    HalvedRow R;
+    const auto si = static_cast<std::size_t>(i);
+    if (F.wz0[si] != 0.0) { R.PI[R.nI] = F.pz0[si]; R.oI[R.nI] = 0; R.WZ[R.nI++] = F.wz0[si]; }
+    if (F.wz1[si] != 0.0) { R.PI[R.nI] = F.pz1[si]; R.oI[R.nI] = F.pz1[si] - F.pz0[si]; R.WZ[R.nI++] = F.wz1[si]; }
+    for (int di = 0; di < 3; ++di) {
+        const Level::Rel& q = F.zRel[3 * si + static_cast<std::size_t>(di)];
+        R.Z[di][q.r[0]] += q.w[0];
+        R.Z[di][q.r[1]] += q.w[1];
+    }
+    for (int r = 0; r < 4; ++r)
+        if (R.Z[0][r] != 0.0 || R.Z[1][r] != 0.0 || R.Z[2][r] != 0.0) {
+            R.rLo = std::min(R.rLo, r);
+            R.rHi = r + 1;
+        }
+    for (int a = 0; a < R.nI; ++a) {
+        R.sLo[a] = std::max(0, R.rLo - R.oI[a]);
+        R.sHi[a] = std::min(3, R.rHi - R.oI[a]);
+    }
+    R.shape = R.nI == 1 && R.oI[0] == 0 && R.rLo == 0 && R.rHi == 3                   ? 1
+              : R.nI == 2 && R.oI[0] == 0 && R.oI[1] == 1 && R.rLo == 1 && R.rHi == 3 ? 2
+                                                                                      : 0;
+    return R;
+}
+
+// Fine node (i, j) of a θ-halved level: its truncated stencil times the θ prolongation (column
+// parity Odd), times the row's prolongation, scattered into its parents' Galerkin stencils
+// (own: 9 per coarse node). frow: the free flags of rows i − 1, i, i + 1.
+template <bool Five, bool Partial, bool Odd, int Shape, class Dirty>
+inline void halvedNode(const Level& F, int ntC, double* own, const HalvedRow& R, const char* const frow[3],
+                       const Dirty* dirty, int i, int j, int jm, int jp) {
+    using St = Stencil<Five>;
+    const int nt = F.nt;
+    if (!frow[1][j]) return;
+    const int J0 = j / 2;  // first parent column (Jref)
+    const int J1 = Odd ? (J0 + 1 == ntC ? 0 : J0 + 1) : J0;
+    const int nIs = Shape == 1 ? 1 : Shape == 2 ? 2 : R.nI;
+    if constexpr (Partial) {
+        bool any = false;
+        for (int a = 0; a < nIs; ++a) {
+            any |= dirty->flag[static_cast<std::size_t>(R.PI[a] * ntC + J0)] != 0;
+            if (Odd) any |= dirty->flag[static_cast<std::size_t>(R.PI[a] * ntC + J1)] != 0;
+        }
+        if (!any) return;
+    }
+    // θ-vectors (slots 0..3 relative to J0 − 1): column j − 1, j, j + 1.
+    constexpr double Tm[4] = {Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0, 0.0};
+    constexpr double T0[4] = {0.0, Odd ? 0.5 : 1.0, Odd ? 0.5 : 0.0, 0.0};
+    constexpr double Tp[4] = {0.0, Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0};
+    const auto ak = stencilAt<Five>(F.a, F.nz, nt, i, j);
+    const int cols[3] = {jm, j, jp};
+    double v[3][4] = {};
+    for (int di = 0; di < 3; ++di) {
+        const char* f = frow[di];
+        double am, a0, ap;  // couplings to (i + di − 1, j − 1 … j + 1), truncated
+        if constexpr (Five) {
+            am = di == 1 && f[cols[0]] ? ak[St::W] : 0.0;
+            ap = di == 1 && f[cols[2]] ? ak[St::E] : 0.0;
+            a0 = f[cols[1]] ? ak[di == 0 ? St::S : di == 1 ? St::C : St::N] : 0.0;
+        } else {
+            am = f[cols[0]] ? ak[3 * di] : 0.0;
+            a0 = f[cols[1]] ? ak[3 * di + 1] : 0.0;
+            ap = f[cols[2]] ? ak[3 * di + 2] : 0.0;
+        }
+        for (int c = 0; c < 4; ++c) v[di][c] = am * Tm[c] + a0 * T0[c] + ap * Tp[c];
+    }
+    // θ slots that can be nonzero: 0..2 (even column), 1..2 (odd column).
+    constexpr int cLo = Odd ? 1 : 0, cHi = 3;
+    const int yLo = Shape == 1 ? 0 : Shape == 2 ? 1 : R.rLo, yHi = Shape ? 3 : R.rHi;
+    double Y[4][4];
+    for (int r = yLo; r < yHi; ++r)
+        for (int c = cLo; c < cHi; ++c) Y[r][c] = R.Z[0][r] * v[0][c] + R.Z[1][r] * v[1][c] + R.Z[2][r] * v[2][c];
+    for (int a = 0; a < nIs; ++a) {
+        const int oIa = Shape == 1 ? 0 : Shape == 2 ? a : R.oI[a];
+        const int r0 = Shape == 1 ? 0 : Shape == 2 ? 1 - a : R.sLo[a];
+        const int r1 = Shape == 1 ? 3 : Shape == 2 ? 3 - a : R.sHi[a];
+        const double(*Yr)[4] = &Y[oIa];
+        for (int b = 0; b < (Odd ? 2 : 1); ++b) {
+            const int J = b ? J1 : J0;
+            const int K = R.PI[a] * ntC + J;
+            if (Partial && !dirty->flag[static_cast<std::size_t>(K)]) continue;
+            const double w = R.WZ[a] * (Odd ? 0.5 : 1.0);
+            double* cp = own + 9 * static_cast<std::size_t>(K);
+            // Stencil columns c with b + c in [cLo, cHi).
+            const int c0 = std::max(0, cLo - b), c1 = std::min(3, cHi - b);
+            for (int r = r0; r < r1; ++r)
+                for (int c = c0; c < c1; ++c) cp[3 * r + c] += w * Yr[r][b + c];
+        }
+    }
+}
+
+// One fine row of a θ-halved level through halvedNode, by column parity, at the row's shape.
+template <bool Five, bool Partial, int Shape, class Dirty>
+void halvedSweep(const Level& F, int ntC, double* own, const HalvedRow& R, const Dirty* dirty, int i) {
+    const char* fr = F.free.data();
+    const int nt = F.nt;
+    const char* const frow[3] = {fr + F.im(i) * nt, fr + i * nt, fr + F.ip(i) * nt};
+    forColumns(F, 0, 1, [&](int j, int jm, int jp) {
+        if (j % 2) halvedNode<Five, Partial, true, Shape>(F, ntC, own, R, frow, dirty, i, j, jm, jp);
+        else halvedNode<Five, Partial, false, Shape>(F, ntC, own, R, frow, dirty, i, j, jm, jp);
+    });
+}
+
+}  // namespace
+
 template <bool Five, bool Partial>
 void MultigridSolver::Hierarchy::galerkinHalvedT(const Level& F, Level& C, const Dirty* dirty) {
-    using St = Stencil<Five>;
-    const int ntC = C.nt, nt = F.nt;
+    const int ntC = C.nt;
     double* own = C.own.data();
-    const char* fr = F.free.data();
     for (int i = 0; i < F.nz; ++i) {
         const auto si = static_cast<std::size_t>(i);
         if (Partial && !dirty->rows[static_cast<std::size_t>(F.pz0[si])] &&
             !dirty->rows[static_cast<std::size_t>(F.pz1[si])])
             continue;
-        int nI = 0, PI[2], oI[2];
-        double WZ[2];
-        if (F.wz0[si] != 0.0) { PI[nI] = F.pz0[si]; oI[nI] = 0; WZ[nI++] = F.wz0[si]; }
-        if (F.wz1[si] != 0.0) { PI[nI] = F.pz1[si]; oI[nI] = F.pz1[si] - F.pz0[si]; WZ[nI++] = F.wz1[si]; }
-        // Z[di][r]: weight of coarse row slot r (relative to pz0(i) − 1) in the prolongation of
-        // fine row i + di − 1.
-        double Z[3][4] = {};
-        for (int di = 0; di < 3; ++di) {
-            const Level::Rel& q = F.zRel[3 * si + static_cast<std::size_t>(di)];
-            Z[di][q.r[0]] += q.w[0];
-            Z[di][q.r[1]] += q.w[1];
-        }
-        // Row slots of Y that can be nonzero (a Z row slot with a nonzero weight): [rLo, rHi).
-        // Y is only formed and scattered there — the other slots add exact zeros (on the usual
-        // halved rows, half of a parent's 3 rows), as do the θ slots the column parity excludes.
-        int rLo = 4, rHi = 0;
-        for (int r = 0; r < 4; ++r)
-            if (Z[0][r] != 0.0 || Z[1][r] != 0.0 || Z[2][r] != 0.0) {
-                rLo = std::min(rLo, r);
-                rHi = r + 1;
-            }
-        int sLo[2], sHi[2];  // per parent row a: scatter rows r with oI[a] + r in [rLo, rHi)
-        for (int a = 0; a < nI; ++a) {
-            sLo[a] = std::max(0, rLo - oI[a]);
-            sHi[a] = std::min(3, rHi - oI[a]);
-        }
-        // Usual row shapes, unrolled at compile time: a fine row on a coarse row (one parent,
-        // Y rows 0..2) and a row halfway between two (parents at offsets 0 and 1, Y rows 1..2);
-        // anything else (ends of a graded or odd axis) uses the run-time bounds.
-        const int rowShape = nI == 1 && oI[0] == 0 && rLo == 0 && rHi == 3                    ? 1
-                             : nI == 2 && oI[0] == 0 && oI[1] == 1 && rLo == 1 && rHi == 3 ? 2
-                                                                                             : 0;
-        const char* frow[3] = {fr + F.im(i) * nt, fr + i * nt, fr + F.ip(i) * nt};
-        auto node = [&](auto oddTag, auto shapeTag, int j, int jm, int jp) {
-            constexpr bool Odd = decltype(oddTag)::value;
-            constexpr int Shape = decltype(shapeTag)::value;
-            const int k = i * nt + j;
-            if (!fr[k]) return;
-            const int J0 = j / 2;  // first parent column (Jref)
-            const int J1 = Odd ? (J0 + 1 == ntC ? 0 : J0 + 1) : J0;
-            const int nIs = Shape == 1 ? 1 : Shape == 2 ? 2 : nI;
-            if constexpr (Partial) {
-                bool any = false;
-                for (int a = 0; a < nIs; ++a) {
-                    any |= dirty->flag[static_cast<std::size_t>(PI[a] * ntC + J0)] != 0;
-                    if (Odd) any |= dirty->flag[static_cast<std::size_t>(PI[a] * ntC + J1)] != 0;
-                }
-                if (!any) return;
-            }
-            // θ-vectors (slots 0..3 relative to J0 − 1): column j − 1, j, j + 1.
-            constexpr double Tm[4] = {Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0, 0.0};
-            constexpr double T0[4] = {0.0, Odd ? 0.5 : 1.0, Odd ? 0.5 : 0.0, 0.0};
-            constexpr double Tp[4] = {0.0, Odd ? 0.0 : 0.5, Odd ? 1.0 : 0.5, 0.0};
-            const auto ak = stencilAt<Five>(F.a, F.nz, nt, i, j);
-            const int cols[3] = {jm, j, jp};
-            double v[3][4] = {};
-            for (int di = 0; di < 3; ++di) {
-                const char* f = frow[di];
-                double am, a0, ap;  // couplings to (i + di − 1, j − 1 … j + 1), truncated
-                if constexpr (Five) {
-                    am = di == 1 && f[cols[0]] ? ak[St::W] : 0.0;
-                    ap = di == 1 && f[cols[2]] ? ak[St::E] : 0.0;
-                    a0 = f[cols[1]] ? ak[di == 0 ? St::S : di == 1 ? St::C : St::N] : 0.0;
-                } else {
-                    am = f[cols[0]] ? ak[3 * di] : 0.0;
-                    a0 = f[cols[1]] ? ak[3 * di + 1] : 0.0;
-                    ap = f[cols[2]] ? ak[3 * di + 2] : 0.0;
-                }
-                for (int c = 0; c < 4; ++c) v[di][c] = am * Tm[c] + a0 * T0[c] + ap * Tp[c];
-            }
-            // θ slots that can be nonzero: 0..2 (even column), 1..2 (odd column).
-            constexpr int cLo = Odd ? 1 : 0, cHi = 3;
-            const int yLo = Shape == 1 ? 0 : Shape == 2 ? 1 : rLo, yHi = Shape ? 3 : rHi;
-            double Y[4][4];
-            for (int r = yLo; r < yHi; ++r)
-                for (int c = cLo; c < cHi; ++c)
-                    Y[r][c] = Z[0][r] * v[0][c] + Z[1][r] * v[1][c] + Z[2][r] * v[2][c];
-            for (int a = 0; a < nIs; ++a) {
-                const int oIa = Shape == 1 ? 0 : Shape == 2 ? a : oI[a];
-                const int r0 = Shape == 1 ? 0 : Shape == 2 ? 1 - a : sLo[a];
-                const int r1 = Shape == 1 ? 3 : Shape == 2 ? 3 - a : sHi[a];
-                const double(*Yr)[4] = &Y[oIa];
-                for (int b = 0; b < (Odd ? 2 : 1); ++b) {
-                    const int J = b ? J1 : J0;
-                    const int K = PI[a] * ntC + J;
-                    if (Partial && !dirty->flag[static_cast<std::size_t>(K)]) continue;
-                    const double w = WZ[a] * (Odd ? 0.5 : 1.0);
-                    double* cp = own + 9 * static_cast<std::size_t>(K);
-                    // Stencil columns c with b + c in [cLo, cHi).
-                    const int c0 = std::max(0, cLo - b), c1 = std::min(3, cHi - b);
-                    for (int r = r0; r < r1; ++r)
-                        for (int c = c0; c < c1; ++c) cp[3 * r + c] += w * Yr[r][b + c];
-                }
-            }
-        };
-        auto sweep = [&](auto shapeTag) {
-            forColumns(F, 0, 1, [&](int j, int jm, int jp) {
-                if (j % 2) node(std::true_type{}, shapeTag, j, jm, jp);
-                else node(std::false_type{}, shapeTag, j, jm, jp);
-            });
-        };
-        if (rowShape == 1) sweep(std::integral_constant<int, 1>{});
-        else if (rowShape == 2) sweep(std::integral_constant<int, 2>{});
-        else sweep(std::integral_constant<int, 0>{});
+        const HalvedRow R = halvedRow(F, i);
+        if (R.shape == 1) halvedSweep<Five, Partial, 1>(F, ntC, own, R, dirty, i);
+        else if (R.shape == 2) halvedSweep<Five, Partial, 2>(F, ntC, own, R, dirty, i);
+        else halvedSweep<Five, Partial, 0>(F, ntC, own, R, dirty, i);
     }
 }
 
