@@ -105,12 +105,10 @@ TypedElements elementsOf(int dim, int entity) {
     return te;
 }
 
-Mesh extractMesh(const std::string& path) {
-    Mesh mesh;
-    mesh.source = path;
+namespace {
 
-    // --- volume elements: every 3-D entity ---
-    TypedElements vol = elementsOf(3, -1);
+// The one volume element type of the mesh (Gmsh's 4: Tet4, 11: Tet10); fails naming the path.
+int volumeElementType(const std::string& path, const TypedElements& vol) {
     int volType = -1;
     for (std::size_t k = 0; k < vol.types.size(); ++k) {
         if (vol.tags[k].empty()) continue;
@@ -125,11 +123,12 @@ Mesh extractMesh(const std::string& path) {
     }
     if (volType == -1)
         fail(path, "no volume elements (tetrahedra); is the 3-D mesh generated and saved?");
-    const std::size_t kv = std::find(vol.types.begin(), vol.types.end(), volType) - vol.types.begin();
-    mesh.volume.type = volType == 4 ? ElementType::Tet4 : ElementType::Tet10;
-    const int npe = nodesPerElement(mesh.volume.type);
+    return volType;
+}
 
-    // --- nodes: only those the volume elements use, numbered compactly ---
+// The nodes the volume elements use, numbered compactly into mesh.nodes and mesh.nodeTags;
+// returns Gmsh node tag → index (−1: unused).
+std::vector<Index> compactNodes(const std::string& path, const std::vector<std::size_t>& vnodes, Mesh& mesh) {
     std::vector<std::size_t> nodeTags;
     std::vector<double> coords, param;
     gmsh::model::mesh::getNodes(nodeTags, coords, param, -1, -1, false, false);
@@ -140,8 +139,6 @@ Mesh extractMesh(const std::string& path) {
     for (std::size_t i = 0; i < nodeTags.size(); ++i) tagToCoord[nodeTags[i]] = i;
     std::vector<bool> known(maxTag + 1, false);
     for (auto t : nodeTags) known[t] = true;
-
-    const auto& vnodes = vol.nodes[kv];
     Index count = 0;
     for (auto t : vnodes) {
         if (t > maxTag || !known[t]) fail(path, "volume element refers to missing node " + std::to_string(t));
@@ -156,16 +153,14 @@ Mesh extractMesh(const std::string& path) {
         mesh.nodes.col(i) << coords[3 * c], coords[3 * c + 1], coords[3 * c + 2];
         mesh.nodeTags[i] = t;
     }
-    const Index ne = static_cast<Index>(vol.tags[kv].size());
-    mesh.volume.nodes.resize(npe, ne);
-    mesh.volume.tags = vol.tags[kv];
-    for (Index e = 0; e < ne; ++e)
-        for (int a = 0; a < npe; ++a) mesh.volume.nodes(a, e) = tagToIndex[vnodes[std::size_t(e) * npe + a]];
-    std::unordered_map<std::size_t, Index> volIndex;
-    volIndex.reserve(ne);
-    for (Index e = 0; e < ne; ++e) volIndex[mesh.volume.tags[e]] = e;
+    return tagToIndex;
+}
 
-    // --- physical groups (volume and surface); triangles of physical surfaces ---
+// The physical groups of dimension 2 and 3 (volume groups by element index; surface groups by
+// triangle, the triangles of all surface groups collected once into mesh.surface).
+void readPhysicalGroups(const std::string& path, const std::vector<Index>& tagToIndex,
+                        const std::unordered_map<std::size_t, Index>& volIndex, Mesh& mesh) {
+    const std::size_t maxTag = tagToIndex.size() - 1;
     const int triType = mesh.order() == 2 ? 9 : 2;
     mesh.surface.type = mesh.order() == 2 ? ElementType::Tri6 : ElementType::Tri3;
     const int npt = nodesPerElement(mesh.surface.type);
@@ -215,6 +210,30 @@ Mesh extractMesh(const std::string& path) {
     }
     mesh.surface.nodes = Eigen::Map<Eigen::Matrix<Index, Eigen::Dynamic, Eigen::Dynamic>>(
         triNodes.data(), npt, static_cast<Index>(triNodes.size() / std::max(npt, 1)));
+}
+
+}  // namespace
+
+Mesh extractMesh(const std::string& path) {
+    Mesh mesh;
+    mesh.source = path;
+    // Volume elements: every 3-D entity.
+    TypedElements vol = elementsOf(3, -1);
+    const int volType = volumeElementType(path, vol);
+    const std::size_t kv = std::find(vol.types.begin(), vol.types.end(), volType) - vol.types.begin();
+    mesh.volume.type = volType == 4 ? ElementType::Tet4 : ElementType::Tet10;
+    const int npe = nodesPerElement(mesh.volume.type);
+    const auto& vnodes = vol.nodes[kv];
+    const std::vector<Index> tagToIndex = compactNodes(path, vnodes, mesh);
+    const Index ne = static_cast<Index>(vol.tags[kv].size());
+    mesh.volume.nodes.resize(npe, ne);
+    mesh.volume.tags = vol.tags[kv];
+    for (Index e = 0; e < ne; ++e)
+        for (int a = 0; a < npe; ++a) mesh.volume.nodes(a, e) = tagToIndex[vnodes[std::size_t(e) * npe + a]];
+    std::unordered_map<std::size_t, Index> volIndex;
+    volIndex.reserve(ne);
+    for (Index e = 0; e < ne; ++e) volIndex[mesh.volume.tags[e]] = e;
+    readPhysicalGroups(path, tagToIndex, volIndex, mesh);
     return mesh;
 }
 
