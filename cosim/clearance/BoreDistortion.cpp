@@ -336,15 +336,118 @@ std::vector<BoreNode> readBoreNodes(const std::string& path, double bore, const 
     return bore_;
 }
 
+namespace {
+
+// The bore nodes in the parameter plane (z, s = R θ), θ in [0, 2π), binned in axial strips of the
+// typical node spacing and sorted by s within each strip: the k nearest nodes of a point.
+class BoreNodeIndex {
+public:
+    BoreNodeIndex(const std::vector<BoreNode>& nodes, double R, double zLo, double zHi)
+        : period_(2.0 * kPi * R), zLo_(zLo), zHi_(zHi),
+          spacing_(std::sqrt((zHi - zLo + 1e-9) * period_ / double(nodes.size()))),
+          strips_(std::max(1, int((zHi - zLo) / spacing_) + 1)), z_(nodes.size()), s_(nodes.size()),
+          u_(nodes.size()), stripStart_(std::size_t(strips_) + 1, 0) {
+        std::vector<std::size_t> order(nodes.size());
+        std::vector<std::pair<int, double>> key(nodes.size());
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            double th = std::atan2(nodes[i].y, nodes[i].x);
+            if (th < 0.0) th += 2.0 * kPi;
+            key[i] = {strip(nodes[i].z), std::min(R * th, std::nextafter(period_, 0.0))};
+            order[i] = i;
+        }
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+        for (std::size_t r = 0; r < order.size(); ++r) {
+            const std::size_t i = order[r];
+            z_[r] = nodes[i].z;
+            s_[r] = key[i].second;
+            u_[r] = nodes[i].ur;
+            ++stripStart_[std::size_t(key[i].first) + 1];
+        }
+        for (int b = 0; b < strips_; ++b) stripStart_[std::size_t(b) + 1] += stripStart_[std::size_t(b)];
+    }
+
+    double period() const { return period_; }
+    double z(std::size_t i) const { return z_[i]; }
+    double s(std::size_t i) const { return s_[i]; }
+    double u(std::size_t i) const { return u_[i]; }
+
+    // The k nearest nodes of (zt, st) into cand (distance, node): every node within w of the
+    // target lies in the box |dz|, |ds| ≤ w; w grows until the k-th nearest candidate lies within w.
+    void nearest(double zt, double st, int k, std::vector<std::pair<double, std::size_t>>& cand) const {
+        for (double w = 2.8 * spacing_;; w *= 1.5) {
+            cand.clear();
+            const int b0 = strip(zt - w), b1 = strip(zt + w);
+            for (int b = b0; b <= b1; ++b) {
+                if (2.0 * w >= period_) {
+                    gather(b, 0.0, period_, zt, st, cand);
+                } else {
+                    const double a = std::fmod(st - w + period_, period_), c = a + 2.0 * w;
+                    if (c < period_) {
+                        gather(b, a, c, zt, st, cand);
+                    } else {
+                        gather(b, a, period_, zt, st, cand);
+                        gather(b, 0.0, c - period_, zt, st, cand);
+                    }
+                }
+            }
+            const bool all = (zt - w <= zLo_ && zt + w >= zHi_ && 2.0 * w >= period_);
+            if (int(cand.size()) >= k) {
+                std::nth_element(cand.begin(), cand.begin() + (k - 1), cand.end());
+                if (cand[std::size_t(k) - 1].first <= w || all) break;
+            } else if (all) {
+                break;
+            }
+        }
+        cand.resize(std::min<std::size_t>(cand.size(), std::size_t(k)));
+    }
+
+private:
+    int strip(double zz) const { return std::clamp(int((zz - zLo_) / spacing_), 0, strips_ - 1); }
+    // Candidates of strip b with s in [a, c] (a, c within [0, period)).
+    void gather(int b, double a, double c, double zt, double st, std::vector<std::pair<double, std::size_t>>& cand) const {
+        const auto first = s_.begin() + std::ptrdiff_t(stripStart_[std::size_t(b)]);
+        const auto last = s_.begin() + std::ptrdiff_t(stripStart_[std::size_t(b) + 1]);
+        for (auto it = std::lower_bound(first, last, a); it != last && *it <= c; ++it) {
+            const std::size_t i = std::size_t(it - s_.begin());
+            const double dz = z_[i] - zt, ds = std::remainder(s_[i] - st, period_);
+            cand.emplace_back(std::sqrt(dz * dz + ds * ds), i);
+        }
+    }
+
+    double period_, zLo_, zHi_, spacing_;
+    int strips_;
+    std::vector<double> z_, s_, u_;
+    std::vector<std::size_t> stripStart_;
+};
+
+// The value at (zt, st) of the weighted least-squares quadratic in (dz, ds)/ρ through the
+// candidates, ρ just beyond the farthest; Wendland C² weight (1 − d)⁴ (4d + 1).
+double movingLeastSquares(const BoreNodeIndex& index, const std::vector<std::pair<double, std::size_t>>& cand,
+                          double zt, double st, Eigen::Matrix<double, Eigen::Dynamic, 6>& P, Eigen::VectorXd& rhs) {
+    const double rho = std::max_element(cand.begin(), cand.end())->first * (1.0 + 1e-9) + 1e-300;
+    P.resize(Eigen::Index(cand.size()), 6);
+    rhs.resize(Eigen::Index(cand.size()));
+    for (std::size_t c = 0; c < cand.size(); ++c) {
+        const std::size_t i = cand[c].second;
+        const double a = (index.z(i) - zt) / rho, b = std::remainder(index.s(i) - st, index.period()) / rho;
+        const double d = cand[c].first / rho;
+        const double wgt = std::sqrt(std::pow(1.0 - d, 4) * (4.0 * d + 1.0));
+        P.row(Eigen::Index(c)) << wgt, wgt * a, wgt * b, wgt * a * a, wgt * a * b, wgt * b * b;
+        rhs[Eigen::Index(c)] = wgt * index.u(i);
+    }
+    const Eigen::Matrix<double, 6, 1> coef = P.colPivHouseholderQr().solve(rhs);
+    return coef[0];
+}
+
+}  // namespace
+
 LinerFieldTable nodalDistortionTable(const std::vector<BoreNode>& nodes, const lube::FilmGrid& grid, double zMin,
                                      double zMax, std::string name) {
     constexpr int kNearest = 24;
-    const double R = grid.radius(), period = 2.0 * kPi * R;
+    const double R = grid.radius();
     if (int(nodes.size()) < kNearest)
         throw std::runtime_error(
             fmt::format("{}: at least {} bore nodes are needed, got {}", name, kNearest, nodes.size()));
-    // Nodes in the parameter plane (z, s = R θ), θ in [0, 2π), binned in axial strips of the
-    // typical node spacing and sorted by s within each strip.
     double zLo = std::numeric_limits<double>::infinity(), zHi = -zLo;
     for (const BoreNode& b : nodes) zLo = std::min(zLo, b.z), zHi = std::max(zHi, b.z);
     const double tol = 1e-6;
@@ -353,28 +456,7 @@ LinerFieldTable nodalDistortionTable(const std::vector<BoreNode>& nodes, const l
             fmt::format("{}: the bore nodes cover liner-frame z = {:g} … {:g} m, but the skirt "
                         "sweeps {:g} … {:g} m between TDC and BDC",
                         name, zLo, zHi, zMin, zMax));
-    const double spacing = std::sqrt((zHi - zLo + 1e-9) * period / double(nodes.size()));
-    const int strips = std::max(1, int((zHi - zLo) / spacing) + 1);
-    const auto stripOf = [&](double zz) { return std::clamp(int((zz - zLo) / spacing), 0, strips - 1); };
-    std::vector<double> z(nodes.size()), s(nodes.size()), u(nodes.size());
-    std::vector<std::size_t> order(nodes.size());
-    std::vector<std::pair<int, double>> key(nodes.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-        double th = std::atan2(nodes[i].y, nodes[i].x);
-        if (th < 0.0) th += 2.0 * kPi;
-        key[i] = {stripOf(nodes[i].z), std::min(R * th, std::nextafter(period, 0.0))};
-        order[i] = i;
-    }
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
-    std::vector<std::size_t> stripStart(std::size_t(strips) + 1, 0);
-    for (std::size_t r = 0; r < order.size(); ++r) {
-        const std::size_t i = order[r];
-        z[r] = nodes[i].z;
-        s[r] = key[i].second;
-        u[r] = nodes[i].ur;
-        ++stripStart[std::size_t(key[i].first) + 1];
-    }
-    for (int b = 0; b < strips; ++b) stripStart[std::size_t(b) + 1] += stripStart[std::size_t(b)];
+    const BoreNodeIndex index(nodes, R, zLo, zHi);
     // Liner-fixed rows.
     const double dzGrid = grid.nAxial() > 1 ? grid.length() / (grid.nAxial() - 1) : 1e-3;
     const double hMax = std::min(0.5 * dzGrid, 0.5e-3);
@@ -386,62 +468,12 @@ LinerFieldTable nodalDistortionTable(const std::vector<BoreNode>& nodes, const l
     std::vector<std::pair<double, std::size_t>> cand;
     Eigen::Matrix<double, Eigen::Dynamic, 6> P;
     Eigen::VectorXd rhs;
-    // Candidates of strip b with s in [a, c] (a, c within [0, period)).
-    const auto gather = [&](int b, double a, double c, double zt, double st) {
-        const auto first = s.begin() + std::ptrdiff_t(stripStart[std::size_t(b)]);
-        const auto last = s.begin() + std::ptrdiff_t(stripStart[std::size_t(b) + 1]);
-        for (auto it = std::lower_bound(first, last, a); it != last && *it <= c; ++it) {
-            const std::size_t i = std::size_t(it - s.begin());
-            const double dz = z[i] - zt, ds = std::remainder(s[i] - st, period);
-            cand.emplace_back(std::sqrt(dz * dz + ds * ds), i);
-        }
-    };
-    for (std::size_t k = 0; k < zr.size(); ++k) {
+    for (std::size_t k = 0; k < zr.size(); ++k)
         for (int j = 0; j < grid.nTheta(); ++j) {
             const double zt = zr[k], st = R * grid.theta(j);
-            // The kNearest nearest nodes: every node within w of the target lies in the box
-            // |dz|, |ds| ≤ w; grow w until the k-th nearest candidate lies within w.
-            for (double w = 2.8 * spacing;; w *= 1.5) {
-                cand.clear();
-                const int b0 = stripOf(zt - w), b1 = stripOf(zt + w);
-                for (int b = b0; b <= b1; ++b) {
-                    if (2.0 * w >= period) {
-                        gather(b, 0.0, period, zt, st);
-                    } else {
-                        const double a = std::fmod(st - w + period, period), c = a + 2.0 * w;
-                        if (c < period) {
-                            gather(b, a, c, zt, st);
-                        } else {
-                            gather(b, a, period, zt, st);
-                            gather(b, 0.0, c - period, zt, st);
-                        }
-                    }
-                }
-                const bool all = (zt - w <= zLo && zt + w >= zHi && 2.0 * w >= period);
-                if (int(cand.size()) >= kNearest) {
-                    std::nth_element(cand.begin(), cand.begin() + (kNearest - 1), cand.end());
-                    if (cand[kNearest - 1].first <= w || all) break;
-                } else if (all) {
-                    break;
-                }
-            }
-            cand.resize(std::min<std::size_t>(cand.size(), kNearest));
-            const double rho = std::max_element(cand.begin(), cand.end())->first * (1.0 + 1e-9) + 1e-300;
-            // Weighted least-squares quadratic in (dz, ds)/ρ; Wendland C² weight (1 − d)⁴ (4d + 1).
-            P.resize(Eigen::Index(cand.size()), 6);
-            rhs.resize(Eigen::Index(cand.size()));
-            for (std::size_t c = 0; c < cand.size(); ++c) {
-                const std::size_t i = cand[c].second;
-                const double a = (z[i] - zt) / rho, b = std::remainder(s[i] - st, period) / rho;
-                const double d = cand[c].first / rho;
-                const double wgt = std::sqrt(std::pow(1.0 - d, 4) * (4.0 * d + 1.0));
-                P.row(Eigen::Index(c)) << wgt, wgt * a, wgt * b, wgt * a * a, wgt * a * b, wgt * b * b;
-                rhs[Eigen::Index(c)] = wgt * u[i];
-            }
-            const Eigen::Matrix<double, 6, 1> coef = P.colPivHouseholderQr().solve(rhs);
-            values(Eigen::Index(k), j) = coef[0];
+            index.nearest(zt, st, kNearest, cand);
+            values(Eigen::Index(k), j) = movingLeastSquares(index, cand, zt, st, P, rhs);
         }
-    }
     return LinerFieldTable(std::move(zr), std::move(values), std::move(name));
 }
 
