@@ -56,6 +56,81 @@ std::vector<std::pair<std::string, double>> bodyAttributes(const ThermalBodyResu
 
 }  // namespace
 
+namespace {
+
+// summary.json's record of the piston's templug calibration (docs/thermal.md).
+nlohmann::json calibrationSummary(const PistonThermalCase& pc, const fem::CalibrationResult& cal) {
+    nlohmann::json params = nlohmann::json::array(), points = nlohmann::json::array();
+    for (std::size_t k = 0; k < pc.parameters.size(); ++k)
+        params.push_back({{"parameter", pc.parameters[k].label()},
+                          {"group", pc.parameters[k].group},
+                          {"kind", pc.parameters[k].kind == fem::CalibrationParameter::Kind::HeatTransferScale
+                                       ? "h_factor"
+                                       : "fluid_temperature_k"},
+                          {"value", cal.values(Eigen::Index(k))},
+                          {"at_bound", bool(cal.atBound[k])}});
+    for (std::size_t i = 0; i < pc.templugs.size(); ++i) {
+        const auto& t = pc.templugs[i];
+        points.push_back({{"name", t.name},
+                          {"position_m", {t.position(0), t.position(1), t.position(2)}},
+                          {"measured_k", t.temperature},
+                          {"computed_k", cal.computed(Eigen::Index(i))},
+                          {"residual_k", cal.residuals(Eigen::Index(i))}});
+    }
+    return {{"matched", cal.matched},
+            {"message", cal.message},
+            {"converged", cal.converged},
+            {"iterations", cal.iterations},
+            {"rms_residual_k", cal.rms},
+            {"max_abs_residual_k", cal.maxAbs},
+            {"initial_rms_residual_k", cal.initialRms},
+            {"tolerance_k", pc.tolerance},
+            {"parameters", params},
+            {"templugs", points}};
+}
+
+// summary.json's record of the piston: mesh, temperatures, convection boundaries as fitted,
+// calibration, support, the radial displacement table.
+nlohmann::json pistonSummary(const PistonThermalCase& pc, const PistonThermalResult& p) {
+    nlohmann::json j;
+    j["mesh"] = pc.mesh.path;
+    j["nodes"] = p.mesh.numNodes();
+    j["element_type"] = std::string(fem::name(p.mesh.volume.type));
+    j["temperature"] = temperatureSummary(p.temperature);
+    nlohmann::json bc = nlohmann::json::object();
+    for (std::size_t g = 0; g < pc.convection.size(); ++g) {
+        const auto k = Eigen::Index(g);
+        bc[pc.convection[g].group] = {{"h_w_m2k", p.parameters.hScale(k) * pc.convection[g].h},
+                                      {"h_factor", p.parameters.hScale(k)},
+                                      {"fluid_temperature_k", p.parameters.fluidTemperature(k)},
+                                      {"heat_flow_w", p.heatFlow(k)}};
+    }
+    j["convection"] = bc;
+    if (p.calibration) j["calibration"] = calibrationSummary(pc, *p.calibration);
+    j["support"] = {{"reference", pc.support}, {"determinate_reaction_relative", p.deformation.determinateReaction}};
+    j["radial_displacement"] = tableSummary(p.table);
+    j["seconds"] = p.seconds;
+    return j;
+}
+
+// summary.json's record of the liner.
+nlohmann::json linerSummary(const LinerThermalCase& lc, const ThermalBodyResult& l) {
+    nlohmann::json held = nlohmann::json::array();
+    for (const auto& h : lc.held) held.push_back(h.group);
+    return {{"mesh", lc.mesh.path},
+            {"nodes", l.mesh.numNodes()},
+            {"element_type", std::string(fem::name(l.mesh.volume.type))},
+            {"temperature", temperatureSummary(l.temperature)},
+            {"support", {{"held", held},
+                         {"reference", lc.reference},
+                         {"free_rigid_modes", l.deformation.freeRigidModes},
+                         {"determinate_reaction_relative", l.deformation.determinateReaction}}},
+            {"radial_displacement", tableSummary(l.table)},
+            {"seconds", l.seconds}};
+}
+
+}  // namespace
+
 nlohmann::json writeThermalResults(const std::string& dir, const std::string& casePath, const ThermalCase& c,
                                    const ThermalResult& r, const fem::Stopwatch& total) {
     const fem::Stopwatch w;
@@ -69,85 +144,26 @@ nlohmann::json writeThermalResults(const std::string& dir, const std::string& ca
     auto vtu = [&](const std::string& name, const ThermalBodyResult& b) {
         const std::string path = (fs::path(dir) / name).string();
         writeVtu(path, b.mesh,
-                        {{"temperature_k", b.temperature.transpose()},
-                         {"thermal_displacement_m", b.deformation.displacement.reshaped(3, b.mesh.numNodes())}},
-                        {{"reference_temperature_k", c.referenceTemperature}});
+                 {{"temperature_k", b.temperature.transpose()},
+                  {"thermal_displacement_m", b.deformation.displacement.reshaped(3, b.mesh.numNodes())}},
+                 {{"reference_temperature_k", c.referenceTemperature}});
         files.push_back(name);
+    };
+    // The body's table for thermal.h5 with its attributes and provenance.
+    auto table = [&](const ThermalBodyResult& b, const auto& bc) {
+        return ThermalBodyTable{b.table, bodyAttributes(b, c.referenceTemperature),
+                                {{"mesh", bc.mesh.path}, {"surface", fmt::format("{}", fmt::join(bc.surface, ","))}}};
     };
     std::optional<ThermalBodyTable> pistonTable, linerTable;
     if (r.piston) {
-        const auto& p = *r.piston;
-        const auto& pc = *c.piston;
-        vtu("piston.vtu", p);
-        pistonTable = ThermalBodyTable{p.table, bodyAttributes(p, c.referenceTemperature),
-                                              {{"mesh", pc.mesh.path}, {"surface", fmt::format("{}", fmt::join(pc.surface, ","))}}};
-        nlohmann::json j;
-        j["mesh"] = pc.mesh.path;
-        j["nodes"] = p.mesh.numNodes();
-        j["element_type"] = std::string(fem::name(p.mesh.volume.type));
-        j["temperature"] = temperatureSummary(p.temperature);
-        nlohmann::json bc = nlohmann::json::object();
-        for (std::size_t g = 0; g < pc.convection.size(); ++g) {
-            const auto k = Eigen::Index(g);
-            bc[pc.convection[g].group] = {{"h_w_m2k", p.parameters.hScale(k) * pc.convection[g].h},
-                                          {"h_factor", p.parameters.hScale(k)},
-                                          {"fluid_temperature_k", p.parameters.fluidTemperature(k)},
-                                          {"heat_flow_w", p.heatFlow(k)}};
-        }
-        j["convection"] = bc;
-        if (p.calibration) {
-            const auto& cal = *p.calibration;
-            nlohmann::json params = nlohmann::json::array(), points = nlohmann::json::array();
-            for (std::size_t k = 0; k < pc.parameters.size(); ++k)
-                params.push_back({{"parameter", pc.parameters[k].label()},
-                                  {"group", pc.parameters[k].group},
-                                  {"kind", pc.parameters[k].kind == fem::CalibrationParameter::Kind::HeatTransferScale
-                                               ? "h_factor"
-                                               : "fluid_temperature_k"},
-                                  {"value", cal.values(Eigen::Index(k))},
-                                  {"at_bound", bool(cal.atBound[k])}});
-            for (std::size_t i = 0; i < pc.templugs.size(); ++i) {
-                const auto& t = pc.templugs[i];
-                points.push_back({{"name", t.name},
-                                  {"position_m", {t.position(0), t.position(1), t.position(2)}},
-                                  {"measured_k", t.temperature},
-                                  {"computed_k", cal.computed(Eigen::Index(i))},
-                                  {"residual_k", cal.residuals(Eigen::Index(i))}});
-            }
-            j["calibration"] = {{"matched", cal.matched},
-                                {"message", cal.message},
-                                {"converged", cal.converged},
-                                {"iterations", cal.iterations},
-                                {"rms_residual_k", cal.rms},
-                                {"max_abs_residual_k", cal.maxAbs},
-                                {"initial_rms_residual_k", cal.initialRms},
-                                {"tolerance_k", pc.tolerance},
-                                {"parameters", params},
-                                {"templugs", points}};
-        }
-        j["support"] = {{"reference", pc.support}, {"determinate_reaction_relative", p.deformation.determinateReaction}};
-        j["radial_displacement"] = tableSummary(p.table);
-        j["seconds"] = p.seconds;
-        doc["piston"] = j;
+        vtu("piston.vtu", *r.piston);
+        pistonTable = table(*r.piston, *c.piston);
+        doc["piston"] = pistonSummary(*c.piston, *r.piston);
     }
     if (r.liner) {
-        const auto& l = *r.liner;
-        const auto& lc = *c.liner;
-        vtu("liner.vtu", l);
-        linerTable = ThermalBodyTable{l.table, bodyAttributes(l, c.referenceTemperature),
-                                             {{"mesh", lc.mesh.path}, {"surface", fmt::format("{}", fmt::join(lc.surface, ","))}}};
-        nlohmann::json held = nlohmann::json::array();
-        for (const auto& h : lc.held) held.push_back(h.group);
-        doc["liner"] = {{"mesh", lc.mesh.path},
-                        {"nodes", l.mesh.numNodes()},
-                        {"element_type", std::string(fem::name(l.mesh.volume.type))},
-                        {"temperature", temperatureSummary(l.temperature)},
-                        {"support", {{"held", held},
-                                     {"reference", lc.reference},
-                                     {"free_rigid_modes", l.deformation.freeRigidModes},
-                                     {"determinate_reaction_relative", l.deformation.determinateReaction}}},
-                        {"radial_displacement", tableSummary(l.table)},
-                        {"seconds", l.seconds}};
+        vtu("liner.vtu", *r.liner);
+        linerTable = table(*r.liner, *c.liner);
+        doc["liner"] = linerSummary(*c.liner, *r.liner);
     }
     writeThermalFile((fs::path(dir) / "thermal.h5").string(), pistonTable, linerTable);
     files.push_back("thermal.h5");
@@ -157,7 +173,6 @@ nlohmann::json writeThermalResults(const std::string& dir, const std::string& ca
     doc["timings_s"] = {{"write", w.seconds()}, {"total", total.seconds()}};
     doc["peak_memory_mib"] = fem::peakMemoryMiB();
     fem::writeTextAtomically((fs::path(dir) / "summary.json").string(), doc.dump(2) + "\n");
-
     return doc;
 }
 
