@@ -34,7 +34,11 @@ double faceFlow(const FilmGrid& g, const FilmState& film, const Eigen::VectorXd&
     const double hf = faceValue(g, film.h, a, b);
     const double ef = faceValue(g, eta, a, b);
     const double U = axial ? film.sumAxial() : film.sumCircumferential();
-    const double frac = phi ? faceValue(g, *phi, a, b) : 1.0;
+    // The film fraction the Couette flow carries: the upstream node's, as in the mass-conserving
+    // scheme (JfoSolver), so that the flows balance as its equations do (a face from a Void node:
+    // the face value, the film's own).
+    const int up = U > 0.0 ? a : b;
+    const double frac = !phi ? 1.0 : g.kind(up) == NodeKind::Void ? faceValue(g, *phi, a, b) : (*phi)[up];
     return hf * hf * hf * L / (12.0 * ef * d) * (p[a] - p[b]) + 0.5 * U * frac * hf * L;
 }
 

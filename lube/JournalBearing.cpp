@@ -23,6 +23,12 @@ void requirePositive(double v, const char* what) {
     }
 }
 
+// The grid column of the groove: the one nearest to its angle.
+int grooveColumn(const JournalBearingSpec& s) {
+    const int n = s.circumferentialNodes;
+    return static_cast<int>(std::lround(s.grooveAngleDeg / 360.0 * n)) % n;
+}
+
 // The bearing's film grid and film thickness: groove nodes held at 0, journal surface speed ωR.
 FilmGrid bearingGrid(const JournalBearingSpec& s) {
     const int nZ = s.infinitelyLong ? 2 : s.axialNodes;
@@ -33,7 +39,7 @@ FilmGrid bearingGrid(const JournalBearingSpec& s) {
         grid.setEdge(Edge::AxialHigh, EdgeCondition::Symmetry);
     }
     if (s.supplyGroove)
-        for (int i = 0; i < nZ; ++i) grid.fixNode(grid.index(i, 0), 0.0);
+        for (int i = 0; i < nZ; ++i) grid.fixNode(grid.index(i, grooveColumn(s)), 0.0);
     return grid;
 }
 
@@ -60,7 +66,10 @@ FilmSolution solveFilm(const JournalBearingSpec& s, const FilmGrid& grid, const 
         opt.control.tolerance = s.tolerance;
         opt.omega = s.omega;
         opt.method = s.solver == SolverKind::Psor ? JfoMethod::GaussSeidel : JfoMethod::ActiveSet;
-        JfoResult r = JfoSolver(grid, oil, opt).solve(film);
+        JfoSolver jfo(grid, oil, opt);
+        if (s.supplyGroove)
+            for (int i = 0; i < grid.nAxial(); ++i) jfo.setInletFraction(grid.index(i, grooveColumn(s)), s.supplyFraction);
+        JfoResult r = jfo.solve(film);
         out.pressure = std::move(r.pressure);
         out.fraction = std::move(r.fraction);
         out.iterations = r.iterations + r.factorizations;
@@ -96,6 +105,15 @@ JournalBearing::JournalBearing(const JournalBearingSpec& spec) : spec_(spec) {
         throw std::invalid_argument("journal bearing: the eccentricity ratio must be in (0, 1)");
     if (spec.clearance >= spec.radius)
         throw std::invalid_argument("journal bearing: the clearance must be smaller than the radius");
+    if (!(spec.grooveAngleDeg >= 0.0 && spec.grooveAngleDeg < 360.0))
+        throw std::invalid_argument("journal bearing: the groove angle must be in [0, 360) deg");
+    if (!(spec.supplyFraction > 0.0 && spec.supplyFraction <= 1.0))
+        throw std::invalid_argument("journal bearing: the supply's film fraction must be in (0, 1]");
+    if (spec.supplyFraction < 1.0 && spec.cavitation != BearingCavitation::MassConserving)
+        throw std::invalid_argument("journal bearing: a starved supply needs the mass-conserving film (the "
+                                    "Reynolds models take as much oil as the film wants)");
+    if (!spec.supplyGroove && (spec.grooveAngleDeg != 0.0 || spec.supplyFraction < 1.0))
+        throw std::invalid_argument("journal bearing: a groove angle or a starved supply needs the groove");
     if (!spec.supplyGroove && (spec.infinitelyLong || spec.cavitation == BearingCavitation::MassConserving))
         throw std::invalid_argument("journal bearing: the supply groove is needed by a mass-conserving film "
                                     "(which drains dry without it) and by the infinitely long bearing (its "
@@ -115,6 +133,8 @@ JournalBearingResult JournalBearing::solve() const {
     JournalBearingResult res;
     res.solverName = methodName();
     res.axialNodes = grid.nAxial();
+    const int jg = grooveColumn(s);
+    res.grooveAngleDeg = s.supplyGroove ? 360.0 * jg / s.circumferentialNodes : 0.0;
     const auto t0 = std::chrono::steady_clock::now();
     const FilmSolution sol = solveFilm(s, grid, film, oil);
     res.solveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -138,9 +158,12 @@ JournalBearingResult JournalBearing::solve() const {
     res.frictionPower = res.frictionTorque * (2 * kPi * N);
     res.frictionCoefficient = res.frictionTorque / (R * res.load);
     res.frictionVariable = (R / c) * res.frictionCoefficient;
-    // Inlet flow: through the line at θ = Δθ/2 next to the maximum film; side leakage: out of
-    // both ends (the face fluxes extrapolated to the ends, docs/lube.md §5).
-    res.inletFlow = circumferentialFlow(grid, film, oil, sol.pressure, 0, phi);
+    // Inlet flow: through the line half a cell downstream of the groove; the flow reaching the
+    // groove through the line half a cell upstream; side leakage: out of both ends (the face
+    // fluxes extrapolated to the ends, docs/lube.md §5).
+    const int n = s.circumferentialNodes;
+    res.inletFlow = circumferentialFlow(grid, film, oil, sol.pressure, jg, phi);
+    res.returnFlow = circumferentialFlow(grid, film, oil, sol.pressure, (jg + n - 1) % n, phi);
     res.sideFlow = s.infinitelyLong ? 0.0
                                     : axialEdgeFlow(grid, film, oil, sol.pressure, Edge::AxialHigh, phi) -
                                           axialEdgeFlow(grid, film, oil, sol.pressure, Edge::AxialLow, phi);

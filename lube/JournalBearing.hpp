@@ -3,10 +3,14 @@
 // film h = c(1 + ε cos θ) with θ from the maximum film (docs/lube.md §1) — solved by the
 // lubrication library, with the dimensionless numbers of the design charts (Raimondi & Boyd,
 // ASLE Trans. 1 (1958) 159): Sommerfeld number, attitude angle, friction and flow variables,
-// pressure ratio. The oil enters through a full-length axial groove at the maximum film at
-// ambient pressure 0 (Raimondi & Boyd's boundary condition; also the datum where the infinitely
-// long Sommerfeld solutions vanish); the ends are open at ambient pressure, or, for the
-// infinitely long bearing, one axial cell with zero-flux ends.
+// pressure ratio. The oil enters through a full-length axial groove at ambient pressure 0, by
+// default at the maximum film (Raimondi & Boyd's boundary condition; also the datum where the
+// infinitely long Sommerfeld solutions vanish), or anywhere round the sleeve (where the groove
+// lies in the diverging film, the mass-conserving film ruptures downstream of the minimum film
+// and re-forms inside the bearing, ahead of the groove); with the mass-conserving film the groove
+// may supply a starved film (the Couette flow leaving it carries a film fraction below 1). The
+// ends are open at ambient pressure, or, for the infinitely long bearing, one axial cell with
+// zero-flux ends (docs/lube.md §8).
 #include <string>
 
 #include "lube/ReynoldsSolver.hpp"
@@ -26,7 +30,13 @@ struct JournalBearingSpec {
     double speed = 50.0;         ///< journal speed N (rev/s)
     double viscosity = 0.01;     ///< dynamic viscosity μ (Pa s)
     bool infinitelyLong = false; ///< no side leakage; loads for the length L
-    bool supplyGroove = true;    ///< the axial groove at θ = 0 (needed by MassConserving)
+    bool supplyGroove = true;    ///< the axial supply groove (needed by MassConserving)
+    /// °, where the groove is, from the maximum film in the direction of rotation, in [0, 360):
+    /// the grid column nearest to it (JournalBearingResult::grooveAngleDeg)
+    double grooveAngleDeg = 0.0;
+    /// The film fraction of the oil the groove supplies, in (0, 1]: 1 flooded, < 1 a starved
+    /// supply (MassConserving only)
+    double supplyFraction = 1.0;
     BearingCavitation cavitation = BearingCavitation::Reynolds;
     /// Reynolds models: the complementarity solver. MassConserving: Psor = the projected
     /// Gauss–Seidel sweeps of Ausas et al., otherwise the active-set method on sparse LU.
@@ -40,6 +50,7 @@ struct JournalBearingSpec {
 struct JournalBearingResult {
     std::string solverName;           ///< the method that solved the film
     int axialNodes = 0;               ///< of the grid solved
+    double grooveAngleDeg = 0.0;      ///< °, the groove's grid column (the spec's angle, snapped)
     double load = 0.0;                ///< W (N)
     double loadAlongLineOfCentres = 0.0, loadPerpendicular = 0.0;  ///< components of W (N)
     double specificLoad = 0.0;        ///< P = W/(LD) (Pa)
@@ -50,6 +61,7 @@ struct JournalBearingResult {
     double frictionCoefficient = 0.0; ///< f = T/(RW)
     double frictionVariable = 0.0;    ///< (R/c) f
     double inletFlow = 0.0;           ///< Q through the groove's downstream edge (m³/s)
+    double returnFlow = 0.0;          ///< flow reaching the groove from upstream (m³/s)
     double sideFlow = 0.0;            ///< Qs out of both ends (m³/s)
     double flowVariable = 0.0;        ///< Q/(R c N L)
     double maxPressure = 0.0;         ///< Pa

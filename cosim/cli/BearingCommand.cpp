@@ -33,6 +33,8 @@ struct BearingArgs {
     double omega = 0.0;  // PSOR / JFO over-relaxation, 0 = automatic
     bool infinitelyLong = false;
     bool noGroove = false;
+    double grooveAngle = 0.0;     // deg from the maximum film
+    double supplyFraction = 1.0;  // film fraction of the groove's oil
     bool json = false;
 };
 
@@ -111,6 +113,17 @@ lube::JournalBearingSpec bearingSpec(const BearingArgs& a) {
                                     "a mass-conserving film without a supply drains dry");
     if (a.infinitelyLong && a.noGroove)
         throw std::invalid_argument("--infinitely-long needs the groove as its pressure datum (drop --no-groove)");
+    if (!(a.grooveAngle >= 0.0 && a.grooveAngle < 360.0))
+        throw std::invalid_argument("--groove-angle must be in [0, 360) deg from the maximum film (got " +
+                                    str(a.grooveAngle) + ")");
+    if (!(a.supplyFraction > 0.0 && a.supplyFraction <= 1.0))
+        throw std::invalid_argument("--supply-fraction must be in (0, 1]: the share of the gap the supplied oil fills "
+                                    "(got " + str(a.supplyFraction) + ")");
+    if (a.supplyFraction < 1.0 && s.cavitation != lube::BearingCavitation::MassConserving)
+        throw std::invalid_argument("--supply-fraction below 1 (a starved supply) needs --cavitation jfo: the other "
+                                    "models take as much oil as the film wants");
+    if (a.noGroove && (a.grooveAngle != 0.0 || a.supplyFraction < 1.0))
+        throw std::invalid_argument("--groove-angle and --supply-fraction place and feed the groove: drop --no-groove");
     s.radius = a.radius;
     s.clearance = a.clearance;
     s.eccentricity = a.eccentricity;
@@ -119,6 +132,8 @@ lube::JournalBearingSpec bearingSpec(const BearingArgs& a) {
     s.length = a.length > 0.0 ? a.length : (a.lengthOverDiameter > 0.0 ? a.lengthOverDiameter : 1.0) * 2 * a.radius;
     s.infinitelyLong = a.infinitelyLong;
     s.supplyGroove = !a.noGroove;
+    s.grooveAngleDeg = a.grooveAngle;
+    s.supplyFraction = a.supplyFraction;
     s.circumferentialNodes = nTheta;
     s.axialNodes = nZ;
     s.tolerance = a.tolerance;
@@ -133,6 +148,8 @@ nlohmann::json resultJson(const lube::JournalBearingSpec& s, const lube::Journal
                     {"length_over_diameter", s.length / (2 * s.radius)},
                     {"infinitely_long", s.infinitelyLong},
                     {"supply_groove", s.supplyGroove},
+                    {"groove_angle_deg", r.grooveAngleDeg},
+                    {"supply_fraction", s.supplyFraction},
                     {"clearance_m", s.clearance},
                     {"eccentricity", s.eccentricity},
                     {"speed_rev_s", s.speed},
@@ -152,6 +169,7 @@ nlohmann::json resultJson(const lube::JournalBearingSpec& s, const lube::Journal
     doc["friction_coefficient"] = r.frictionCoefficient;
     doc["friction_variable"] = r.frictionVariable;
     doc["inlet_flow_m3_s"] = r.inletFlow;
+    doc["return_flow_m3_s"] = r.returnFlow;
     doc["side_flow_m3_s"] = r.sideFlow;
     doc["flow_variable"] = r.flowVariable;
     doc["side_flow_ratio"] = r.sideFlow / r.inletFlow;
@@ -172,8 +190,12 @@ void printTable(const lube::JournalBearingSpec& s, const lube::JournalBearingRes
     std::printf("journal bearing: R = %g m, L = %g m (L/D = %g%s), c = %g m, eps = %g, N = %g rev/s, mu = %g Pa s\n",
                 s.radius, s.length, s.length / D, s.infinitelyLong ? ", infinitely long" : "", s.clearance,
                 s.eccentricity, s.speed, s.viscosity);
-    std::printf("%s cavitation, %s solver, grid %dx%d (theta x z)\n\n", lube::name(s.cavitation),
-                r.solverName.c_str(), s.circumferentialNodes, r.axialNodes);
+    std::printf("%s cavitation, %s solver, grid %dx%d (theta x z)", lube::name(s.cavitation), r.solverName.c_str(),
+                s.circumferentialNodes, r.axialNodes);
+    if (s.supplyGroove)
+        std::printf(", groove at %g deg from the maximum film%s", r.grooveAngleDeg,
+                    s.supplyFraction < 1.0 ? (", starved supply: film fraction " + str(s.supplyFraction)).c_str() : "");
+    std::printf("\n\n");
     auto row = [](const char* what, double v, const char* unit) {
         std::printf("  %-34s %14.6g  %s\n", what, v, unit);
     };
@@ -186,6 +208,7 @@ void printTable(const lube::JournalBearingSpec& s, const lube::JournalBearingRes
     row("friction coefficient f", r.frictionCoefficient, "-");
     row("friction variable (R/c) f", r.frictionVariable, "-");
     row("inlet flow Q", r.inletFlow, "m^3/s");
+    row("return flow into the groove", r.returnFlow, "m^3/s");
     row("side flow Qs", r.sideFlow, "m^3/s");
     row("flow variable Q/(R c N L)", r.flowVariable, "-");
     row("max pressure", r.maxPressure, "Pa");
@@ -253,6 +276,14 @@ void addBearingCommand(CLI::App& app) {
     cmd->add_flag("--no-groove", a->noGroove,
                   "No supply groove (default: a full-length axial groove at the maximum film, theta = 0, "
                   "at ambient pressure 0, as in Raimondi-Boyd)");
+    cmd->add_option("--groove-angle", a->grooveAngle,
+                    "Where the supply groove is, from the maximum film in the direction of rotation [deg], "
+                    "in [0, 360); the nearest grid column")
+        ->capture_default_str();
+    cmd->add_option("--supply-fraction", a->supplyFraction,
+                    "Film fraction of the oil the groove supplies, in (0, 1] [-]: below 1 a starved supply "
+                    "(with --cavitation jfo)")
+        ->capture_default_str();
     cmd->add_option("--tolerance", a->tolerance, "Relative natural residual to stop at [-]")->capture_default_str();
     cmd->add_option("--omega", a->omega, "Over-relaxation of psor and jfo in (0, 2) [-]; 0 = automatic")
         ->capture_default_str();

@@ -159,7 +159,12 @@ TEST(CliBearing, BadInputFailsClearly) {
                           Case{"--eccentricity 0.5 --grid 100000x4000",
                                "--grid 100000x4000: the film grid of 100000 × 4000 = 400000000 nodes needs at least "
                                "200 GB of memory"},
-                          Case{"--eccentricity 0.5 --length 0.1 --length-over-diameter 1", "not both"}}) {
+                          Case{"--eccentricity 0.5 --length 0.1 --length-over-diameter 1", "not both"},
+                          Case{"--eccentricity 0.5 --groove-angle 360", "--groove-angle must be in [0, 360)"},
+                          Case{"--eccentricity 0.5 --groove-angle -10", "--groove-angle must be in [0, 360)"},
+                          Case{"--eccentricity 0.5 --supply-fraction 0", "--supply-fraction must be in (0, 1]"},
+                          Case{"--eccentricity 0.5 --supply-fraction 0.5", "needs --cavitation jfo"},
+                          Case{"--eccentricity 0.5 --no-groove --groove-angle 90", "drop --no-groove"}}) {
         const CommandResult r = runFlexehd(std::string("bearing ") + k.args);
         EXPECT_EQ(r.status, 1) << k.args;
         EXPECT_TRUE(r.out.empty()) << k.args;
