@@ -385,8 +385,8 @@ void JfoSolver::setInletFraction(int node, double fraction) {
     if (node < 0 || node >= grid_.size())
         throw std::out_of_range("JfoSolver::setInletFraction: node " + std::to_string(node) +
                                 " outside the grid");
-    if (!(fraction > 0.0 && fraction <= 1.0))
-        throw std::invalid_argument("JfoSolver::setInletFraction: fraction must be in (0, 1], got " +
+    if (!(fraction >= 0.0 && fraction <= 1.0))
+        throw std::invalid_argument("JfoSolver::setInletFraction: fraction must be in [0, 1], got " +
                                     std::to_string(fraction));
     inlet_[static_cast<std::size_t>(node)] = fraction;
 }
@@ -423,15 +423,20 @@ double JfoSolver::oilVolume(const FilmState& film, const Eigen::VectorXd& fracti
 }
 
 double JfoSolver::boundaryInflow(const FilmState& film, const JfoResult& r) const {
+    return boundaryFlows(film, r).sum();
+}
+
+Eigen::VectorXd JfoSolver::boundaryFlows(const FilmState& film, const JfoResult& r) const {
     const std::vector<Face> faces = buildFaces(grid_, film, lubricant_.referenceViscosity());
-    double q = 0.0;
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(grid_.size());
     for (const Face& f : faces) {
         const bool fa = grid_.kind(f.a) == NodeKind::Film, fb = grid_.kind(f.b) == NodeKind::Film;
         if (fa == fb) continue;
         const double phiA = fa ? r.fraction[f.a] : inlet_[static_cast<std::size_t>(f.a)];
         const double phiB = fb ? r.fraction[f.b] : inlet_[static_cast<std::size_t>(f.b)];
         const double ab = f.c * (r.pressure[f.a] - r.pressure[f.b]) + f.q * (f.q > 0.0 ? phiA : phiB);
-        q += fb ? ab : -ab;  // into the Film node
+        if (fb) q[f.a] += ab;  // from the boundary node a into the Film node b
+        else q[f.b] -= ab;
     }
     return q;
 }

@@ -79,8 +79,8 @@ public:
     /// Constant-property lubricant only (throws otherwise): JFO with ρ(p), η(p) is not built.
     JfoSolver(FilmGrid grid, Lubricant lubricant, JfoOptions options = {});
 
-    /// Film fraction φ_in ∈ (0, 1] carried by the Couette flow leaving a Fixed node (starved
-    /// inlet). Default 1 (flooded).
+    /// Film fraction φ_in ∈ [0, 1] carried by the Couette flow leaving a Fixed node (starved
+    /// inlet; 0: a dry surface). Default 1 (flooded).
     void setInletFraction(int node, double fraction);
 
     /// Steady solve (dt = 0), or one backward-Euler step of length dt from `previous`.
@@ -93,6 +93,9 @@ public:
     /// Net volumetric flow (m³/s) from the Fixed nodes into the Film nodes (the boundary inflow),
     /// with the scheme's own face fluxes.
     double boundaryInflow(const FilmState& film, const JfoResult& result) const;
+    /// The same flow per boundary node: the net flow (m³/s) from each Fixed or Void node into the
+    /// Film nodes next to it (0 on Film nodes); its sum is boundaryInflow.
+    Eigen::VectorXd boundaryFlows(const FilmState& film, const JfoResult& result) const;
 
     const FilmGrid& grid() const { return grid_; }
 

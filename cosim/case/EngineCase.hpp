@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,11 +50,38 @@ struct PistonSpec {
     double ovality = 0.0;
 };
 
+/// How the film cavitates (docs/lube.md §3, §3b): the Reynolds (Swift–Stieber) condition on the
+/// pressure alone, or the mass-conserving JFO (Elrod–Adams) film with its film fraction.
+enum class CavitationModel { Reynolds, MassConserving };
+
+/// Where the skirt's oil comes from (docs/coupling.md §6): as much as the film draws (flooded), or
+/// the oil layer the liner carries, transported over the cycle.
+enum class OilSupplyModel { Flooded, LinerLayer };
+
+struct OilLayerPoint {
+    double depth = 0.0;      ///< m below the deck (liner frame z = −depth)
+    double thickness = 0.0;  ///< m, oil layer on the liner
+};
+
+struct OilSupplySpec {
+    OilSupplyModel model = OilSupplyModel::Flooded;
+    /// The liner's oil layer at the start, depth ascending: one point is a constant layer;
+    /// linear between points, constant beyond the ends.
+    std::vector<OilLayerPoint> layer;
+    /// Replenishment: below this depth (m) the layer outside the skirt is restored to `layer` at
+    /// every step (splash from the crankcase). NaN: the depth of the skirt's lower edge at
+    /// mid-stroke (crank angle 90°). Off with `replenish` false.
+    double replenishBelowDepth = std::numeric_limits<double>::quiet_NaN();
+    bool replenish = true;
+};
+
 struct LubricantSpec {
     double viscosity = 0.01;          ///< Pa·s, at the film temperature
     double density = 850.0;           ///< kg/m³
     double barusAlpha = 0.0;          ///< 1/Pa, 0 = constant viscosity
     double cavitationPressure = 0.0;  ///< Pa, gauge (relative to the crankcase pressure)
+    CavitationModel cavitation = CavitationModel::Reynolds;
+    OilSupplySpec supply;             ///< liner_layer needs cavitation MassConserving
 };
 
 struct ContactSpec {

@@ -1,6 +1,6 @@
 #pragma once
 // FilmContact: one lubricated contact of the piston as the co-simulation master sees it
-// (docs/coupling.md §4, "What a contact provides"). The master's unknowns of a step are the
+// (docs/coupling.md §1, "Film contacts"). The master's unknowns of a step are the
 // secondary motion x = (e, β) and the modal coordinates y of the flexible bodies (the piston's,
 // then the liner's); a contact turns an iterate (x, y) into
 //   * its film: thickness from the motion, its clearance terms and the bodies' elastic change,
@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <string>
 
 namespace flexehd::cosim {
@@ -31,12 +32,27 @@ struct ContactStep {
     double linerOffset = 0.0;         ///< m, liner-frame z of the piston frame's origin
 };
 
+class LinerOilLayer;
+
+/// Oil volumes (m³) a mass-conserving film exchanged since the start of the run (docs/coupling.md
+/// §6): through its axial edges in and out, out at its sides (into the panels' relief: lost to
+/// the crankcase), added to the liner by the replenishment (< 0: removed), and what the film drew
+/// beyond the liner's layer (should stay 0).
+struct OilBalance {
+    double edgeIn = 0.0, edgeOut = 0.0, sideOut = 0.0, replenished = 0.0, shortfall = 0.0;
+};
+
 /// A contact's film at an accepted step: the history its squeeze term and warm start need.
 struct ContactState {
     Eigen::VectorXd h;       ///< m, the film thickness the film equation saw (floored)
     Eigen::VectorXd hRigid;  ///< m, rigid motion + clearance terms
     Eigen::VectorXd hTotal;  ///< m, rigid + elastic, unfloored (< 0: overlap)
     Eigen::VectorXd p;       ///< Pa, gauge film pressure
+    Eigen::VectorXd fraction;  ///< mass-conserving film: film fraction φ per node (empty: Reynolds)
+    double linerOffset = 0.0;  ///< m, the step's liner offset
+    /// The liner's oil layer outside the skirt (null: flooded supply).
+    std::shared_ptr<const LinerOilLayer> oil;
+    OilBalance oilBalance;     ///< mass-conserving film: cumulative volumes
 };
 
 /// A contact's film at one iterate (x, y) of a step.
@@ -49,6 +65,11 @@ struct ContactIterate {
     int floored = 0;         ///< nodes where the film equation saw the floor, not hTotal
     lube::FilmLoads loads;   ///< forces, moments (about the pin), friction, powers
     FilmAction action;       ///< on the piston's equations of motion
+    // The mass-conserving film only (empty / 0 with the Reynolds condition):
+    Eigen::VectorXd fraction;                ///< film fraction φ per node
+    Eigen::VectorXd inflowLow, inflowHigh;   ///< m³/s per grid column into the film through its lower / upper edge
+    double sideInflow = 0.0;                 ///< m³/s into the film at its sides (< 0: leakage)
+    double oilVolume = 0.0;                  ///< m³, oil in the film, Σ V φ h
 };
 
 /// The change of a contact's loads with the modal coordinates y at an iterate, affine in the
@@ -97,8 +118,8 @@ public:
     /// coupling.method newton: the loads' change with y at the iterate.
     virtual void linearize(const ContactStep& step, const Eigen::Vector2d& x, const ContactIterate& it,
                            ContactJacobian& J, WorkTally& work) = 0;
-    /// The state kept from an accepted iterate.
-    virtual ContactState accepted(const ContactIterate& it) const = 0;
+    /// The state kept from an accepted iterate of the step from `now`.
+    virtual ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const = 0;
     /// The resultant mapped onto the flexible piston against the film's normal force:
     /// worstDiff = max |mapped − film| (N), largestForce = max |film| (N) over the calls.
     virtual void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const = 0;

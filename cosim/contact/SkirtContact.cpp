@@ -5,6 +5,8 @@
 #include "cosim/contact/SkirtContact.hpp"
 
 #include "cosim/clearance/ClearanceTerms.hpp"
+#include "cosim/contact/MassConservingFilm.hpp"
+#include "cosim/contact/ReynoldsFilm.hpp"
 #include "cosim/mapping/FlexibleBodyLoader.hpp"
 #include "fem/Stopwatch.hpp"
 
@@ -14,32 +16,15 @@
 
 namespace flexehd::cosim {
 
-namespace {
-
-lube::Lubricant makeLubricant(const LubricantSpec& l) {
-    lube::Lubricant lub(l.viscosity, l.density);
-    if (l.barusAlpha > 0.0) lub.withBarus(l.barusAlpha);
-    return lub;
-}
-
-// Multigrid, redone by the active-set method where it stalls (ReynoldsOptions::fallback).
-lube::ReynoldsOptions filmSolverOptions(const LubricantSpec& l) {
-    lube::ReynoldsOptions o;
-    o.cavitation = lube::Cavitation::Reynolds;
-    o.solver = lube::SolverKind::Multigrid;
-    o.fallback = lube::SolverKind::ActiveSet;
-    o.cavitationPressure = l.cavitationPressure;
-    o.control.tolerance = 1e-8;
-    return o;
-}
-
-}  // namespace
 
 SkirtContact::SkirtContact(const EngineCase& c, std::function<double(double)> linerOffset)
     : case_(c),
       linerOffset_(std::move(linerOffset)),
-      film_(c.engine, c.piston, c.grid),
-      solver_(film_.grid(), makeLubricant(c.lubricant), filmSolverOptions(c.lubricant)) {
+      film_(c.engine, c.piston, c.grid) {
+    if (c.lubricant.cavitation == CavitationModel::MassConserving)
+        equation_ = std::make_unique<MassConservingFilm>(c, film_.grid(), linerOffset_);
+    else
+        equation_ = std::make_unique<ReynoldsFilm>(c, film_.grid());
     if (c.contact.compositeModulus > 0.0) {
         contact_.emplace(c.contact.sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
         foundation_.emplace(c.contact.hardContactStiffness > 0.0
@@ -84,6 +69,8 @@ ContactState SkirtContact::initialState(double linerOffset) const {
     if (clearance_) clearance_->add(linerOffset, s.h);
     s.hRigid = s.h;
     s.hTotal = s.h;  // undeformed bodies at the start
+    s.linerOffset = linerOffset;
+    equation_->initialize(s);
     return s;
 }
 
@@ -161,26 +148,12 @@ lube::FilmIntegralOptions SkirtContact::integralOptions() const {
 
 void SkirtContact::solveFilm(const ContactStep& step, const ContactState& now, const ContactState& before,
                              ContactIterate& it, WorkTally& work) {
-    const lube::FilmGrid& g = film_.grid();
-    // Squeeze term: BDF2 of the whole (unfloored) film thickness with coupling.elastic_squeeze,
-    // else of the rigid film thickness only (docs/coupling.md §3: with the elastic rate the
-    // partitioned coupling has a gain ∝ 1/Δt and does not converge; it needs the Newton method).
-    if (case_.coupling.elasticSqueeze)
-        it.dhdt = (step.a0 * it.hTotal + step.a1 * now.hTotal + step.a2 * before.hTotal) / step.dt;
-    else
-        it.dhdt = (step.a0 * it.hRigid + step.a1 * now.hRigid + step.a2 * before.hRigid) / step.dt;
     lube::FilmState fs;
-    fs.h = it.h;
-    fs.dhdt = it.dhdt;
-    fs.outer.axial = -step.pistonVelocity;  // the liner slides past the piston-fixed grid
-    const Eigen::VectorXd* warm = now.p.size() == g.size() ? &now.p : nullptr;
-    lube::ReynoldsResult solved = solver_.solve(fs, warm);
-    it.p = std::move(solved.pressure);
-    if (solved.fellBack) ++work.fallbackSolves;
-    ++work.filmSolves;
+    equation_->solve(step, now, before, it, fs, work);
     lube::FilmIntegralOptions io = integralOptions();
     io.contactPressure = contact_ ? &it.pc : nullptr;
-    it.loads = lube::integrateFilm(g, fs, solver_.lubricant(), it.p, io);
+    io.filmFraction = it.fraction.size() ? &it.fraction : nullptr;
+    it.loads = lube::integrateFilm(film_.grid(), fs, equation_->lubricant(), it.p, io);
     const Eigen::Vector3d F = it.loads.totalForce();
     it.action = {F.x(), F.z(), it.loads.moment.y()};
 }
@@ -233,12 +206,15 @@ Eigen::VectorXd SkirtContact::modalFilmChangeScale() const {
     return s;
 }
 
-ContactState SkirtContact::accepted(const ContactIterate& it) const {
+ContactState SkirtContact::accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const {
     ContactState s;
     s.h = it.h;
     s.hRigid = it.hRigid;
     s.hTotal = it.hTotal;
     s.p = it.p;
+    s.linerOffset = step.linerOffset;
+    s.oil = now.oil;
+    equation_->accept(step, now, it, s);
     return s;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// SkirtContact: the piston skirt's film against the liner as a FilmContact (docs/coupling.md §4).
+// SkirtContact: the piston skirt's film against the liner as a FilmContact (docs/coupling.md §1).
 // Its grid is fixed to the piston (SkirtFilm); the film thickness is the rigid motion's
 // (docs/dynamics.md §3) plus the clearance terms at the liner offset (ClearanceTerms: bore
 // distortion, thermal growth) plus the elastic change of the flexible piston and liner
@@ -11,12 +11,12 @@
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
+#include "cosim/contact/FilmEquation.hpp"
 #include "cosim/engine/SkirtFilm.hpp"
 #include "cosim/mapping/FlexibleSurface.hpp"
 #include "lube/ElasticFoundation.hpp"
 #include "lube/FilmLinearization.hpp"
 #include "lube/GreenwoodTripp.hpp"
-#include "lube/ReynoldsSolver.hpp"
 
 #include <functional>
 #include <limits>
@@ -51,12 +51,14 @@ public:
     Eigen::VectorXd modalFilmChangeScale() const override;
     void linearize(const ContactStep& step, const Eigen::Vector2d& x, const ContactIterate& it, ContactJacobian& J,
                    WorkTally& work) override;
-    ContactState accepted(const ContactIterate& it) const override;
+    ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const override;
     void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const override;
 
     const SkirtFilm& film() const { return film_; }
     const lube::FilmGrid& grid() const { return film_.grid(); }
-    const lube::Lubricant& lubricant() const { return solver_.lubricant(); }
+    const lube::Lubricant& lubricant() const { return equation_->lubricant(); }
+    /// How the film is solved (lubricant.cavitation).
+    const FilmEquation& equation() const { return *equation_; }
     /// The flexible bodies seen from this grid (null when rigid).
     const FlexibleSurface* piston() const { return piston_.get(); }
     const FlexibleSurface* liner() const { return liner_.get(); }
@@ -84,7 +86,7 @@ private:
     EngineCase case_;
     std::function<double(double)> linerOffset_;
     SkirtFilm film_;
-    lube::ReynoldsSolver solver_;  // multigrid, the active set where it stalls
+    std::unique_ptr<FilmEquation> equation_;  // Reynolds condition or mass-conserving
     std::optional<lube::GreenwoodTripp> contact_;
     std::optional<lube::ElasticFoundation> foundation_;  // hard contact below h = 0 (with contact_)
     std::unique_ptr<FlexibleSurface> piston_, liner_;

@@ -73,7 +73,7 @@ void SkirtContact::linearize(const ContactStep& step, const Eigen::Vector2d& x, 
     fs.h = it.h;
     fs.dhdt = it.dhdt;
     fs.outer.axial = -step.pistonVelocity;
-    const lube::Lubricant& lub = solver_.lubricant();
+    const lube::Lubricant& lub = equation_->lubricant();
     Eigen::VectorXd rho(n), eta(n);
     for (int r = 0; r < n; ++r) {
         rho[r] = lub.density(it.p[r]);
@@ -81,8 +81,10 @@ void SkirtContact::linearize(const ContactStep& step, const Eigen::Vector2d& x, 
     }
     linearization_->linearize(fs, rho, eta, it.p, case_.lubricant.cavitationPressure);
     const Eigen::MatrixXd dPh = linearization_->pressureChange(PsiFilm, Eigen::MatrixXd());
+    // Per unit a0/Δt, the master's rate; the film's own time discretisation may differ (rateFactor).
     const Eigen::MatrixXd dPrate =
-        elasticRate ? linearization_->pressureChange(Eigen::MatrixXd(), Psi, 1.0) : Eigen::MatrixXd(n, 0);
+        elasticRate ? linearization_->pressureChange(Eigen::MatrixXd(), Psi, equation_->rateFactor(step))
+                    : Eigen::MatrixXd(n, 0);
     // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
     // (the load is p + p_c); its slope once per node.
     Eigen::VectorXd slope = Eigen::VectorXd::Zero(n);

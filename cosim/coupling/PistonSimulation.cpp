@@ -1,5 +1,7 @@
 #include "cosim/coupling/PistonSimulation.hpp"
 
+#include "cosim/oil/LinerOilLayer.hpp"
+
 #include "cosim/case/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
 
@@ -125,9 +127,29 @@ StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev
             if (g.kind(k) != lube::NodeKind::Void)
                 r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(f.hTotal[k] - f.hRigid[k]));
     }
+    if (f.fraction.size()) oilRecord(s, f, r);
     r.couplingIterations = iterations;
     r.stepDeg = stepDeg;
     return r;
+}
+
+void PistonSimulation::oilRecord(const StepState& s, const ContactIterate& f, StepRecord& r) const {
+    // The mass-conserving skirt film's oil (docs/coupling.md §6).
+    const lube::FilmGrid& g = skirt_->grid();
+    for (int j = 0; j < g.nTheta(); ++j)
+        for (double q : {f.inflowLow[j], f.inflowHigh[j]}) (q > 0.0 ? r.oilIn : r.oilOut) += std::abs(q);
+    r.sideLeakage = -f.sideInflow;
+    r.filmOil = f.oilVolume;
+    double wet = 0.0, area = 0.0;
+    for (int k = 0; k < g.size(); ++k) {
+        if (g.kind(k) != lube::NodeKind::Film) continue;
+        area += g.area(k);
+        if (f.fraction[k] >= 1.0) wet += g.area(k);
+    }
+    r.wettedShare = area > 0.0 ? wet / area : 0.0;
+    const ContactState& st = s.films.front();
+    if (st.oil) r.linerOil = st.oil->volume({st.linerOffset + g.z(0), st.linerOffset + g.z(g.nAxial() - 1)});
+    r.replenishedOil = st.oilBalance.replenished;
 }
 
 Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev, int cycle) const {

@@ -118,6 +118,8 @@ private:
     StepRecord record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, int iterations) const;
     // The stages of run (PistonSimulation.cpp).
     StepState initialState(const SimulationCallbacks& cb) const;
+    /// The oil columns of a record from the skirt's mass-conserving film.
+    void oilRecord(const StepState& s, const ContactIterate& f, StepRecord& r) const;
     /// The next step: dtDeg, shortened to land on the next snapshot angle or the cycle's end.
     double plannedStep(double crankDeg, double dtDeg, double cycleStart, double cycleEnd, bool& atSnapshot) const;
     /// The local error estimate of the step s → n in units of its tolerance.

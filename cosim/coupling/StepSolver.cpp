@@ -256,7 +256,7 @@ void StepSolver::acceptStep(const StepContext& ctx, const StepState& s, const Ei
     out.y = y;
     if (pistonDynamics_ || linerDynamics_) out.w = (ctx.step.a0 * y + ctx.hq) / ctx.step.dt;  // ẏ of BDF2
     out.films.clear();
-    for (std::size_t c = 0; c < contacts_.size(); ++c) out.films.push_back(contacts_[c]->accepted(ev.films[c]));
+    for (std::size_t c = 0; c < contacts_.size(); ++c) out.films.push_back(contacts_[c]->accepted(ctx.step, s.films[c], ev.films[c]));
 }
 
 bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg, StepState& out, StepEvaluation& ev, int& iterations,

@@ -17,6 +17,7 @@ struct Column {
     const char* name;
     double StepRecord::*real;
     int StepRecord::*integer;
+    bool oil = false;  // a column of the mass-conserving film only
 };
 
 const std::vector<Column>& table() {
@@ -42,6 +43,13 @@ const std::vector<Column>& table() {
         {"min_film_m", &StepRecord::minFilm, nullptr},
         {"max_pressure_pa", &StepRecord::maxPressure, nullptr},
         {"elastic_film_change_m", &StepRecord::elasticFilmChange, nullptr},
+        {"oil_in_m3_per_s", &StepRecord::oilIn, nullptr, true},
+        {"oil_out_m3_per_s", &StepRecord::oilOut, nullptr, true},
+        {"side_leakage_m3_per_s", &StepRecord::sideLeakage, nullptr, true},
+        {"film_oil_m3", &StepRecord::filmOil, nullptr, true},
+        {"wetted_share", &StepRecord::wettedShare, nullptr, true},
+        {"liner_oil_m3", &StepRecord::linerOil, nullptr, true},
+        {"replenished_oil_m3", &StepRecord::replenishedOil, nullptr, true},
         {"coupling_iterations", nullptr, &StepRecord::couplingIterations},
         {"step_deg", &StepRecord::stepDeg, nullptr},
     };
@@ -84,21 +92,25 @@ bool parse(std::string_view text, T& value) {
 
 }  // namespace
 
-const std::vector<std::string>& HistoryWriter::columns() {
-    static const std::vector<std::string> names = [] {
+const std::vector<std::string>& HistoryWriter::columns(bool oil) {
+    static const auto names = [](bool withOil) {
         std::vector<std::string> n;
-        for (const auto& c : table()) n.emplace_back(c.name);
+        for (const auto& c : table())
+            if (withOil || !c.oil) n.emplace_back(c.name);
         return n;
-    }();
-    return names;
+    };
+    static const std::vector<std::string> base = names(false), all = names(true);
+    return oil ? all : base;
 }
 
-HistoryWriter::HistoryWriter(const std::string& path) : path_(path), out_(path, std::ios::out | std::ios::trunc) {
+HistoryWriter::HistoryWriter(const std::string& path, bool oilColumns)
+    : path_(path), out_(path, std::ios::out | std::ios::trunc), oil_(oilColumns) {
     if (!out_) throw std::runtime_error("cannot open '" + path + "' for writing");
     // The column names first, then the comments: numpy.genfromtxt(names=True) takes its names
     // from the first line and skips '#' lines after it, pandas.read_csv(comment='#') skips them.
     std::string header;
     for (std::size_t c = 0; c < table().size(); ++c) {
+        if (table()[c].oil && !oil_) continue;
         if (c) header += ',';
         header += table()[c].name;
     }
@@ -111,7 +123,7 @@ HistoryWriter::HistoryWriter(const std::string& path) : path_(path), out_(path, 
 void HistoryWriter::append(const StepRecord& r) {
     // Check everything first: a refused record leaves no partial line behind.
     for (const auto& c : table())
-        if (c.real && !std::isfinite(r.*c.real))
+        if (c.real && (oil_ || !c.oil) && !std::isfinite(r.*c.real))
             throw std::runtime_error(fmt::format("'{}': column '{}' is {} at crank angle {:.9g}° (cycle {}); "
                                                  "history rows must be finite",
                                                  path_, c.name, r.*c.real, r.crankDeg, r.cycle));
@@ -120,6 +132,7 @@ void HistoryWriter::append(const StepRecord& r) {
     auto out = std::back_inserter(line);
     for (std::size_t k = 0; k < table().size(); ++k) {
         const auto& c = table()[k];
+        if (c.oil && !oil_) continue;
         if (k) line += ',';
         if (c.real)
             fmt::format_to(out, "{:.{}g}", r.*c.real, kSignificantDigits);
@@ -162,6 +175,10 @@ std::vector<StepRecord> HistoryWriter::read(const std::string& path, bool* parti
                 int found = -1;
                 for (std::size_t f = 0; f < fields.size(); ++f)
                     if (fields[f] == c.name) found = static_cast<int>(f);
+                if (found < 0 && c.oil) {  // a run with the Reynolds condition: no oil columns
+                    columnOf.push_back(-1);
+                    continue;
+                }
                 if (found < 0)
                     throw std::runtime_error("'" + path + "': header (line " + std::to_string(lineNumber) +
                                              ") has no column '" + c.name + "'; is this a flexehd history.csv?");
@@ -176,6 +193,7 @@ std::vector<StepRecord> HistoryWriter::read(const std::string& path, bool* parti
         StepRecord r;
         for (std::size_t k = 0; k < table().size(); ++k) {
             const auto& c = table()[k];
+            if (columnOf[k] < 0) continue;
             const std::string_view value = fields[static_cast<std::size_t>(columnOf[k])];
             const bool ok = c.real ? parse(value, r.*c.real) && std::isfinite(r.*c.real) : parse(value, r.*c.integer);
             if (!ok)

@@ -19,7 +19,8 @@ class HistoryWriter {
 public:
     /// Creates (or truncates) `path` and writes the comment and header lines.
     /// Throws std::runtime_error naming the file if it cannot be written.
-    explicit HistoryWriter(const std::string& path);
+    /// oilColumns: the mass-conserving film's oil columns too (oil_in_m3_per_s … liner_oil_m3).
+    explicit HistoryWriter(const std::string& path, bool oilColumns = false);
 
     /// Writes one line and flushes it. Throws std::runtime_error naming the column and the
     /// crank angle if a value is NaN or Inf (nothing is written then), or naming the file
@@ -27,12 +28,13 @@ public:
     void append(const StepRecord& record);
 
     /// Column names of the header line, in file order.
-    static const std::vector<std::string>& columns();
+    static const std::vector<std::string>& columns(bool oil = false);
     /// Significant digits of the printed values (a round trip is exact to this precision).
     static constexpr int kSignificantDigits = 9;
 
     /// Reads a history file: '#' and blank lines are skipped, columns are matched by their
-    /// header name (order free, unknown columns ignored, a missing one is an error). A last
+    /// header name (order free, unknown columns ignored, a missing one is an error but for the
+    /// oil columns, 0 when absent). A last
     /// line without its terminating newline is the partial line of a run killed while
     /// writing: it is dropped (and `*partialLastLine` set when given). Any other malformed
     /// line throws std::runtime_error naming the file, the line number and the column.
@@ -41,6 +43,7 @@ public:
 private:
     std::string path_;
     std::ofstream out_;
+    bool oil_;
 };
 
 }  // namespace flexehd::cosim

@@ -131,7 +131,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log) {
     reportBodies(c, sim, log);
 
     double outputInRun = 0.0;  // output inside the step loop
-    HistoryWriter history(dir + "/history.csv");
+    HistoryWriter history(dir + "/history.csv", c.lubricant.cavitation == CavitationModel::MassConserving);
     FieldSeriesWriter fields(dir);
     SimulationCallbacks cb;
     cb.onStep = [&](const StepRecord& r) {

@@ -520,6 +520,26 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
                 AllOf(StartsWith(file + ": coupling.elastic_squeeze"), HasSubstr("coupling.method: newton")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation_pressure: 2e5}"),
                 AllOf(StartsWith(file + ": lubricant.cavitation_pressure")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation: elrod}"),
+                AllOf(StartsWith(file + ": lubricant.cavitation"), HasSubstr("reynolds, mass_conserving")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation: mass_conserving, barus_alpha: 2e-8}"),
+                AllOf(StartsWith(file + ": lubricant.cavitation"), HasSubstr("barus_alpha: 0")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {supply: {model: liner_layer, thickness: 3e-6}}"),
+                AllOf(StartsWith(file + ": lubricant.supply.model"), HasSubstr("mass_conserving")));
+    EXPECT_THAT(caseError(dir, "name: small",
+                          "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer}}"),
+                AllOf(StartsWith(file + ": lubricant.supply"), HasSubstr("either thickness")));
+    EXPECT_THAT(caseError(dir, "name: small",
+                          "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, "
+                          "thickness: 3e-3}}"),
+                AllOf(StartsWith(file + ": lubricant.supply.thickness"), HasSubstr("check the units")));
+    EXPECT_THAT(caseError(dir, "name: small",
+                          "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, "
+                          "thickness_table: [[0.05, 3e-6], [0.01, 2e-6]]}}"),
+                AllOf(StartsWith(file + ": lubricant.supply.thickness_table[1]"), HasSubstr("ascending")));
+    EXPECT_THAT(caseError(dir, "name: small",
+                          "name: small\nlubricant: {cavitation: mass_conserving, supply: {thickness: 3e-6}}"),
+                AllOf(StartsWith(file + ": lubricant.supply.thickness"), HasSubstr("liner_layer")));
     EXPECT_THAT(caseError(dir, "speed_rpm: 1000", "speed_rpm: 1000\n  pin_tdc_depth: 0.005"),
                 AllOf(StartsWith(file + ": engine.pin_tdc_depth"), HasSubstr("above the deck")));
 }

@@ -119,7 +119,8 @@ TEST(Jfo, StarvedInletCarriesLessLoad) {
     EXPECT_LT(rs.fraction[g.index(0, 1)], 1.0) << "the inlet region is not full";
     const double qin = 0.5 * jb.omega * jb.R * 0.3 * st.h[0] * g.length();
     EXPECT_NEAR(starved.boundaryInflow(st, rs) / qin, 0.0, 1e-6);
-    EXPECT_THROW(starved.setInletFraction(0, 0.0), std::invalid_argument);
+    EXPECT_THROW(starved.setInletFraction(0, -0.1), std::invalid_argument);
+    EXPECT_THROW(starved.setInletFraction(0, 1.5), std::invalid_argument);
 }
 
 // The active-set (semismooth Newton, sparse LU) method solves the same discrete problem as the

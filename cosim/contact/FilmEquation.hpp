@@ -1,0 +1,34 @@
+#pragma once
+// FilmEquation: how a contact's film is solved at an iterate, chosen once from the case
+// (lubricant.cavitation) and applied at every iterate: the Reynolds (Swift–Stieber) condition
+// (ReynoldsFilm) or the mass-conserving JFO film with its film fraction and oil supply
+// (MassConservingFilm). The contact gives it the film thickness; the equation gives back the
+// pressure, the squeeze rate it used and, mass-conserving, the film fraction and the flows
+// through the film's edges (docs/coupling.md §6).
+#include "cosim/contact/FilmContact.hpp"
+#include "lube/FilmState.hpp"
+#include "lube/Lubricant.hpp"
+
+namespace flexehd::cosim {
+
+class FilmEquation {
+public:
+    virtual ~FilmEquation() = default;
+
+    /// Completes the run's initial state (thickness set) with what the equation carries.
+    virtual void initialize(ContactState& s) const = 0;
+    /// Solves the film of the iterate (h, hRigid, hTotal set) with the liner sliding at
+    /// −step.pistonVelocity: fills it.dhdt, it.p and the mass-conserving fields; fs receives the
+    /// film state the loads integrate. Throws std::runtime_error when the solve fails.
+    virtual void solve(const ContactStep& step, const ContactState& now, const ContactState& before,
+                       ContactIterate& it, lube::FilmState& fs, WorkTally& work) = 0;
+    /// Completes the state kept from an accepted iterate (film fraction, liner oil, balance).
+    virtual void accept(const ContactStep& step, const ContactState& now, const ContactIterate& it,
+                        ContactState& s) const = 0;
+    /// ∂ḣ/∂h of the film's time discretisation over the step's a0/Δt (the coupled Newton's rate
+    /// parts are taken per unit a0/Δt): 1 for BDF2, 1/a0 for backward Euler.
+    virtual double rateFactor(const ContactStep& step) const = 0;
+    virtual const lube::Lubricant& lubricant() const = 0;
+};
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,122 @@
+// MassConservingFilm: the mass-conserving film of a contact at an iterate, its edge flows and the
+// liner oil it leaves (docs/coupling.md §6).
+#include "cosim/contact/MassConservingFilm.hpp"
+
+#include "cosim/contact/ReynoldsFilm.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace flexehd::cosim {
+
+namespace {
+
+lube::JfoOptions jfoOptions(const LubricantSpec& l) {
+    lube::JfoOptions o;
+    o.method = lube::JfoMethod::ActiveSet;
+    o.cavitationPressure = l.cavitationPressure;
+    o.control.tolerance = 1e-8;
+    o.control.maxIterations = 20000;
+    return o;
+}
+
+// The liner-frame z range the skirt's edges sweep over a revolution.
+void skirtReach(const lube::FilmGrid& g, const std::function<double(double)>& linerOffset, double& lo, double& hi) {
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    for (int k = 0; k <= 1440; ++k) {
+        const double s = linerOffset(0.25 * k);
+        lo = std::min(lo, s + g.z(0));
+        hi = std::max(hi, s + g.z(g.nAxial() - 1));
+    }
+}
+
+}  // namespace
+
+MassConservingFilm::MassConservingFilm(const EngineCase& c, const lube::FilmGrid& grid,
+                                       const std::function<double(double)>& linerOffset)
+    : grid_(grid), lubricant_(makeLubricant(c.lubricant)), solver_(grid, lubricant_, jfoOptions(c.lubricant)),
+      inlet_(static_cast<std::size_t>(grid.size()), 1.0) {
+    const OilSupplySpec& sp = c.lubricant.supply;
+    if (sp.model == OilSupplyModel::LinerLayer) {
+        double lo = 0.0, hi = 0.0;
+        skirtReach(grid, linerOffset, lo, hi);
+        double zReplenish = -std::numeric_limits<double>::infinity();
+        if (sp.replenish)
+            zReplenish = std::isnan(sp.replenishBelowDepth) ? linerOffset(90.0) + grid.z(0) : -sp.replenishBelowDepth;
+        exchange_ = std::make_unique<SkirtOilExchange>(grid, sp, lo, hi, zReplenish);
+    }
+}
+
+void MassConservingFilm::initialize(ContactState& s) const {
+    if (exchange_) {
+        s.oil = exchange_->initialLayer(s.linerOffset);
+        s.fraction = exchange_->initialFraction(s.h, s.linerOffset);
+    } else {
+        s.fraction = Eigen::VectorXd::Ones(grid_.size());
+    }
+}
+
+void MassConservingFilm::solve(const ContactStep& step, const ContactState& now, const ContactState&,
+                               ContactIterate& it, lube::FilmState& fs, WorkTally& work) {
+    it.dhdt = (it.h - now.h) / step.dt;  // the rate the backward-Euler content term sees
+    fs.h = it.h;
+    fs.dhdt.resize(0);                   // the transient term is the solver's (film content)
+    fs.inner = {};
+    fs.outer = {};
+    fs.outer.axial = -step.pistonVelocity;
+    if (exchange_) {
+        exchange_->inletFractions(*now.oil, now.linerOffset, step.linerOffset, step.dt, fs.outer.axial, it.h, inlet_);
+        for (int j = 0; j < grid_.nTheta(); ++j)
+            for (int i : {0, grid_.nAxial() - 1}) {
+                const int k = grid_.index(i, j);
+                if (grid_.kind(k) == lube::NodeKind::Fixed) solver_.setInletFraction(k, inlet_[static_cast<std::size_t>(k)]);
+            }
+    }
+    const lube::JfoState previous{now.h, now.fraction};
+    lube::JfoResult warm;
+    const bool haveWarm = now.p.size() == grid_.size() && now.fraction.size() == grid_.size();
+    if (haveWarm) {
+        warm.pressure = now.p;
+        warm.fraction = now.fraction;
+    }
+    lube::JfoResult r = solver_.solve(fs, step.dt, &previous, haveWarm ? &warm : nullptr);
+    ++work.filmSolves;
+    edgeFlows(fs, r, it);
+    it.oilVolume = solver_.oilVolume(fs, r.fraction);
+    it.p = std::move(r.pressure);
+    it.fraction = std::move(r.fraction);
+}
+
+void MassConservingFilm::edgeFlows(const lube::FilmState& fs, const lube::JfoResult& r, ContactIterate& it) const {
+    const Eigen::VectorXd q = solver_.boundaryFlows(fs, r);
+    const int nt = grid_.nTheta(), last = grid_.nAxial() - 1;
+    it.inflowLow = Eigen::VectorXd::Zero(nt);
+    it.inflowHigh = Eigen::VectorXd::Zero(nt);
+    double edges = 0.0;
+    for (int j = 0; j < nt; ++j) {
+        it.inflowLow[j] = q[grid_.index(0, j)];
+        it.inflowHigh[j] = q[grid_.index(last, j)];
+        edges += it.inflowLow[j] + it.inflowHigh[j];
+    }
+    it.sideInflow = q.sum() - edges;
+}
+
+void MassConservingFilm::accept(const ContactStep& step, const ContactState& now, const ContactIterate& it,
+                                ContactState& s) const {
+    s.fraction = it.fraction;
+    s.oilBalance = now.oilBalance;
+    OilBalance& b = s.oilBalance;
+    for (int j = 0; j < grid_.nTheta(); ++j)
+        for (double q : {it.inflowLow[j], it.inflowHigh[j]}) (q > 0.0 ? b.edgeIn : b.edgeOut) += std::abs(q) * step.dt;
+    b.sideOut -= it.sideInflow * step.dt;
+    if (exchange_) {
+        OilExchangeVolumes moved;
+        s.oil = exchange_->advance(*now.oil, now.linerOffset, step.linerOffset, step.dt, it.inflowLow, it.inflowHigh, moved);
+        b.replenished += moved.replenished;
+        b.shortfall += moved.shortfall;
+    }
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,47 @@
+#pragma once
+// MassConservingFilm: the film with the mass-conserving JFO (Elrod–Adams) cavitation
+// (lube::JfoSolver, active set), pressure and film fraction on the piston-fixed grid
+// (docs/coupling.md §6). The transient term is that of the film's oil content φh in the grid's
+// frame, by backward Euler from the last accepted step: V (φh − φₙhₙ)/Δt, the thickness h the
+// film equation sees (floored, with the elastic change), so each step conserves the oil exactly:
+// the change of Σ V φ h is the net inflow through the film's edges times Δt. The supply at the
+// skirt's edges is flooded (φ_in = 1) or the liner's oil layer (SkirtOilExchange).
+#include "cosim/case/EngineCase.hpp"
+#include "cosim/contact/FilmEquation.hpp"
+#include "cosim/oil/SkirtOilExchange.hpp"
+#include "lube/JfoSolver.hpp"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace flexehd::cosim {
+
+class MassConservingFilm final : public FilmEquation {
+public:
+    /// linerOffset(crank angle in degrees): where the grid stands on the liner (the layer's range
+    /// and the default replenishment depth).
+    MassConservingFilm(const EngineCase& c, const lube::FilmGrid& grid, const std::function<double(double)>& linerOffset);
+
+    void initialize(ContactState& s) const override;
+    void solve(const ContactStep& step, const ContactState& now, const ContactState& before, ContactIterate& it,
+               lube::FilmState& fs, WorkTally& work) override;
+    void accept(const ContactStep& step, const ContactState& now, const ContactIterate& it,
+                ContactState& s) const override;
+    double rateFactor(const ContactStep& step) const override { return 1.0 / step.a0; }
+    const lube::Lubricant& lubricant() const override { return lubricant_; }
+
+    /// The liner's oil layer rules (null: flooded supply).
+    const SkirtOilExchange* exchange() const { return exchange_.get(); }
+
+private:
+    void edgeFlows(const lube::FilmState& fs, const lube::JfoResult& r, ContactIterate& it) const;
+
+    const lube::FilmGrid& grid_;
+    lube::Lubricant lubricant_;
+    lube::JfoSolver solver_;
+    std::unique_ptr<SkirtOilExchange> exchange_;
+    std::vector<double> inlet_;  // inlet fraction per node, this iterate
+};
+
+}  // namespace flexehd::cosim
