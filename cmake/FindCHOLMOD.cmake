@@ -2,8 +2,9 @@
 # Debian 12's libsuitesparse-dev ships headers in include/suitesparse and no CMake config.
 #   CHOLMOD::CHOLMOD   CHOLMOD with its SuiteSparse dependencies
 #   UMFPACK::UMFPACK   UMFPACK (optional, when found)
+#   KLU::KLU           KLU with BTF (sparse LU for repeated factorizations of one pattern)
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
-foreach(lib cholmod amd camd colamd ccolamd suitesparseconfig umfpack)
+foreach(lib cholmod amd camd colamd ccolamd suitesparseconfig umfpack klu btf)
   string(TOUPPER ${lib} LIB)
   find_library(${LIB}_LIBRARY ${lib})
 endforeach()
@@ -40,5 +41,12 @@ if(CHOLMOD_FOUND AND UMFPACK_LIBRARY AND NOT TARGET UMFPACK::UMFPACK)
     INTERFACE_INCLUDE_DIRECTORIES ${CHOLMOD_INCLUDE_DIR}
     INTERFACE_LINK_LIBRARIES CHOLMOD::CHOLMOD)
 endif()
-mark_as_advanced(CHOLMOD_INCLUDE_DIR CHOLMOD_LIBRARY AMD_LIBRARY CAMD_LIBRARY COLAMD_LIBRARY
+if(CHOLMOD_FOUND AND KLU_LIBRARY AND BTF_LIBRARY AND NOT TARGET KLU::KLU)
+  add_library(KLU::KLU UNKNOWN IMPORTED)
+  set_target_properties(KLU::KLU PROPERTIES
+    IMPORTED_LOCATION ${KLU_LIBRARY}
+    INTERFACE_INCLUDE_DIRECTORIES ${CHOLMOD_INCLUDE_DIR}
+    INTERFACE_LINK_LIBRARIES "${BTF_LIBRARY};CHOLMOD::CHOLMOD")
+endif()
+mark_as_advanced(KLU_LIBRARY BTF_LIBRARY CHOLMOD_INCLUDE_DIR CHOLMOD_LIBRARY AMD_LIBRARY CAMD_LIBRARY COLAMD_LIBRARY
   CCOLAMD_LIBRARY SUITESPARSECONFIG_LIBRARY UMFPACK_LIBRARY)

@@ -1,7 +1,6 @@
 #include "lube/JfoSolver.hpp"
 
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -12,13 +11,13 @@
 #include "lube/PsorSolver.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "lube/ReynoldsSystem.hpp"
+#include "lube/SparseLuFactor.hpp"
 
 namespace flexehd::lube {
 
 namespace {
 
 using JfoMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-using JfoLU = Eigen::SparseLU<JfoMatrix, Eigen::COLAMDOrdering<int>>;
 
 // One face of the finite-volume scheme, volumetric: flow a → b = c (p_a − p_b) + q φ_up,
 // φ_up = φ_a if q > 0 else φ_b.
@@ -274,7 +273,7 @@ void clipToBounds(const std::vector<int>& rows, double pcav, double* p, double* 
 // true when the settled iterate meets the tolerance (else the sweeps polish it, from a feasible
 // iterate).
 bool activeSetSolve(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const JfoOptions& o,
-                    JfoResult& res) {
+                    SparseLuFactor& lu, JfoResult& res) {
     const double pcav = o.cavitationPressure;
     double* p = res.pressure.data();
     double* phi = res.fraction.data();
@@ -284,13 +283,10 @@ bool activeSetSolve(const JfoNetwork& net, const FilmGrid& g, const std::vector<
     // can carry it: B > 0), full film elsewhere.
     std::vector<char> cav(static_cast<std::size_t>(nf));
     for (int r = 0; r < nf; ++r) cav[static_cast<std::size_t>(r)] = sys.B(r) > 0.0 && phi[rows[static_cast<std::size_t>(r)]] < 1.0;
-    JfoLU lu;
     Eigen::VectorXd rhs;
     for (int it = 1; it <= o.maxActiveSetIterations; ++it) {
         sys.setPartition(cav, pcav, rhs);
-        if (it == 1) lu.analyzePattern(sys.matrix());  // fill-reducing ordering, once per solve
-        lu.factorize(sys.matrix());
-        if (lu.info() != Eigen::Success)
+        if (!lu.factor(sys.matrix()))  // the ordering kept while the pattern (the Film nodes) is the same
             throw std::runtime_error("JfoSolver: sparse LU failed in active-set step " + std::to_string(it) +
                                      " (singular: a closed film-fraction loop with no supply, e.g. a steady "
                                      "film without inlet?)");
@@ -366,7 +362,7 @@ void gaussSeidelSolve(const JfoNetwork& net, const std::vector<int>& rows, const
 
 JfoSolver::JfoSolver(FilmGrid grid, Lubricant lubricant, JfoOptions options)
     : grid_(std::move(grid)), lubricant_(lubricant), options_(options),
-      inlet_(static_cast<std::size_t>(grid_.size()), 1.0) {
+      inlet_(static_cast<std::size_t>(grid_.size()), 1.0), lu_(std::make_unique<SparseLuFactor>()) {
     if (lubricant_.pressureDependent())
         throw std::invalid_argument("JfoSolver: only a constant-property lubricant is supported");
     if (!std::isfinite(options_.cavitationPressure))
@@ -408,12 +404,15 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
     const std::vector<int> rows = startingIterate(g, warm ? warmStart : nullptr, inlet_, pcav, res);
     if (options_.method == JfoMethod::ActiveSet) {
         if (!warm) reynoldsConditionStart(g, lubricant_, film, pcav, rows, res.pressure.data(), res.fraction.data());
-        if (activeSetSolve(net, g, rows, options_, res)) return res;
+        if (activeSetSolve(net, g, rows, options_, *lu_, res)) return res;
     }
     const double w = options_.omega > 0.0 ? options_.omega : PsorSolver::automaticOmega(g);
     gaussSeidelSolve(net, rows, options_, w, res);
     return res;
 }
+
+JfoSolver::~JfoSolver() = default;
+JfoSolver::JfoSolver(JfoSolver&&) noexcept = default;
 
 double JfoSolver::oilVolume(const FilmState& film, const Eigen::VectorXd& fraction) const {
     double v = 0.0;

@@ -25,8 +25,8 @@
 // active set) iteration: for a partition of the Film nodes into full film (unknown p, φ = 1) and
 // cavitated (unknown φ, p = p_cav) the balances are one linear system — the Reynolds operator on
 // the full-film nodes, the upwind film-fraction transport on the cavitated ones — solved by
-// sparse LU; nodes with p < p_cav become cavitated, nodes with φ > 1 full film, until the
-// partition repeats (then the balances hold to round-off and the complementarity exactly). A
+// sparse LU (SuiteSparse KLU, its ordering kept between solves); nodes with p < p_cav become
+// cavitated, nodes with φ > 1 full film, until the partition repeats (then the balances hold to round-off and the complementarity exactly). A
 // cold start begins from the Reynolds-condition solution (multigrid), whose cavitated set a
 // flooded film shares but for the reformation fronts: one factorization on the flooded cases
 // measured; a warm start (time stepping) takes the previous partition, typically two or three.
@@ -35,6 +35,7 @@
 // docs/lube.md §3b for measured speed (10–200× on long films and starved inlets, 1.5–3× on
 // 2-D films, where the sparse LU dominates).
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "lube/FilmGrid.hpp"
@@ -43,6 +44,8 @@
 #include "lube/SolverControl.hpp"
 
 namespace flexehd::lube {
+
+class SparseLuFactor;
 
 /// How the discrete JFO problem is solved (the same problem and convergence criterion).
 enum class JfoMethod {
@@ -78,6 +81,8 @@ class JfoSolver {
 public:
     /// Constant-property lubricant only (throws otherwise): JFO with ρ(p), η(p) is not built.
     JfoSolver(FilmGrid grid, Lubricant lubricant, JfoOptions options = {});
+    ~JfoSolver();
+    JfoSolver(JfoSolver&&) noexcept;
 
     /// Film fraction φ_in ∈ [0, 1] carried by the Couette flow leaving a Fixed node (starved
     /// inlet; 0: a dry surface). Default 1 (flooded).
@@ -104,6 +109,9 @@ private:
     Lubricant lubricant_;
     JfoOptions options_;
     std::vector<double> inlet_;  // film fraction of each node when Fixed
+    // ActiveSet: the sparse LU with its ordering kept between solves (one pattern per grid);
+    // solve() is therefore not safe to call from two threads on one solver.
+    std::unique_ptr<SparseLuFactor> lu_;
 };
 
 }  // namespace flexehd::lube

@@ -75,13 +75,16 @@ void MassConservingFilm::solve(const ContactStep& step, const ContactState& now,
             }
     }
     const lube::JfoState previous{now.h, now.fraction};
-    lube::JfoResult warm;
-    const bool haveWarm = now.p.size() == grid_.size() && now.fraction.size() == grid_.size();
-    if (haveWarm) {
-        warm.pressure = now.p;
-        warm.fraction = now.fraction;
+    // The warm start (the active set's first partition): the last solve's, of this step's
+    // iterates or the previous step's; else the last accepted state's.
+    if (warm_.pressure.size() != grid_.size() && now.p.size() == grid_.size()) {
+        warm_.pressure = now.p;
+        warm_.fraction = now.fraction;
     }
-    lube::JfoResult r = solver_.solve(fs, step.dt, &previous, haveWarm ? &warm : nullptr);
+    const bool haveWarm = warm_.pressure.size() == grid_.size();
+    lube::JfoResult r = solver_.solve(fs, step.dt, &previous, haveWarm ? &warm_ : nullptr);
+    warm_.pressure = r.pressure;
+    warm_.fraction = r.fraction;
     ++work.filmSolves;
     edgeFlows(fs, r, it);
     it.oilVolume = solver_.oilVolume(fs, r.fraction);

@@ -42,6 +42,7 @@ private:
     lube::JfoSolver solver_;
     std::unique_ptr<SkirtOilExchange> exchange_;
     std::vector<double> inlet_;  // inlet fraction per node, this iterate
+    lube::JfoResult warm_;       // the last solve's pressure and film fraction (the next warm start)
 };
 
 }  // namespace flexehd::cosim
