@@ -1,14 +1,15 @@
 // bench_lube: times PSOR, the active-set and the multigrid solver to the same relative natural residual on a
 // skirt-like film and on a plain journal bearing, at grids nAxial×nTheta from 64×128 up.
 // Not a test: prints a Markdown table (scripts/bench_lube.sh writes it into docs/).
-//   bench_lube [maxAxial=512] [tolerance=1e-8] [repeats=1] [multigrid|omega]
+//   bench_lube [maxAxial=512] [tolerance=1e-8] [repeats=1] [multigrid|omega|jfo]
 // Each time is the best of `repeats` cold solves (a fresh ReynoldsSolver each; in the full
 // table after one untimed cold solve of each solver, PSOR's being its ω scan), which filters
 // out the noise of a shared machine; the full table also gives the best thread CPU times (not
 // inflated while other processes hold the core) and their ratio. PSOR runs at its automatic ω and at the best ω of a scan
 // (see the full table below). With a fourth argument `multigrid` only the multigrid solver is
 // timed (short table, with CPU time and a solver reused across cold solves), for profiling and
-// before/after comparisons; `omega` scans PSOR's ω at the grid maxAxial × 2·maxAxial.
+// before/after comparisons; `omega` scans PSOR's ω at the grid maxAxial × 2·maxAxial; `jfo` times
+// the cold mass-conserving solve against the multigrid Reynolds solve on the steady skirt.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include <string>
 
 #include "lube/FilmIntegrals.hpp"
+#include "lube/JfoSolver.hpp"
 #include "lube/LargeArrayAllocator.hpp"
 #include "lube/PsorSolver.hpp"
 #include "lube/ReynoldsSolver.hpp"
@@ -113,6 +115,50 @@ int main(int argc, char** argv) {
                             dw == 0.0 ? " (auto)" : "", r.iterations, best);
                 std::fflush(stdout);
             }
+        }
+        return 0;
+    }
+    if (argc > 4 && std::string(argv[4]) == "jfo") {
+        // The mass-conserving film against the Reynolds condition on the steady skirt (no
+        // squeeze), cold: a fresh solver each, no warm start (the JFO active set starts from the
+        // multigrid Reynolds solution and factorizes with KLU, its ordering included).
+        std::printf("| grid | multigrid Reynolds s | JFO active set s (factorizations) | JFO multigrid s (passes) | "
+                    "ratio active set / multigrid to Reynolds | max |Δp|/p_max active set, multigrid |\n"
+                    "|---|---|---|---|---|---|\n");
+        for (int nz = 64; nz <= maxAxial; nz *= 2) {
+            double bestR = 1e300, bestJ = 1e300, bestM = 1e300, dp = 0.0, dpm = 0.0;
+            int fact = 0, passes = 0;
+            for (int rep = 0; rep < repeats; ++rep) {
+                Problem pb = skirt(nz, 2 * nz);
+                pb.film.dhdt.resize(0);
+                ReynoldsOptions opt;
+                opt.solver = SolverKind::Multigrid;
+                opt.control.tolerance = tol;
+                ReynoldsSolver rs(pb.grid, Lubricant(0.01), opt);
+                auto t0 = std::chrono::steady_clock::now();
+                const Eigen::VectorXd pr = rs.solve(pb.film).pressure;
+                bestR = std::min(bestR, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                JfoOptions jo;
+                jo.method = JfoMethod::ActiveSet;
+                jo.control.tolerance = tol;
+                t0 = std::chrono::steady_clock::now();
+                const JfoSolver js(pb.grid, Lubricant(0.01), jo);
+                const JfoResult jr = js.solve(pb.film);
+                bestJ = std::min(bestJ, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                fact = jr.factorizations;
+                dp = (jr.pressure - pr).cwiseAbs().maxCoeff() / pr.cwiseAbs().maxCoeff();
+                jo.method = JfoMethod::Multigrid;
+                t0 = std::chrono::steady_clock::now();
+                const JfoSolver jm(pb.grid, Lubricant(0.01), jo);
+                const JfoResult mr = jm.solve(pb.film);
+
+                bestM = std::min(bestM, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                passes = mr.iterations;
+                dpm = (mr.pressure - jr.pressure).cwiseAbs().maxCoeff() / jr.pressure.cwiseAbs().maxCoeff();
+            }
+            std::printf("| %d×%d | %.4f | %.4f (%d) | %.4f (%d) | %.2f, %.2f | %.2g, %.2g |\n", nz, 2 * nz, bestR, bestJ, fact,
+                        bestM, passes, bestJ / bestR, bestM / bestR, dp, dpm);
+            std::fflush(stdout);
         }
         return 0;
     }

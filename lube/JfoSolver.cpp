@@ -26,15 +26,52 @@ struct Face {
     double c, q;
 };
 
-std::vector<Face> buildFaces(const FilmGrid& g, const FilmState& film, double eta) {
+}  // namespace
+
+// The faces of the grid's finite volumes that touch a Film node and the node → face adjacency
+// (CSR): fixed for a grid, built once per solver.
+struct JfoTopology {
+    struct FaceGeometry {
+        int a, b;
+        bool axial;
+        double L, d;  // face length and distance (m)
+    };
+    std::vector<FaceGeometry> faces;
+    std::vector<int> start, adj;
+    std::vector<double> area;  // control-volume area per node (m²)
+
+    explicit JfoTopology(const FilmGrid& g) {
+        for (int k = 0; k < g.size(); ++k) area.push_back(g.area(k));
+        forEachFace(g, [&](int a, int b, bool axial, double L, double d) {
+            if (g.kind(a) != NodeKind::Film && g.kind(b) != NodeKind::Film) return;
+            faces.push_back({a, b, axial, L, d});
+        });
+        const int n = g.size();
+        start.assign(static_cast<std::size_t>(n) + 1, 0);
+        adj.resize(2 * faces.size());
+        for (const FaceGeometry& f : faces) {
+            ++start[static_cast<std::size_t>(f.a) + 1];
+            ++start[static_cast<std::size_t>(f.b) + 1];
+        }
+        for (int k = 0; k < n; ++k) start[static_cast<std::size_t>(k) + 1] += start[static_cast<std::size_t>(k)];
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].a)]++)] = static_cast<int>(i);
+            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].b)]++)] = static_cast<int>(i);
+        }
+    }
+};
+
+namespace {
+
+std::vector<Face> buildFaces(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta) {
     std::vector<Face> faces;
-    faces.reserve(static_cast<std::size_t>(2 * g.size()));
+    faces.reserve(t.faces.size());
     const double Uz = film.sumAxial(), Ut = film.sumCircumferential();
-    forEachFace(g, [&](int a, int b, bool axial, double L, double d) {
-        if (g.kind(a) != NodeKind::Film && g.kind(b) != NodeKind::Film) return;
-        const double hf = faceValue(g, film.h, a, b);
-        faces.push_back({a, b, hf * hf * hf * L / (12.0 * eta * d), 0.5 * (axial ? Uz : Ut) * hf * L});
-    });
+    for (const JfoTopology::FaceGeometry& f : t.faces) {
+        const double hf = faceValue(g, film.h, f.a, f.b);
+        faces.push_back({f.a, f.b, hf * hf * hf * f.L / (12.0 * eta * f.d), 0.5 * (f.axial ? Uz : Ut) * hf * f.L});
+    }
     return faces;
 }
 
@@ -45,25 +82,10 @@ public:
     // Balance of node k: F = D p_k − S + B φ_k − Sin (see the header).
     struct Balance { double D, S, B, Sin; };
 
-    JfoNetwork(const FilmGrid& g, const FilmState& film, double eta, double dt, const JfoState* previous,
-               const std::vector<double>& inlet, double pcav)
+    JfoNetwork(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta, double dt,
+               const JfoState* previous, const std::vector<double>& inlet, double pcav)
         : g_(g), film_(film), dt_(dt), previous_(previous), inlet_(inlet), pcav_(pcav),
-          faces_(buildFaces(g, film, eta)) {
-        // Node → faces adjacency (CSR).
-        const int n = g.size();
-        start_.assign(static_cast<std::size_t>(n) + 1, 0);
-        adj_.resize(2 * faces_.size());
-        for (const Face& f : faces_) {
-            ++start_[static_cast<std::size_t>(f.a) + 1];
-            ++start_[static_cast<std::size_t>(f.b) + 1];
-        }
-        for (int k = 0; k < n; ++k) start_[static_cast<std::size_t>(k) + 1] += start_[static_cast<std::size_t>(k)];
-        std::vector<int> fill(start_.begin(), start_.end() - 1);
-        for (std::size_t i = 0; i < faces_.size(); ++i) {
-            adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces_[i].a)]++)] = static_cast<int>(i);
-            adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces_[i].b)]++)] = static_cast<int>(i);
-        }
-    }
+          faces_(buildFaces(t, g, film, eta)), start_(t.start), adj_(t.adj), area_(t.area.data()) {}
 
     // visit(m, c, qo) for each face of node k: its other node m, Poiseuille coefficient c and the
     // Couette coefficient qo of the flow out of k.
@@ -76,11 +98,12 @@ public:
         }
     }
     // Storage V h/dt of node k and the oil V φ_prev h_prev/dt it held (0, 0 when steady).
-    double storage(int k) const { return dt_ > 0.0 ? g_.area(k) * film_.h[k] / dt_ : 0.0; }
+    double storage(int k) const { return dt_ > 0.0 ? area_[k] * film_.h[k] / dt_ : 0.0; }
     double previousOil(int k) const {
-        return dt_ > 0.0 ? g_.area(k) * previous_->fraction[k] * previous_->h[k] / dt_ : 0.0;
+        return dt_ > 0.0 ? area_[k] * previous_->fraction[k] * previous_->h[k] / dt_ : 0.0;
     }
     bool transient() const { return dt_ > 0.0; }
+    double area(int k) const { return area_[k]; }
     double inlet(int m) const { return inlet_[static_cast<std::size_t>(m)]; }
 
     Balance balance(int k, const double* p, const double* phi) const {
@@ -122,7 +145,9 @@ private:
     const std::vector<double>& inlet_;
     double pcav_;
     std::vector<Face> faces_;
-    std::vector<int> start_, adj_;
+    const std::vector<int>& start_;
+    const std::vector<int>& adj_;
+    const double* area_;
 };
 
 // The iterate a solve starts from (the warm start, else a flooded film) with the bounds and the
@@ -357,12 +382,94 @@ void gaussSeidelSolve(const JfoNetwork& net, const std::vector<int>& rows, const
                              std::to_string(o.control.tolerance) + ", omega " + std::to_string(w) + ")");
 }
 
+// The effective squeeze rate that turns the Reynolds-condition problem into the JFO balance of
+// every full-film node (docs/lube.md §3b, "the multigrid method"): the content term
+// (h − φₙhₙ)/Δt and the Couette inflow an upstream partial film (or starved inlet) does not bring,
+// Σ_in q_f (1 − φ_up)/V_k.
+void effectiveSqueeze(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, double dt,
+                      const JfoState* previous, const std::vector<int>& rows, const double* phi, Eigen::VectorXd& dhdt) {
+    dhdt.setZero(g.size());
+    for (int k : rows) {
+        double missing = 0.0;
+        net.forFaces(k, [&](int m, double, double qo) {
+            if (qo < 0.0) missing -= qo * (1.0 - (g.kind(m) == NodeKind::Film ? phi[m] : net.inlet(m)));
+        });
+        dhdt[k] = missing / net.area(k);
+        if (dt > 0.0) dhdt[k] += (film.h[k] - previous->fraction[k] * previous->h[k]) / dt;
+    }
+}
+
+// One Gauss–Seidel pass of the nodal JFO update (Ausas et al.; without over-relaxation) in the
+// direction of the Couette flow: each node's upstream neighbours are updated before it, so the
+// film fraction is transported through the cavities and a rupture or reformation front moves as
+// far as the flow carries it in one pass (repeated until φ no longer changes where the flow has
+// a circumferential part; once where it is axial only).
+void sweepAlongFlow(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, double pcav, double* p,
+                    double* phi) {
+    const int nz = g.nAxial(), nt = g.nTheta();
+    const bool downZ = film.sumAxial() < 0.0, downT = film.sumCircumferential() < 0.0;
+    for (int sweep = 0; sweep < 200; ++sweep) {
+        double change = 0.0;
+        for (int ii = 0; ii < nz; ++ii) {
+            const int i = downZ ? nz - 1 - ii : ii;
+            for (int jj = 0; jj < nt; ++jj) {
+                const int k = g.index(i, downT ? nt - 1 - jj : jj);
+                if (g.kind(k) != NodeKind::Film) continue;
+                const JfoNetwork::Balance bl = net.balance(k, p, phi);
+                const double phiStar = bl.B > 0.0 ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
+                const double before = phi[k];
+                if (bl.B > 0.0 && phiStar < 1.0) {  // cavitated: p = p_cav, φ from the balance
+                    p[k] = pcav;
+                    phi[k] = std::max(phiStar, 0.0);
+                } else {                            // full film: φ = 1, p from the balance
+                    if (bl.B > 0.0) phi[k] = 1.0;
+                    p[k] = std::max(pcav, (bl.S + bl.Sin - bl.B * phi[k]) / bl.D);
+                }
+                change = std::max(change, std::abs(phi[k] - before));
+            }
+        }
+        if (change <= 1e-15 || film.sumCircumferential() == 0.0) return;
+    }
+}
+
+// JfoMethod::Multigrid: the fixed point of the Reynolds-condition problem with the effective
+// squeeze rate (multigrid, warm-started) and a sweep of the nodal update along the flow, which
+// transports the film fraction through the cavities and moves the fronts.
+// A node the Reynolds problem leaves at the bound has F(φ = 1) ≥ 0, i.e. φ* ≤ 1: the JFO rule, so
+// a fixed point is the JFO solution. True when the residual meets the tolerance within the
+// outer iterations; false (the active set takes over from the iterate) when they run out or the
+// residual has not halved over three passes.
+bool multigridSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, double dt,
+                    const JfoState* previous, const std::vector<int>& rows, const JfoOptions& o, bool warmStarted,
+                    ReynoldsSolver& rs, JfoResult& res) {
+    const double pcav = o.cavitationPressure;
+    FilmState eff = film;
+    Eigen::VectorXd warm = res.pressure;
+    std::vector<double> history;  // the residual of each pass
+    for (int outer = 1; outer <= o.maxMultigridPasses; ++outer) {
+        effectiveSqueeze(net, g, film, dt, previous, rows, res.fraction.data(), eff.dhdt);
+        // Cold, the first pass is the multigrid's own cold start (nested from the coarse grids).
+        res.pressure = rs.solve(eff, warmStarted || outer > 1 ? &warm : nullptr).pressure;
+        warm = res.pressure;
+        sweepAlongFlow(net, g, film, pcav, res.pressure.data(), res.fraction.data());
+        res.iterations = outer;
+        res.residual = net.residual(rows, res.pressure.data(), res.fraction.data());
+        if (res.residual <= o.control.tolerance) return true;
+        // Stalled (a front alternating between two nodes, as at the meniscus of a steady starved
+        // film): the active set takes over.
+        history.push_back(res.residual);
+        if (history.size() >= 4 && res.residual > 0.5 * history[history.size() - 4]) return false;
+    }
+    return false;
+}
+
 }  // namespace
 
 
 JfoSolver::JfoSolver(FilmGrid grid, Lubricant lubricant, JfoOptions options)
     : grid_(std::move(grid)), lubricant_(lubricant), options_(options),
       inlet_(static_cast<std::size_t>(grid_.size()), 1.0), lu_(std::make_unique<SparseLuFactor>()) {
+    topology_ = std::make_unique<JfoTopology>(grid_);
     if (lubricant_.pressureDependent())
         throw std::invalid_argument("JfoSolver: only a constant-property lubricant is supported");
     if (!std::isfinite(options_.cavitationPressure))
@@ -398,12 +505,24 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
         throw std::invalid_argument("JfoSolver: a transient step needs the previous h and film "
                                     "fraction on every node");
     const double pcav = options_.cavitationPressure;
-    const JfoNetwork net(g, film, lubricant_.referenceViscosity(), dt, previous, inlet_, pcav);
+    const JfoNetwork net(*topology_, g, film, lubricant_.referenceViscosity(), dt, previous, inlet_, pcav);
     JfoResult res;
     const bool warm = warmStart && warmStart->pressure.size() == n && warmStart->fraction.size() == n;
     const std::vector<int> rows = startingIterate(g, warm ? warmStart : nullptr, inlet_, pcav, res);
-    if (options_.method == JfoMethod::ActiveSet) {
-        if (!warm) reynoldsConditionStart(g, lubricant_, film, pcav, rows, res.pressure.data(), res.fraction.data());
+    if (options_.method == JfoMethod::Multigrid) {
+        if (!multigrid_) {
+            ReynoldsOptions ro;
+            ro.solver = SolverKind::Multigrid;
+            ro.fallback = SolverKind::ActiveSet;
+            ro.cavitationPressure = pcav;
+            ro.control.tolerance = options_.control.tolerance;
+            multigrid_ = std::make_unique<ReynoldsSolver>(g, lubricant_, ro);
+        }
+        if (multigridSolve(net, g, film, dt, previous, rows, options_, warm, *multigrid_, res)) return res;
+    }
+    if (options_.method != JfoMethod::GaussSeidel) {
+        if (!warm && options_.method == JfoMethod::ActiveSet)
+            reynoldsConditionStart(g, lubricant_, film, pcav, rows, res.pressure.data(), res.fraction.data());
         if (activeSetSolve(net, g, rows, options_, *lu_, res)) return res;
     }
     const double w = options_.omega > 0.0 ? options_.omega : PsorSolver::automaticOmega(g);
@@ -426,7 +545,7 @@ double JfoSolver::boundaryInflow(const FilmState& film, const JfoResult& r) cons
 }
 
 Eigen::VectorXd JfoSolver::boundaryFlows(const FilmState& film, const JfoResult& r) const {
-    const std::vector<Face> faces = buildFaces(grid_, film, lubricant_.referenceViscosity());
+    const std::vector<Face> faces = buildFaces(*topology_, grid_, film, lubricant_.referenceViscosity());
     Eigen::VectorXd q = Eigen::VectorXd::Zero(grid_.size());
     for (const Face& f : faces) {
         const bool fa = grid_.kind(f.a) == NodeKind::Film, fb = grid_.kind(f.b) == NodeKind::Film;

@@ -34,6 +34,16 @@
 // maxActiveSetIterations, Gauss–Seidel sweeps continue from the last iterate. See
 // docs/lube.md §3b for measured speed (10–200× on long films and starved inlets, 1.5–3× on
 // 2-D films, where the sparse LU dominates).
+//
+// JfoMethod::Multigrid solves it on the Reynolds multigrid: every full-film balance is the
+// Reynolds-condition balance (φ = 1 throughout) plus the Couette inflow an upstream partial film
+// does not bring and the content term, i.e. a squeeze-rate correction; and a node the Reynolds
+// complementarity problem leaves at the bound has F(φ = 1) ≥ 0, i.e. φ* ≤ 1, the JFO rule. So
+// passes of [the Reynolds problem with that corrected squeeze rate (multigrid, warm-started);
+// one Gauss–Seidel pass of the nodal update along the Couette flow, which transports φ through
+// the cavities and moves the fronts] have the JFO solution as their fixed point. The pass stops
+// at the same criterion; should the residual not halve over three passes (a steady starved
+// film's meniscus alternates between two nodes) or the passes run out, the active set finishes.
 #include <Eigen/Core>
 #include <memory>
 #include <vector>
@@ -46,11 +56,17 @@
 namespace flexehd::lube {
 
 class SparseLuFactor;
+class ReynoldsSolver;
+struct JfoTopology;
 
 /// How the discrete JFO problem is solved (the same problem and convergence criterion).
 enum class JfoMethod {
     GaussSeidel,  ///< projected Gauss–Seidel of Ausas et al. (PSOR cost: sweeps grow with the grid)
-    ActiveSet     ///< semismooth Newton on the full-film/cavitated partition, sparse LU per step
+    ActiveSet,    ///< semismooth Newton on the full-film/cavitated partition, sparse LU per step
+    /// the Reynolds-condition problem on the multigrid with the film fraction's effect as a
+    /// squeeze-rate correction, and the film fraction transported through the cavities, to their
+    /// fixed point; the active set where that does not converge in maxMultigridPasses
+    Multigrid
 };
 
 struct JfoOptions {
@@ -61,6 +77,8 @@ struct JfoOptions {
     /// ActiveSet: partition updates (= LU factorizations) before falling back to Gauss–Seidel
     /// sweeps from the last iterate.
     int maxActiveSetIterations = 60;
+    /// Multigrid: fixed-point passes (one multigrid solve each) before the active set takes over.
+    int maxMultigridPasses = 40;
 };
 
 /// Film state carried between time steps.
@@ -72,7 +90,7 @@ struct JfoState {
 struct JfoResult {
     Eigen::VectorXd pressure;  ///< Pa
     Eigen::VectorXd fraction;  ///< φ per node (Void nodes 0, Fixed nodes their inlet fraction)
-    int iterations = 0;        ///< Gauss–Seidel sweeps
+    int iterations = 0;        ///< Gauss–Seidel sweeps (Multigrid: fixed-point passes)
     double residual = 0.0;
     int factorizations = 0;    ///< ActiveSet: partition updates, one sparse LU each
 };
@@ -112,6 +130,8 @@ private:
     // ActiveSet: the sparse LU with its ordering kept between solves (one pattern per grid);
     // solve() is therefore not safe to call from two threads on one solver.
     std::unique_ptr<SparseLuFactor> lu_;
+    mutable std::unique_ptr<ReynoldsSolver> multigrid_;  // Multigrid: built on the first solve
+    std::unique_ptr<JfoTopology> topology_;              // the faces touching Film nodes, once
 };
 
 }  // namespace flexehd::lube

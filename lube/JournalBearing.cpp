@@ -65,7 +65,9 @@ FilmSolution solveFilm(const JournalBearingSpec& s, const FilmGrid& grid, const 
         JfoOptions opt;
         opt.control.tolerance = s.tolerance;
         opt.omega = s.omega;
-        opt.method = s.solver == SolverKind::Psor ? JfoMethod::GaussSeidel : JfoMethod::ActiveSet;
+        opt.method = s.solver == SolverKind::Psor       ? JfoMethod::GaussSeidel
+                     : s.solver == SolverKind::ActiveSet ? JfoMethod::ActiveSet
+                                                         : JfoMethod::Multigrid;
         JfoSolver jfo(grid, oil, opt);
         if (s.supplyGroove)
             for (int i = 0; i < grid.nAxial(); ++i) jfo.setInletFraction(grid.index(i, grooveColumn(s)), s.supplyFraction);

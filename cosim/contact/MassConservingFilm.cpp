@@ -14,9 +14,9 @@ namespace {
 
 lube::JfoOptions jfoOptions(const LubricantSpec& l) {
     lube::JfoOptions o;
-    o.method = lube::JfoMethod::ActiveSet;
+    o.method = lube::JfoMethod::Multigrid;
     o.cavitationPressure = l.cavitationPressure;
-    o.control.tolerance = 1e-8;
+    o.control.tolerance = MassConservingFilm::kTolerance;
     o.control.maxIterations = 20000;
     return o;
 }

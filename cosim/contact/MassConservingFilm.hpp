@@ -1,10 +1,10 @@
 #pragma once
 // MassConservingFilm: the film with the mass-conserving JFO (Elrod–Adams) cavitation
-// (lube::JfoSolver, active set), pressure and film fraction on the piston-fixed grid
+// (lube::JfoSolver, its multigrid method), pressure and film fraction on the piston-fixed grid
 // (docs/coupling.md §6). The transient term is that of the film's oil content φh in the grid's
 // frame, by backward Euler from the last accepted step: V (φh − φₙhₙ)/Δt, the thickness h the
-// film equation sees (floored, with the elastic change), so each step conserves the oil exactly:
-// the change of Σ V φ h is the net inflow through the film's edges times Δt. The supply at the
+// film equation sees (floored, with the elastic change), so each step conserves the oil: the
+// change of Σ V φ h is the net inflow through the film's edges times Δt, to the solver's tolerance. The supply at the
 // skirt's edges is flooded (φ_in = 1) or the liner's oil layer (SkirtOilExchange).
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmEquation.hpp"
@@ -31,6 +31,9 @@ public:
     double rateFactor(const ContactStep& step) const override { return 1.0 / step.a0; }
     const lube::Lubricant& lubricant() const override { return lubricant_; }
 
+    /// The film solve's tolerance on the scaled mass residual (lube::JfoSolver), as the Reynolds
+    /// film's: each step's oil balance holds to it (its error is the sum of the nodes' residuals).
+    static constexpr double kTolerance = 1e-8;
     /// The liner's oil layer rules (null: flooded supply).
     const SkirtOilExchange* exchange() const { return exchange_.get(); }
 

@@ -1,5 +1,6 @@
 // The skirt's mass-conserving film in the co-simulation (docs/coupling.md §6): the oil balance of
 // every step and of the liner's layer over a run, and starvation's trends against a flooded film.
+#include "cosim/contact/MassConservingFilm.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/engine/SkirtFilm.hpp"
 #include "lube/JfoSolver.hpp"
@@ -49,9 +50,12 @@ double worstStepImbalance(const std::vector<StepRecord>& r, double& largestStepF
 
 }  // namespace
 
-// Bar: the JFO active set ends with its partition settled, where the balances hold to round-off
-// (lube::JfoSolver); the sums over ~10³ nodes of terms of the size of a step's flow lose about
-// 1e-13 of it. 1e-9 of the largest step flow leaves room and fails for any missing flux.
+// Bar: summed over the film, the balances of the nodes telescope (every inner face's flux leaves one
+// node and enters the next), so a step's imbalance is the sum of the nodes' residuals, which the
+// film solver leaves below its tolerance on the scaled mass residual (kTolerance, 1e-8): each
+// node's residual is below 1e-8 of its own flows. Ten times the tolerance of the largest step
+// flow leaves room for the sum; any missing flux (an edge, a side, the storage) breaks it by
+// orders of magnitude.
 TEST(MassConservingSkirt, EveryStepConservesTheFilmsOil) {
     for (const double layer : {0.0, 3e-6}) {
         double largest = 0.0;
@@ -61,7 +65,7 @@ TEST(MassConservingSkirt, EveryStepConservesTheFilmsOil) {
                     r.size(), worst, largest);
         ASSERT_GT(r.size(), 50u);
         EXPECT_GT(largest, 0.0);
-        EXPECT_LT(worst, 1e-9 * largest);
+        EXPECT_LT(worst, 10.0 * MassConservingFilm::kTolerance * largest);
     }
 }
 
@@ -70,8 +74,11 @@ TEST(MassConservingSkirt, EveryStepConservesTheFilmsOil) {
 TEST(MassConservingSkirt, LinerAndFilmOilChangeByReplenishmentAndLeakageOnly) {
     const std::vector<StepRecord> r = run(massConserving(8e-6), 720.0);
     ASSERT_GT(r.size(), 100u);
-    double leaked = 0.0;
-    for (std::size_t i = 1; i < r.size(); ++i) leaked += (r[i].time - r[i - 1].time) * r[i].sideLeakage;
+    double leaked = 0.0, moved = 0.0;  // side leakage; the volume through the edges
+    for (std::size_t i = 1; i < r.size(); ++i) {
+        leaked += (r[i].time - r[i - 1].time) * r[i].sideLeakage;
+        moved += (r[i].time - r[i - 1].time) * (r[i].oilIn + r[i].oilOut);
+    }
     const StepRecord &a = r.front(), &b = r.back();
     const double change = (b.linerOil + b.filmOil) - (a.linerOil + a.filmOil);
     const double expected = (b.replenishedOil - a.replenishedOil) - leaked;
@@ -80,7 +87,9 @@ TEST(MassConservingSkirt, LinerAndFilmOilChangeByReplenishmentAndLeakageOnly) {
                 expected);
     EXPECT_GT(a.linerOil, 0.0);
     EXPECT_GT(std::abs(leaked), 1e-3 * a.filmOil);  // the side term is part of the balance checked
-    EXPECT_NEAR(change, expected, 1e-9 * (a.linerOil + a.filmOil));
+    // The exchange's rules move volume exactly; the film's balance holds to its tolerance per step
+    // (as above), so over the run to that tolerance of the volume moved through the edges.
+    EXPECT_NEAR(change, expected, 10.0 * MassConservingFilm::kTolerance * moved);
 }
 
 // Starvation (a liner layer of 1 um against a flooded skirt): less oil carries less load, so the

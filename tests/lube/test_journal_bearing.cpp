@@ -51,6 +51,18 @@ TEST(JournalBearingGroove, At270DegreesActiveSetMatchesGaussSeidel) {
 // Richardson limits of the coarse pair and of the fine pair must agree to a fifth of the fine
 // pair's difference (in the asymptotic range they differ by the higher-order remainder only). The load is pre-asymptotic on
 // these grids (its differences change sign below 128×33); it must settle to 1e-3 of itself.
+// The multigrid method of the mass-conserving film (the bearing's default) against the active set
+// at 270°, where the film re-forms inside the bearing: the same discrete problem, so the loads and
+// the friction agree to the tolerance's effect.
+TEST(JournalBearingGroove, At270DegreesMultigridMatchesActiveSet) {
+    const JournalBearingResult a = JournalBearing(grooveAt270(64, 17, SolverKind::ActiveSet)).solve();
+    const JournalBearingResult m = JournalBearing(grooveAt270(64, 17, SolverKind::Multigrid)).solve();
+    std::printf("groove 270: load %.9g / %.9g N, torque %.9g / %.9g N m\n", a.load, m.load, a.frictionTorque,
+                m.frictionTorque);
+    EXPECT_NEAR(m.load / a.load, 1.0, 1e-6);
+    EXPECT_NEAR(m.frictionTorque / a.frictionTorque, 1.0, 1e-6);
+}
+
 TEST(JournalBearingGroove, At270DegreesConvergesToTheGridLimit) {
     double W[3], M[3], A[3];
     for (int r = 0; r < 3; ++r) {
