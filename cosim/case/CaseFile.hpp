@@ -19,6 +19,9 @@ struct CaseFileOptions {
     /// their paths are still resolved to absolute paths but not opened (tests, or checking a
     /// case before the reduced bodies have been made).
     bool checkBodyFiles = true;
+    /// Rigid piston and liner whatever the case says (`flexehd run --rigid`), before the checks
+    /// that depend on the bodies.
+    bool rigidBodies = false;
 };
 
 /// Reads and validates a case file. Relative paths in it (cylinder pressure, reduced bodies,

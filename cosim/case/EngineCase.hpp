@@ -131,6 +131,9 @@ struct TimeSpec {
     /// m: the cycle is periodic when max over its steps of |Δe| + |Δβ|·reach ≤ this, with Δ the change
     /// from the previous cycle at the same crank angle and reach = max(skirtTop, −skirtBottom)
     double periodicityTolerance = 1e-6;
+    /// Mass-conserving film: the cycle is periodic only when the oil on the liner and in the film
+    /// at its end differs from its start by at most this share too (docs/coupling.md §6).
+    double oilPeriodicityTolerance = 1e-3;
 };
 
 enum class CouplingAcceleration { IqnIls, Aitken };

@@ -25,12 +25,10 @@ struct RunArgs {
 
 // The case file with the command line's overrides.
 cosim::EngineCase caseOf(const RunArgs& a) {
-    cosim::EngineCase c = cosim::readCaseFile(a.casePath);
+    cosim::CaseFileOptions options;
+    options.rigidBodies = a.rigid;
+    cosim::EngineCase c = cosim::readCaseFile(a.casePath, options);
     if (!a.out.empty()) c.output.directory = std::filesystem::absolute(a.out).string();
-    if (a.rigid) {
-        c.pistonBody.model = cosim::BodyModel::Rigid;
-        c.linerBody.model = cosim::BodyModel::Rigid;
-    }
     if (a.cycles > 0) c.time.maxCycles = a.cycles;
     return c;
 }

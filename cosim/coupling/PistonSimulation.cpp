@@ -152,6 +152,19 @@ void PistonSimulation::oilRecord(const StepState& s, const ContactIterate& f, St
     r.replenishedOil = st.oilBalance.replenished;
 }
 
+void PistonSimulation::cycleOil(const std::vector<StepRecord>& cycle) {
+    if (cycle.empty()) return;
+    const StepRecord &a = cycle.front(), &b = cycle.back();
+    stats_.oil = true;
+    stats_.linerOil = b.linerOil;
+    stats_.filmOil = b.filmOil;
+    const double start = a.linerOil + a.filmOil, end = b.linerOil + b.filmOil;
+    stats_.oilPeriodicityError = std::abs(end - start) / std::max(end, 1e-300);
+    stats_.replenishedOil = b.replenishedOil - a.replenishedOil;
+    stats_.leakedOil = 0.0;
+    for (std::size_t i = 1; i < cycle.size(); ++i) stats_.leakedOil += (cycle[i].time - cycle[i - 1].time) * cycle[i].sideLeakage;
+}
+
 Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev, int cycle) const {
     Snapshot sn;
     const lube::FilmGrid& g = skirt_->grid();
@@ -172,14 +185,19 @@ Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev
     const double eta = skirt_->lubricant().referenceViscosity();
     for (int k2 = 0; k2 < g.size(); ++k2) {
         if (g.kind(k2) == lube::NodeKind::Void) continue;
-        if (g.kind(k2) == lube::NodeKind::Film && f.p[k2] <= case_.lubricant.cavitationPressure) sn.cavitation[k2] = 1.0;
+        if (f.fraction.size())  // mass-conserving: the film fraction's complement
+            sn.cavitation[k2] = g.kind(k2) == lube::NodeKind::Film ? 1.0 - f.fraction[k2] : 0.0;
+        else if (g.kind(k2) == lube::NodeKind::Film && f.p[k2] <= case_.lubricant.cavitationPressure)
+            sn.cavitation[k2] = 1.0;
         // τ_z on the piston = η (V_liner − V_piston)/h − (h/2) ∂p/∂z (central differences).
         const int i = g.axialIndex(k2), j = g.thetaIndex(k2);
         const int i0 = std::max(0, i - 1), i1 = std::min(g.nAxial() - 1, i + 1);
         const double dpdz = (f.p[g.index(i1, j)] - f.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
-        const double phi = sn.cavitation[k2] > 0.0 ? 0.0 : 1.0;  // no Couette shear where cavitated
+        // Couette shear on the oil only: φ, or none where the Reynolds condition cavitates.
+        const double phi = f.fraction.size() ? 1.0 - sn.cavitation[k2] : (sn.cavitation[k2] > 0.0 ? 0.0 : 1.0);
         sn.shearStress[k2] = phi * eta * (-k.velocity) / f.h[k2] - 0.5 * f.h[k2] * dpdz;
     }
+    sn.filmFraction = f.fraction;
     if (mp_ > 0) sn.pistonModal = s.y.head(mp_);
     if (ml_ > 0) sn.linerModal = s.y.tail(ml_);
     return sn;
@@ -397,9 +415,11 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             }
         }
         stats_.cycles = cycle;
+        if (case_.lubricant.cavitation == CavitationModel::MassConserving) cycleOil(cycleRecords);
         if (!previousCycle.empty()) {  // this cycle vs the previous one
             stats_.periodicityError = periodicityError(cycleRecords, cycleSince, previousCycle, previousSince);
-            stats_.periodic = stats_.periodicityError <= T.periodicityTolerance;
+            stats_.periodic = stats_.periodicityError <= T.periodicityTolerance &&
+                              (!stats_.oil || stats_.oilPeriodicityError <= T.oilPeriodicityTolerance);
         }
         if (cb.progress)
             cb.progress(progress.cycleDoneLine(tRun.seconds(), previousCycle.empty() ? std::nullopt

@@ -48,6 +48,7 @@ struct Snapshot {
     double linerOffset = 0.0;    ///< m, liner-frame z of the piston frame's origin
     double lateral = 0.0, tilt = 0.0;
     Eigen::VectorXd pressure, filmThickness, contactPressure, shearStress, cavitation;
+    Eigen::VectorXd filmFraction;  ///< mass-conserving film: φ per node (empty with the Reynolds condition)
     Eigen::VectorXd pistonModal, linerModal;  ///< modal coordinates (empty for rigid bodies)
 };
 
@@ -64,6 +65,11 @@ struct RunStatistics {
     int cycles = 0;
     bool periodic = false;
     double periodicityError = 0.0;  ///< m, last cycle vs the one before (see docs/coupling.md)
+    /// Mass-conserving film, the last cycle (docs/coupling.md §6): oil on the liner and in the film
+    /// at its end (m³), the relative change of their sum over it, what the replenishment added
+    /// and the sides leaked over it (m³); `oil` false with the Reynolds condition.
+    bool oil = false;
+    double linerOil = 0.0, filmOil = 0.0, oilPeriodicityError = 0.0, replenishedOil = 0.0, leakedOil = 0.0;
     long steps = 0, rejectedSteps = 0, filmSolves = 0, jacobians = 0;
     long fallbackSolves = 0;        ///< film solves redone by the active-set solver (multigrid failed)
     long resolvedSteps = 0;         ///< steps ended by the resolution test of the coupled Newton (docs/coupling.md §1)
@@ -118,6 +124,8 @@ private:
     StepRecord record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, int iterations) const;
     // The stages of run (PistonSimulation.cpp).
     StepState initialState(const SimulationCallbacks& cb) const;
+    /// The last cycle's oil figures into stats_ (mass-conserving film).
+    void cycleOil(const std::vector<StepRecord>& cycle);
     /// The oil columns of a record from the skirt's mass-conserving film.
     void oilRecord(const StepState& s, const ContactIterate& f, StepRecord& r) const;
     /// The next step: dtDeg, shortened to land on the next snapshot angle or the cycle's end.

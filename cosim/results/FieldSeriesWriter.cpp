@@ -40,7 +40,8 @@ std::vector<NamedFilmField> filmFields(const FilmField& f) {
             {"filmThickness", "film_thickness_m", &f.filmThickness, true},
             {"contactPressure", "contact_pressure_pa", &f.contactPressure, false},
             {"shearStress", "shear_stress_pa", &f.shearStress, false},
-            {"cavitation", "cavitation_fraction", &f.cavitation, false}};
+            {"cavitation", "cavitation_fraction", &f.cavitation, false},
+            {"filmFraction", "film_fraction", &f.filmFraction, false}};
 }
 
 std::string filmNode(const lube::FilmGrid& g, Eigen::Index k) {

@@ -30,6 +30,7 @@ struct FilmField {
     Eigen::VectorXd contactPressure;  ///< Pa, asperity contact (empty: not written)
     Eigen::VectorXd shearStress;      ///< Pa, axial wall shear on the piston (empty: not written)
     Eigen::VectorXd cavitation;       ///< cavitated fraction 1 − φ, 0 = full film (empty: not written)
+    Eigen::VectorXd filmFraction;     ///< film fraction φ of a mass-conserving film (empty: not written)
 };
 
 /// One snapshot of a body mesh.

@@ -78,6 +78,7 @@ void writeSnapshot(FieldSeriesWriter& fields, const EngineCase& c, const PistonS
     film.contactPressure = s.contactPressure;
     film.shearStress = s.shearStress;
     film.cavitation = s.cavitation;
+    film.filmFraction = s.filmFraction;
     BodyField piston, liner;
     if (sim.piston()) {
         piston.mesh = &sim.piston()->body().mesh;

@@ -520,6 +520,10 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
                 AllOf(StartsWith(file + ": coupling.elastic_squeeze"), HasSubstr("coupling.method: newton")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation_pressure: 2e5}"),
                 AllOf(StartsWith(file + ": lubricant.cavitation_pressure")));
+    EXPECT_THAT(caseError(dir, "name: small",
+                          "name: small\nlubricant: {cavitation: mass_conserving}\nbodies: {piston: {file: p.h5}}",
+                          kPressureCsv, noBodyFiles()),
+                AllOf(StartsWith(file + ": bodies.piston"), HasSubstr("rigid bodies only")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation: elrod}"),
                 AllOf(StartsWith(file + ": lubricant.cavitation"), HasSubstr("reynolds, mass_conserving")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation: mass_conserving, barus_alpha: 2e-8}"),
