@@ -3,8 +3,9 @@
 # paper's engine (examples/engine86/: SI single cylinder, 86 x 86 mm, 50 um clearance, firing
 # at 1000 rpm, fully flooded): reduce the piston (and the liner) from meshes/, run the piston's
 # secondary motion with rigid bodies (HD) and with the flexible piston (EHD) until the cycle is
-# periodic, compute the thermal state (flexehd thermal) and run HD with it, and plot the
-# comparison (like the seed's Fig. 5). Results in out/engine86/.
+# periodic, compute the thermal state (flexehd thermal) and run HD with it, run HD with the
+# mass-conserving film flooded and starved (a 3 um liner oil layer), and plot the comparisons
+# (like the seed's Fig. 5; flooded vs starved). Results in out/engine86/.
 # FLEXEHD_EXAMPLE_LINER=1 also runs the flexible piston + flexible liner case;
 # FLEXEHD_EXAMPLE_RIGID_RATE=1 also EHD with the rigid film thickness's rate only in the squeeze
 # term (ehd_rigid_rate.yaml, about 40 s more; docs/coupling.md section 3).
@@ -50,10 +51,17 @@ if [[ "${FLEXEHD_EXAMPLE_RIGID_RATE:-0}" == 1 ]]; then
   labels+=("EHD rigid rate")
 fi
 
+echo "== HD with the mass-conserving film: flooded, and on a 3 um liner oil layer (starved)"
+"$flexehd" run "$root/examples/engine86/mass_conserving.yaml"
+"$flexehd" run "$root/examples/engine86/starved.yaml"
+
 /usr/bin/python3 "$root/scripts/plot_results.py" "${dirs[0]}" --compare "${dirs[@]:1}" \
   --labels "${labels[@]}" --out "$out/plots"
+/usr/bin/python3 "$root/scripts/plot_results.py" "$out/mass_conserving" --compare "$out/starved" "$out/hd" \
+  --labels "flooded" "starved (3 um layer)" "flooded, Reynolds condition" --out "$out/plots_oil_supply"
 echo
-echo "Results: $out/{hd,ehd,thermal_hd}/history.csv and summary.json; plots in $out/plots/;"
+echo "Results: $out/{hd,ehd,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
+echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil), $out/plots_oil_supply/;"
 echo "temperatures and thermal expansion in $out/thermal/ (piston.vtu, liner.vtu)."
 echo "ParaView: open $out/ehd/film.pvd (film grid: pressure, film thickness, contact, shear) and"
 echo "$out/ehd/piston.pvd (Warp By Vector: 'displacement_m' with a scale of about 20, 'elastic_displacement_m' 100-200)."

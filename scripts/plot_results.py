@@ -338,6 +338,18 @@ def plot_film(runs, out_dir):
                   ("max_pressure_pa", 1e-6, "maximum film pressure (MPa, gauge)")])
 
 
+def plot_oil(runs, out_dir):
+    """The mass-conserving film's oil (only the runs that have the oil columns)."""
+    oily = [r for r in runs if "film_oil_m3" in r[1]]
+    if not oily:
+        return
+    plot_columns(oily, out_dir, "oil.png", "Oil on the skirt and the liner (mass-conserving film)",
+                 [("wetted_share", 100.0, "skirt area in\nfull film (%)"),
+                  ("film_oil_m3", 1e9, "oil in the\nskirt's film (mm³)"),
+                  ("liner_oil_m3", 1e9, "oil on the liner\noutside the skirt (mm³)"),
+                  ("oil_in_m3_per_s", 1e9, "oil into the skirt\nat its edges (mm³/s)")], height=8.5)
+
+
 def cycle_note(runs):
     cycles = {f"{c}{note}" for _, _, (c, note), _ in runs}
     return f", cycle {cycles.pop()}" if len(cycles) == 1 else ", cycles " + ", ".join(
@@ -376,6 +388,7 @@ def main(argv=None):
         plot_friction(runs, out_dir)
         plot_contact(runs, out_dir)
         plot_film(runs, out_dir)
+        plot_oil(runs, out_dir)
         for label, _, _, d in runs:
             plot_film_maps(label, d, out_dir)
     except (PlotError, OSError) as e:

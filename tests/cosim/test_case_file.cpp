@@ -221,6 +221,19 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     const EngineCase hot = readCaseFile(source("examples/engine86/thermal_hd.yaml"), noBodyFiles());
     const EngineCase dynamic = readCaseFile(source("examples/engine86/ehd_dynamic.yaml"), noBodyFiles());
     const EngineCase rigidRate = readCaseFile(source("examples/engine86/ehd_rigid_rate.yaml"), noBodyFiles());
+    const EngineCase flooded = readCaseFile(source("examples/engine86/mass_conserving.yaml"), noBodyFiles());
+    const EngineCase starved = readCaseFile(source("examples/engine86/starved.yaml"), noBodyFiles());
+    // The oil-supply pair: hd.yaml with the mass-conserving film, flooded and on a 3 µm liner layer.
+    EXPECT_EQ(hd.lubricant.cavitation, cosim::CavitationModel::Reynolds);
+    for (const EngineCase* v : {&flooded, &starved}) {
+        EXPECT_EQ(v->lubricant.cavitation, cosim::CavitationModel::MassConserving);
+        EXPECT_EQ(v->pistonBody.model, BodyModel::Rigid);
+        EXPECT_EQ(v->linerBody.model, BodyModel::Rigid);
+    }
+    EXPECT_EQ(flooded.lubricant.supply.model, cosim::OilSupplyModel::Flooded);
+    EXPECT_EQ(starved.lubricant.supply.model, cosim::OilSupplyModel::LinerLayer);
+    ASSERT_EQ(starved.lubricant.supply.layer.size(), 1u);
+    EXPECT_EQ(starved.lubricant.supply.layer[0].thickness, 3.0e-6);
     EXPECT_EQ(dynamic.coupling.response, cosim::ElasticResponse::Dynamic);
     EXPECT_FALSE(rigidRate.coupling.elasticSqueeze);
     EXPECT_TRUE(ehd.coupling.elasticSqueeze && dynamic.coupling.elasticSqueeze);  // the default with newton
@@ -240,7 +253,7 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     EXPECT_EQ(both.linerBody.interface, "top_seat");
     EXPECT_THAT(both.linerBody.interfaces, ::testing::ElementsAre("top_seat", "bottom_seat"));
     EXPECT_EQ(both.linerBody.file, fs::path(source("out/engine86/liner.h5")).lexically_normal().string());
-    for (const EngineCase* v : {&hd, &both, &hot, &dynamic, &rigidRate}) {
+    for (const EngineCase* v : {&hd, &both, &hot, &dynamic, &rigidRate, &flooded, &starved}) {
         EXPECT_NE(v->output.directory, ehd.output.directory);
         // Everything else equal: compare the parameter structs field by field through memcmp-free
         // checks of the values that drive the physics.
