@@ -152,6 +152,16 @@ void PistonSimulation::oilRecord(const StepState& s, const ContactIterate& f, St
     r.replenishedOil = st.oilBalance.replenished;
 }
 
+void PistonSimulation::cyclePeriodicity(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
+                                        const std::vector<StepRecord>& previous, const std::vector<double>& previousSince) {
+    const TimeSpec& T = case_.time;
+    if (case_.lubricant.cavitation == CavitationModel::MassConserving) cycleOil(cycle);
+    if (previous.empty()) return;  // this cycle vs the previous one
+    stats_.periodicityError = periodicityError(cycle, since, previous, previousSince);
+    stats_.periodic = stats_.periodicityError <= T.periodicityTolerance &&
+                      (!stats_.oil || stats_.oilPeriodicityError <= T.oilPeriodicityTolerance);
+}
+
 void PistonSimulation::cycleOil(const std::vector<StepRecord>& cycle) {
     if (cycle.empty()) return;
     const StepRecord &a = cycle.front(), &b = cycle.back();
@@ -415,12 +425,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             }
         }
         stats_.cycles = cycle;
-        if (case_.lubricant.cavitation == CavitationModel::MassConserving) cycleOil(cycleRecords);
-        if (!previousCycle.empty()) {  // this cycle vs the previous one
-            stats_.periodicityError = periodicityError(cycleRecords, cycleSince, previousCycle, previousSince);
-            stats_.periodic = stats_.periodicityError <= T.periodicityTolerance &&
-                              (!stats_.oil || stats_.oilPeriodicityError <= T.oilPeriodicityTolerance);
-        }
+        cyclePeriodicity(cycleRecords, cycleSince, previousCycle, previousSince);
         if (cb.progress)
             cb.progress(progress.cycleDoneLine(tRun.seconds(), previousCycle.empty() ? std::nullopt
                                                                                    : std::optional(stats_.periodicityError)));

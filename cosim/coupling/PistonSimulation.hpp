@@ -124,6 +124,10 @@ private:
     StepRecord record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, int iterations) const;
     // The stages of run (PistonSimulation.cpp).
     StepState initialState(const SimulationCallbacks& cb) const;
+    /// The cycle's periodicity against the previous one (motion, and the oil of a mass-conserving
+    /// film) into stats_.
+    void cyclePeriodicity(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
+                          const std::vector<StepRecord>& previous, const std::vector<double>& previousSince);
     /// The last cycle's oil figures into stats_ (mass-conserving film).
     void cycleOil(const std::vector<StepRecord>& cycle);
     /// The oil columns of a record from the skirt's mass-conserving film.
