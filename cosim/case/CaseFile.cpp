@@ -216,6 +216,14 @@ void readContact(const YamlSection& s, ContactSpec& c) {
     c.asperityDensity = number(s, "asperity_density", {"asperity density", "1/m^2"}, Sign::Positive, c.asperityDensity);
     c.boundaryFriction =
         number(s, "boundary_friction", {"friction coefficient", ""}, Sign::NonNegative, c.boundaryFriction);
+    for (const auto& [key, k] : {std::pair{"piston_wear_coefficient", &c.pistonWearCoefficient},
+                                 std::pair{"liner_wear_coefficient", &c.linerWearCoefficient}}) {
+        *k = number(s, key, {"Archard wear coefficient", "m^2/N"}, Sign::NonNegative, *k);
+        if (*k > 1e-10)
+            s.fail(key, fmt::format("a wear coefficient of {:g} m^2/N is far above any engine material's (about 1e-18 "
+                                    "to 1e-13 m^2/N): check the units (m^2/N = m^3/(N m))",
+                                    *k));
+    }
     if (c.boundaryFriction > 1.0)
         s.fail("boundary_friction",
                fmt::format("expected a friction coefficient between 0 and 1, got {:g}", c.boundaryFriction));
@@ -639,7 +647,8 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
         ctx, top.get("contact"), "contact",
         {"sigma", "beta", "asperity_density", "composite_modulus", "boundary_friction", "piston_youngs_modulus",
          "piston_poisson_ratio", "liner_youngs_modulus", "liner_poisson_ratio", "coating_thickness",
-         "coating_youngs_modulus", "coating_poisson_ratio", "hard_contact_stiffness"});
+         "coating_youngs_modulus", "coating_poisson_ratio", "hard_contact_stiffness", "piston_wear_coefficient",
+         "liner_wear_coefficient"});
     readContact(contact, c.contact);
 
     readCylinderPressure(top, ctx, c);

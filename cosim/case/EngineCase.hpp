@@ -96,6 +96,10 @@ struct ContactSpec {
     double coatingModulus = 8e9;          ///< Pa, Young's modulus of the coating
     double coatingPoisson = 0.3;          ///< Poisson's ratio of the coating
     double hardContactStiffness = 0.0;    ///< Pa/m, K given directly (> 0 overrides the coating)
+    /// Archard wear coefficients k (m²/N) of the skirt and the liner: wear depth rate k p_c |u|
+    /// (docs/coupling.md §7); 0 = no wear map of that surface.
+    double pistonWearCoefficient = 0.0;
+    double linerWearCoefficient = 0.0;
 };
 
 struct PressureSample {

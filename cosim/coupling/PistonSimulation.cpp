@@ -1,6 +1,7 @@
 #include "cosim/coupling/PistonSimulation.hpp"
 
 #include "cosim/oil/LinerOilLayer.hpp"
+#include "cosim/wear/ArchardWear.hpp"
 
 #include "cosim/case/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -76,6 +78,15 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
     if (mp_ + ml_ > 0) requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, mp_ + ml_);
     stepper_ = std::make_unique<StepSolver>(case_, kin_, dyn_, pressure_, contacts_, pistonBody_, linerBody_,
                                             [this](double deg) { return linerOffset(deg); }, work_);
+    if (c.contact.pistonWearCoefficient > 0.0 || c.contact.linerWearCoefficient > 0.0) {
+        const lube::FilmGrid& g = skirt_->grid();  // the liner's reach: the skirt's edges over a revolution
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (int k = 0; k <= 1440; ++k) {
+            lo = std::min(lo, linerOffset(0.25 * k) + g.z(0));
+            hi = std::max(hi, linerOffset(0.25 * k) + g.z(g.nAxial() - 1));
+        }
+        wear_ = std::make_unique<ArchardWear>(g, c.contact.pistonWearCoefficient, c.contact.linerWearCoefficient, lo, hi);
+    }
     stats_.timings.setup = t0.seconds();
 }
 
@@ -152,14 +163,39 @@ void PistonSimulation::oilRecord(const StepState& s, const ContactIterate& f, St
     r.replenishedOil = st.oilBalance.replenished;
 }
 
+void PistonSimulation::afterAccepted(const StepState& s, const StepEvaluation& ev, double stepDeg, double& worstDiff,
+                                     double& largestForce) {
+    if (mp_ > 0) checkLoadMapping(ev, worstDiff, largestForce);
+    if (wear_)
+        wear_->add(ev.films.front().pc, kin_.at(s.crankDeg).velocity, linerOffset(s.crankDeg),
+                   stepDeg * kin_.secondsPerDegree());
+}
+
 void PistonSimulation::cyclePeriodicity(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
                                         const std::vector<StepRecord>& previous, const std::vector<double>& previousSince) {
     const TimeSpec& T = case_.time;
     if (case_.lubricant.cavitation == CavitationModel::MassConserving) cycleOil(cycle);
+    if (wear_) {
+        wear_->finishCycle();
+        wearSummary();
+    }
     if (previous.empty()) return;  // this cycle vs the previous one
     stats_.periodicityError = periodicityError(cycle, since, previous, previousSince);
     stats_.periodic = stats_.periodicityError <= T.periodicityTolerance &&
                       (!stats_.oil || stats_.oilPeriodicityError <= T.oilPeriodicityTolerance);
+}
+
+void PistonSimulation::wearSummary() {
+    // The largest mean rates of the cycle's maps and where they are (docs/coupling.md §7).
+    const lube::FilmGrid& g = skirt_->grid();
+    Eigen::Index kp = 0, kl = 0;
+    stats_.wear = true;
+    stats_.pistonWearMax = wear_->pistonRate().maxCoeff(&kp) * 3600.0;
+    stats_.pistonWearZ = g.z(g.axialIndex(int(kp)));
+    stats_.pistonWearThetaDeg = g.theta(g.thetaIndex(int(kp))) * 180.0 / 3.14159265358979323846;
+    stats_.linerWearMax = wear_->linerRate().maxCoeff(&kl) * 3600.0;
+    stats_.linerWearDepth = -wear_->linerCellZ(int(kl) / g.nTheta());
+    stats_.linerWearThetaDeg = g.theta(int(kl) % g.nTheta()) * 180.0 / 3.14159265358979323846;
 }
 
 void PistonSimulation::cycleOil(const std::vector<StepRecord>& cycle) {
@@ -405,9 +441,9 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             stepper_->stepAccepted();
             stats_.maxIterations = std::max(stats_.maxIterations, iterations);
             stats_.minStepDeg = std::min(stats_.minStepDeg, step);
-            if (mp_ > 0) checkLoadMapping(ev, worstMappingDiff, largestFilmForce);
             prev = std::move(s);
             s = std::move(n);
+            afterAccepted(s, ev, step, worstMappingDiff, largestFilmForce);
             lastEv = ev;
             haveLast = true;
             StepRecord rec = record(s, ev, cycle, step, iterations);

@@ -10,6 +10,7 @@
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/results/FieldSeriesWriter.hpp"
 #include "cosim/results/HistoryWriter.hpp"
+#include "cosim/results/WearMapWriter.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/results/RunSummary.hpp"
 #include "fem/AtomicFile.hpp"
@@ -166,6 +167,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log) {
         fields.discard();  // the unfinished cycle's snapshots; the last complete cycle's stay listed
     }
     if (cycle.empty() && status == "ok") status = "failed";
+    if (sim.wear() && sim.wear()->finished()) writeWearMaps(dir, sim.film().grid(), *sim.wear());  // the last whole cycle's
     CaseRunResult result;
     result.summary = runSummary({c, sim, cycle, status, message, outputSeconds, outputInRun, total.seconds()});
     writeSummary(dir, result.summary);

@@ -537,6 +537,10 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
                           "name: small\nlubricant: {cavitation: mass_conserving}\nbodies: {piston: {file: p.h5}}",
                           kPressureCsv, noBodyFiles()),
                 AllOf(StartsWith(file + ": bodies.piston"), HasSubstr("rigid bodies only")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {liner_wear_coefficient: 1e-6}"),
+                AllOf(StartsWith(file + ": contact.liner_wear_coefficient"), HasSubstr("check the units")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {piston_wear_coefficient: -1e-16}"),
+                AllOf(StartsWith(file + ": contact.piston_wear_coefficient")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation: elrod}"),
                 AllOf(StartsWith(file + ": lubricant.cavitation"), HasSubstr("reynolds, mass_conserving")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation: mass_conserving, barus_alpha: 2e-8}"),
