@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lube/GridColouring.hpp"
+
 namespace flexehd::lube {
 
 struct FilmLinearization::Factor {
@@ -17,42 +19,11 @@ struct FilmLinearization::Factor {
     Factor() { llt.cholmod().print = 0; }
 };
 
-namespace {
-
-// The grid neighbours of node k (θ wrapped on a full circumference).
-template <class Visit>
-void forEachNeighbour(const FilmGrid& g, int k, Visit&& visit) {
-    const int nz = g.nAxial(), nt = g.nTheta(), i = g.axialIndex(k), j = g.thetaIndex(k);
-    if (i > 0) visit(g.index(i - 1, j));
-    if (i + 1 < nz) visit(g.index(i + 1, j));
-    if (j > 0 || g.periodic()) visit(g.index(i, (j + nt - 1) % nt));
-    if (j + 1 < nt || g.periodic()) visit(g.index(i, (j + 1) % nt));
-}
-
-}  // namespace
 
 FilmLinearization::FilmLinearization(const FilmGrid& grid) : grid_(&grid), factor_(std::make_unique<Factor>()) {
-    // Greedy distance-2 colouring: a node takes the smallest colour not used within two steps.
-    const int n = grid.size();
-    colour_.assign(static_cast<std::size_t>(n), -1);
-    std::vector<int> seen(16, -1);
-    for (int k = 0; k < n; ++k) {
-        auto mark = [&](int a) {
-            const int c = colour_[static_cast<std::size_t>(a)];
-            if (c >= 0) {
-                if (c >= int(seen.size())) seen.resize(static_cast<std::size_t>(c) + 1, -1);
-                seen[static_cast<std::size_t>(c)] = k;
-            }
-        };
-        forEachNeighbour(grid, k, [&](int a) {
-            mark(a);
-            forEachNeighbour(grid, a, mark);
-        });
-        int c = 0;
-        while (c < int(seen.size()) && seen[static_cast<std::size_t>(c)] == k) ++c;
-        colour_[static_cast<std::size_t>(k)] = c;
-        colours_ = std::max(colours_, c + 1);
-    }
+    GridColouring gc = distanceTwoColouring(grid);
+    colour_ = std::move(gc.colour);
+    colours_ = gc.colours;
 }
 
 FilmLinearization::~FilmLinearization() = default;

@@ -11,144 +11,12 @@
 #include "lube/PsorSolver.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "lube/ReynoldsSystem.hpp"
+#include "lube/JfoNetwork.hpp"
 #include "lube/SparseLuFactor.hpp"
 
 namespace flexehd::lube {
 
 namespace {
-
-using JfoMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-// One face of the finite-volume scheme, volumetric: flow a → b = c (p_a − p_b) + q φ_up,
-// φ_up = φ_a if q > 0 else φ_b.
-struct Face {
-    int a, b;
-    double c, q;
-};
-
-}  // namespace
-
-// The faces of the grid's finite volumes that touch a Film node and the node → face adjacency
-// (CSR): fixed for a grid, built once per solver.
-struct JfoTopology {
-    struct FaceGeometry {
-        int a, b;
-        bool axial;
-        double L, d;  // face length and distance (m)
-    };
-    std::vector<FaceGeometry> faces;
-    std::vector<int> start, adj;
-    std::vector<double> area;  // control-volume area per node (m²)
-
-    explicit JfoTopology(const FilmGrid& g) {
-        for (int k = 0; k < g.size(); ++k) area.push_back(g.area(k));
-        forEachFace(g, [&](int a, int b, bool axial, double L, double d) {
-            if (g.kind(a) != NodeKind::Film && g.kind(b) != NodeKind::Film) return;
-            faces.push_back({a, b, axial, L, d});
-        });
-        const int n = g.size();
-        start.assign(static_cast<std::size_t>(n) + 1, 0);
-        adj.resize(2 * faces.size());
-        for (const FaceGeometry& f : faces) {
-            ++start[static_cast<std::size_t>(f.a) + 1];
-            ++start[static_cast<std::size_t>(f.b) + 1];
-        }
-        for (int k = 0; k < n; ++k) start[static_cast<std::size_t>(k) + 1] += start[static_cast<std::size_t>(k)];
-        std::vector<int> fill(start.begin(), start.end() - 1);
-        for (std::size_t i = 0; i < faces.size(); ++i) {
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].a)]++)] = static_cast<int>(i);
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].b)]++)] = static_cast<int>(i);
-        }
-    }
-};
-
-namespace {
-
-std::vector<Face> buildFaces(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta) {
-    std::vector<Face> faces;
-    faces.reserve(t.faces.size());
-    const double Uz = film.sumAxial(), Ut = film.sumCircumferential();
-    for (const JfoTopology::FaceGeometry& f : t.faces) {
-        const double hf = faceValue(g, film.h, f.a, f.b);
-        faces.push_back({f.a, f.b, hf * hf * hf * f.L / (12.0 * eta * f.d), 0.5 * (f.axial ? Uz : Ut) * hf * f.L});
-    }
-    return faces;
-}
-
-// The discrete JFO problem of one solve (docs/lube.md, the JFO scheme): the faces, the node → face
-// adjacency and the storage terms; the balance of a node and the scaled mass residual.
-class JfoNetwork {
-public:
-    // Balance of node k: F = D p_k − S + B φ_k − Sin (see the header).
-    struct Balance { double D, S, B, Sin; };
-
-    JfoNetwork(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta, double dt,
-               const JfoState* previous, const std::vector<double>& inlet, double pcav)
-        : g_(g), film_(film), dt_(dt), previous_(previous), inlet_(inlet), pcav_(pcav),
-          faces_(buildFaces(t, g, film, eta)), start_(t.start), adj_(t.adj), area_(t.area.data()) {}
-
-    // visit(m, c, qo) for each face of node k: its other node m, Poiseuille coefficient c and the
-    // Couette coefficient qo of the flow out of k.
-    template <class Visit>
-    void forFaces(int k, Visit visit) const {
-        for (int q = start_[static_cast<std::size_t>(k)]; q < start_[static_cast<std::size_t>(k) + 1]; ++q) {
-            const Face& f = faces_[static_cast<std::size_t>(adj_[static_cast<std::size_t>(q)])];
-            const bool out = f.a == k;
-            visit(out ? f.b : f.a, f.c, out ? f.q : -f.q);
-        }
-    }
-    // Storage V h/dt of node k and the oil V φ_prev h_prev/dt it held (0, 0 when steady).
-    double storage(int k) const { return dt_ > 0.0 ? area_[k] * film_.h[k] / dt_ : 0.0; }
-    double previousOil(int k) const {
-        return dt_ > 0.0 ? area_[k] * previous_->fraction[k] * previous_->h[k] / dt_ : 0.0;
-    }
-    bool transient() const { return dt_ > 0.0; }
-    double area(int k) const { return area_[k]; }
-    double inlet(int m) const { return inlet_[static_cast<std::size_t>(m)]; }
-
-    Balance balance(int k, const double* p, const double* phi) const {
-        Balance bl{0.0, 0.0, 0.0, 0.0};
-        forFaces(k, [&](int m, double c, double qo) {
-            bl.D += c;
-            bl.S += c * p[m];
-            if (qo > 0.0) bl.B += qo;
-            else bl.Sin -= qo * (g_.kind(m) == NodeKind::Film ? phi[m] : inlet(m));  // non-Film: its inlet fraction
-        });
-        if (transient()) {
-            bl.B += storage(k);
-            bl.Sin += previousOil(k);
-        }
-        return bl;
-    }
-
-    // The convergence criterion (header): scaled mass residual of the iterate.
-    double residual(const std::vector<int>& rows, const double* p, const double* phi) const {
-        const double pAmb = g_.ambientPressure();
-        double scale = 0.0, rmax = 0.0;
-        for (int k = 0; k < g_.size(); ++k) scale = std::max(scale, std::abs(p[k] - pAmb));
-        for (int k : rows) {
-            const Balance bl = balance(k, p, phi);
-            const double F = bl.D * p[k] - bl.S + bl.B * phi[k] - bl.Sin;
-            const bool full = phi[k] >= 1.0 && p[k] > pcav_;
-            const double r = (full || !(bl.B > 0.0)) ? std::abs(F) / bl.D / std::max(scale, 1e-300)
-                                                     : std::abs(F) / bl.B;
-            rmax = std::max(rmax, r);
-        }
-        return rmax;
-    }
-
-private:
-    const FilmGrid& g_;
-    const FilmState& film_;
-    double dt_;
-    const JfoState* previous_;
-    const std::vector<double>& inlet_;
-    double pcav_;
-    std::vector<Face> faces_;
-    const std::vector<int>& start_;
-    const std::vector<int>& adj_;
-    const double* area_;
-};
 
 // The iterate a solve starts from (the warm start, else a flooded film) with the bounds and the
 // non-Film nodes' values imposed; returns the Film nodes.
@@ -197,94 +65,6 @@ void reynoldsConditionStart(const FilmGrid& g, const Lubricant& lubricant, const
     }
 }
 
-// The active-set linear system over the Film nodes. Unknown of Film node k: p_k (full film) or
-// φ_k (cavitated). Row k is the balance F_k = D p_k − Σ c_f p_m + B φ_k − Σ_in a_f φ_m − s_k = 0
-// (B: Couette outflow + storage, a_f: Couette inflow coefficients, s_k: previous oil); known p,
-// φ (the other state's variable, non-Film neighbours) go to the right-hand side. The matrix's
-// pattern is fixed; each partition rewrites its values through the kept pointers.
-class ActiveSetSystem {
-public:
-    ActiveSetSystem(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const double* p)
-        : nf_(static_cast<int>(rows.size())) {
-        const int n = g.size();
-        idx_.assign(static_cast<std::size_t>(n), -1);
-        for (int r = 0; r < nf_; ++r) idx_[static_cast<std::size_t>(rows[static_cast<std::size_t>(r)])] = r;
-        linkStart_.assign(static_cast<std::size_t>(nf_) + 1, 0);
-        D_.resize(static_cast<std::size_t>(nf_));
-        B_.resize(static_cast<std::size_t>(nf_));
-        known_.resize(static_cast<std::size_t>(nf_));
-        store_.resize(static_cast<std::size_t>(nf_));
-        std::vector<Eigen::Triplet<double, int>> trip;
-        for (int r = 0; r < nf_; ++r) {
-            const int k = rows[static_cast<std::size_t>(r)];
-            double d = 0.0, b = 0.0, kn = 0.0;
-            net.forFaces(k, [&](int m, double c, double qo) {
-                d += c;
-                const double a = qo > 0.0 ? 0.0 : -qo;
-                if (qo > 0.0) b += qo;
-                if (g.kind(m) == NodeKind::Film) {
-                    links_.push_back({m, c, a, nullptr});
-                    trip.emplace_back(r, idx_[static_cast<std::size_t>(m)], 0.0);
-                } else {
-                    kn -= c * p[m] + a * net.inlet(m);
-                }
-            });
-            b += net.storage(k);
-            D_[static_cast<std::size_t>(r)] = d;
-            B_[static_cast<std::size_t>(r)] = b;
-            known_[static_cast<std::size_t>(r)] = kn;
-            store_[static_cast<std::size_t>(r)] = net.previousOil(k);
-            trip.emplace_back(r, r, 0.0);
-            linkStart_[static_cast<std::size_t>(r) + 1] = static_cast<int>(links_.size());
-        }
-        M_.resize(nf_, nf_);
-        M_.setFromTriplets(trip.begin(), trip.end());
-        M_.makeCompressed();
-        diag_.resize(static_cast<std::size_t>(nf_));
-        for (int r = 0; r < nf_; ++r) {
-            diag_[static_cast<std::size_t>(r)] = &M_.coeffRef(r, r);
-            for (int l = linkStart_[static_cast<std::size_t>(r)]; l < linkStart_[static_cast<std::size_t>(r) + 1]; ++l)
-                links_[static_cast<std::size_t>(l)].value =
-                    &M_.coeffRef(r, idx_[static_cast<std::size_t>(links_[static_cast<std::size_t>(l)].m)]);
-        }
-    }
-
-    int size() const { return nf_; }
-    double B(int r) const { return B_[static_cast<std::size_t>(r)]; }
-
-    // The matrix and right-hand side of the partition cav (1: cavitated row).
-    void setPartition(const std::vector<char>& cav, double pcav, Eigen::VectorXd& rhs) {
-        rhs.resize(nf_);
-        for (int r = 0; r < nf_; ++r) {
-            const auto sr = static_cast<std::size_t>(r);
-            const bool c = cav[sr];
-            *diag_[sr] = c ? B_[sr] : D_[sr];
-            double kn = known_[sr] + (c ? D_[sr] * pcav : B_[sr]);  // p_k = p_cav, or φ_k = 1
-            for (int l = linkStart_[sr]; l < linkStart_[sr + 1]; ++l) {
-                Link& lk = links_[static_cast<std::size_t>(l)];
-                if (cav[static_cast<std::size_t>(idx_[static_cast<std::size_t>(lk.m)])]) {
-                    *lk.value = -lk.a;
-                    kn -= lk.c * pcav;
-                } else {
-                    *lk.value = -lk.c;
-                    kn -= lk.a;
-                }
-            }
-            rhs[r] = store_[sr] - kn;
-        }
-    }
-    const JfoMatrix& matrix() const { return M_; }
-
-private:
-    struct Link { int m; double c, a; double* value; };  // neighbour, Poiseuille, inflow Couette
-    int nf_;
-    std::vector<int> idx_, linkStart_;
-    std::vector<Link> links_;
-    std::vector<double> D_, B_, known_, store_;
-    JfoMatrix M_;
-    std::vector<double*> diag_;
-};
-
 // Clips the Film nodes to the bounds the Gauss–Seidel iteration keeps (a film fraction below 0
 // would be a dry node it clips).
 void clipToBounds(const std::vector<int>& rows, double pcav, double* p, double* phi) {
@@ -302,7 +82,7 @@ bool activeSetSolve(const JfoNetwork& net, const FilmGrid& g, const std::vector<
     const double pcav = o.cavitationPressure;
     double* p = res.pressure.data();
     double* phi = res.fraction.data();
-    ActiveSetSystem sys(net, g, rows, p);
+    JfoActiveSetSystem sys(net, g, rows, p);
     const int nf = sys.size();
     // Partition: cavitated where the film is partial (and a Couette outflow or storage term
     // can carry it: B > 0), full film elsewhere.
@@ -545,9 +325,9 @@ double JfoSolver::boundaryInflow(const FilmState& film, const JfoResult& r) cons
 }
 
 Eigen::VectorXd JfoSolver::boundaryFlows(const FilmState& film, const JfoResult& r) const {
-    const std::vector<Face> faces = buildFaces(*topology_, grid_, film, lubricant_.referenceViscosity());
+    const std::vector<JfoFace> faces = buildFaces(*topology_, grid_, film, lubricant_.referenceViscosity());
     Eigen::VectorXd q = Eigen::VectorXd::Zero(grid_.size());
-    for (const Face& f : faces) {
+    for (const JfoFace& f : faces) {
         const bool fa = grid_.kind(f.a) == NodeKind::Film, fb = grid_.kind(f.b) == NodeKind::Film;
         if (fa == fb) continue;
         const double phiA = fa ? r.fraction[f.a] : inlet_[static_cast<std::size_t>(f.a)];

@@ -121,6 +121,12 @@ public:
     Eigen::VectorXd boundaryFlows(const FilmState& film, const JfoResult& result) const;
 
     const FilmGrid& grid() const { return grid_; }
+    const Lubricant& lubricant() const { return lubricant_; }
+    const JfoOptions& options() const { return options_; }
+    /// The inlet fraction of every node (used where the node is Fixed).
+    const std::vector<double>& inletFractions() const { return inlet_; }
+    /// The faces of the discrete problem (lube/JfoNetwork.hpp).
+    const JfoTopology& topology() const { return *topology_; }
 
 private:
     FilmGrid grid_;

@@ -115,8 +115,9 @@ public:
     /// The largest film-thickness change per unit of each modal coordinate (m) at a typical
     /// position (the units of the partitioned coupling's acceleration).
     virtual Eigen::VectorXd modalFilmChangeScale() const = 0;
-    /// coupling.method newton: the loads' change with y at the iterate.
-    virtual void linearize(const ContactStep& step, const Eigen::Vector2d& x, const ContactIterate& it,
+    /// coupling.method newton: the loads' change with y at the iterate of the step from `now`.
+    virtual void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x,
+                           const ContactIterate& it,
                            ContactJacobian& J, WorkTally& work) = 0;
     /// The state kept from an accepted iterate of the step from `now`.
     virtual ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const = 0;

@@ -7,6 +7,8 @@
 // through the film's edges (docs/coupling.md §6).
 #include "cosim/contact/FilmContact.hpp"
 #include "lube/FilmState.hpp"
+
+#include <Eigen/Core>
 #include "lube/Lubricant.hpp"
 
 namespace flexehd::cosim {
@@ -25,9 +27,15 @@ public:
     /// Completes the state kept from an accepted iterate (film fraction, liner oil, balance).
     virtual void accept(const ContactStep& step, const ContactState& now, const ContactIterate& it,
                         ContactState& s) const = 0;
-    /// ∂ḣ/∂h of the film's time discretisation over the step's a0/Δt (the coupled Newton's rate
-    /// parts are taken per unit a0/Δt): 1 for BDF2, 1/a0 for backward Euler.
-    virtual double rateFactor(const ContactStep& step) const = 0;
+    /// coupling.method newton: linearises the film at the iterate's solution (its cavitated set
+    /// or partition held), for the step from `now`.
+    virtual void linearize(const ContactStep& step, const ContactState& now, const ContactIterate& it) = 0;
+    /// δp (grid × k, Pa) at the last linearisation for k columns of film-thickness changes δh (m).
+    virtual Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh) const = 0;
+    /// δp (grid × k, Pa) per unit a0/Δt of the master's BDF2 rate for k columns of the squeeze
+    /// thickness's change δh_s (m): the part of the film's dependence on h that goes through its
+    /// squeeze term (coupling.elastic_squeeze; zero where the film's content term is its own).
+    virtual Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const = 0;
     virtual const lube::Lubricant& lubricant() const = 0;
 };
 

@@ -58,6 +58,16 @@ void MassConservingFilm::initialize(ContactState& s) const {
     }
 }
 
+void MassConservingFilm::setInlets(const ContactStep& step, const ContactState& now, const Eigen::VectorXd& h) {
+    if (!exchange_) return;
+    exchange_->inletFractions(*now.oil, now.linerOffset, step.linerOffset, step.dt, -step.pistonVelocity, h, inlet_);
+    for (int j = 0; j < grid_.nTheta(); ++j)
+        for (int i : {0, grid_.nAxial() - 1}) {
+            const int k = grid_.index(i, j);
+            if (grid_.kind(k) == lube::NodeKind::Fixed) solver_.setInletFraction(k, inlet_[static_cast<std::size_t>(k)]);
+        }
+}
+
 void MassConservingFilm::solve(const ContactStep& step, const ContactState& now, const ContactState&,
                                ContactIterate& it, lube::FilmState& fs, WorkTally& work) {
     it.dhdt = (it.h - now.h) / step.dt;  // the rate the backward-Euler content term sees
@@ -66,14 +76,7 @@ void MassConservingFilm::solve(const ContactStep& step, const ContactState& now,
     fs.inner = {};
     fs.outer = {};
     fs.outer.axial = -step.pistonVelocity;
-    if (exchange_) {
-        exchange_->inletFractions(*now.oil, now.linerOffset, step.linerOffset, step.dt, fs.outer.axial, it.h, inlet_);
-        for (int j = 0; j < grid_.nTheta(); ++j)
-            for (int i : {0, grid_.nAxial() - 1}) {
-                const int k = grid_.index(i, j);
-                if (grid_.kind(k) == lube::NodeKind::Fixed) solver_.setInletFraction(k, inlet_[static_cast<std::size_t>(k)]);
-            }
-    }
+    setInlets(step, now, it.h);
     const lube::JfoState previous{now.h, now.fraction};
     // The warm start (the active set's first partition): the last solve's, of this step's
     // iterates or the previous step's; else the last accepted state's.
@@ -120,6 +123,30 @@ void MassConservingFilm::accept(const ContactStep& step, const ContactState& now
         b.replenished += moved.replenished;
         b.shortfall += moved.shortfall;
     }
+}
+
+void MassConservingFilm::linearize(const ContactStep& step, const ContactState& now, const ContactIterate& it) {
+    // The liner layer's inlets bring a given volume per step (SkirtOilExchange): their flux is held.
+    if (!linearization_)
+        linearization_ = std::make_unique<lube::JfoLinearization>(
+            solver_, exchange_ ? lube::InletResponse::FluxHeldWherePartial : lube::InletResponse::FractionHeld);
+    setInlets(step, now, it.h);  // the iterate's (another iterate may have been solved since)
+    lube::FilmState fs;
+    fs.h = it.h;
+    fs.outer.axial = -step.pistonVelocity;
+    const lube::JfoState previous{now.h, now.fraction};
+    lube::JfoResult solution;
+    solution.pressure = it.p;
+    solution.fraction = it.fraction;
+    linearization_->linearize(fs, step.dt, &previous, solution);
+}
+
+Eigen::MatrixXd MassConservingFilm::pressureChange(const Eigen::MatrixXd& dh) const {
+    return linearization_->pressureChange(dh);
+}
+
+Eigen::MatrixXd MassConservingFilm::rateChange(const ContactStep&, const Eigen::MatrixXd& dhs) const {
+    return Eigen::MatrixXd::Zero(dhs.rows(), dhs.cols());
 }
 
 }  // namespace flexehd::cosim

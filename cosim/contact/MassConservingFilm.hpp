@@ -5,10 +5,13 @@
 // frame, by backward Euler from the last accepted step: V (φh − φₙhₙ)/Δt, the thickness h the
 // film equation sees (floored, with the elastic change), so each step conserves the oil: the
 // change of Σ V φ h is the net inflow through the film's edges times Δt, to the solver's tolerance. The supply at the
-// skirt's edges is flooded (φ_in = 1) or the liner's oil layer (SkirtOilExchange).
+// skirt's edges is flooded (φ_in = 1) or the liner's oil layer (SkirtOilExchange). The
+// linearisation holds the partition (lube::JfoLinearization) and the inlets' fractions, or where
+// the liner layer feeds them the oil flux they bring.
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmEquation.hpp"
 #include "cosim/oil/SkirtOilExchange.hpp"
+#include "lube/JfoLinearization.hpp"
 #include "lube/JfoSolver.hpp"
 
 #include <functional>
@@ -28,7 +31,10 @@ public:
                lube::FilmState& fs, WorkTally& work) override;
     void accept(const ContactStep& step, const ContactState& now, const ContactIterate& it,
                 ContactState& s) const override;
-    double rateFactor(const ContactStep& step) const override { return 1.0 / step.a0; }
+    void linearize(const ContactStep& step, const ContactState& now, const ContactIterate& it) override;
+    Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh) const override;
+    /// Zero: the content term V (φh − φₙhₙ)/Δt is in h, whole (pressureChange has it).
+    Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const override;
     const lube::Lubricant& lubricant() const override { return lubricant_; }
 
     /// The film solve's tolerance on the scaled mass residual (lube::JfoSolver), as the Reynolds
@@ -38,6 +44,8 @@ public:
     const SkirtOilExchange* exchange() const { return exchange_.get(); }
 
 private:
+    /// The inlet fractions of the edge nodes for the iterate's thickness (liner oil layer).
+    void setInlets(const ContactStep& step, const ContactState& now, const Eigen::VectorXd& h);
     void edgeFlows(const lube::FilmState& fs, const lube::JfoResult& r, ContactIterate& it) const;
 
     const lube::FilmGrid& grid_;
@@ -46,6 +54,7 @@ private:
     std::unique_ptr<SkirtOilExchange> exchange_;
     std::vector<double> inlet_;  // inlet fraction per node, this iterate
     lube::JfoResult warm_;       // the last solve's pressure and film fraction (the next warm start)
+    std::unique_ptr<lube::JfoLinearization> linearization_;  // built on the first linearize
 };
 
 }  // namespace flexehd::cosim

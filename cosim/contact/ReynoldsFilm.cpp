@@ -26,7 +26,8 @@ lube::Lubricant makeLubricant(const LubricantSpec& l) {
 
 ReynoldsFilm::ReynoldsFilm(const EngineCase& c, const lube::FilmGrid& grid)
     : elasticSqueeze_(c.coupling.elasticSqueeze),
-      solver_(grid, makeLubricant(c.lubricant), filmSolverOptions(c.lubricant)) {}
+      solver_(grid, makeLubricant(c.lubricant), filmSolverOptions(c.lubricant)),
+      cavitationPressure_(c.lubricant.cavitationPressure) {}
 
 void ReynoldsFilm::solve(const ContactStep& step, const ContactState& now, const ContactState& before,
                          ContactIterate& it, lube::FilmState& fs, WorkTally& work) {
@@ -47,6 +48,32 @@ void ReynoldsFilm::solve(const ContactStep& step, const ContactState& now, const
     it.p = std::move(solved.pressure);
     if (solved.fellBack) ++work.fallbackSolves;
     ++work.filmSolves;
+}
+
+void ReynoldsFilm::linearize(const ContactStep& step, const ContactState&, const ContactIterate& it) {
+    const lube::FilmGrid& g = solver_.grid();
+    if (!linearization_) linearization_ = std::make_unique<lube::FilmLinearization>(g);
+    lube::FilmState fs;
+    fs.h = it.h;
+    fs.dhdt = it.dhdt;
+    fs.outer.axial = -step.pistonVelocity;
+    const lube::Lubricant& lub = solver_.lubricant();
+    const int n = g.size();
+    Eigen::VectorXd rho(n), eta(n);
+    for (int r = 0; r < n; ++r) {
+        rho[r] = lub.density(it.p[r]);
+        eta[r] = lub.viscosity(it.p[r]);
+    }
+    linearization_->linearize(fs, rho, eta, it.p, cavitationPressure_);
+}
+
+Eigen::MatrixXd ReynoldsFilm::pressureChange(const Eigen::MatrixXd& dh) const {
+    return linearization_->pressureChange(dh, Eigen::MatrixXd());
+}
+
+Eigen::MatrixXd ReynoldsFilm::rateChange(const ContactStep&, const Eigen::MatrixXd& dhs) const {
+    // The squeeze term is the BDF2 rate: ∂ḣ/∂h_s = a0/Δt, the master's rate.
+    return linearization_->pressureChange(Eigen::MatrixXd(), dhs, 1.0);
 }
 
 }  // namespace flexehd::cosim

@@ -55,10 +55,7 @@ SkirtContact::SkirtContact(const EngineCase& c, std::function<double(double)> li
         }
         clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
     }
-    if (c.coupling.method == CouplingMethod::Newton && (piston_ || liner_)) {
-        linearization_ = std::make_unique<lube::FilmLinearization>(film_.grid());
-        if (piston_) piston_->filmChangeShapes(0.0, psiPiston_);
-    }
+    if (c.coupling.method == CouplingMethod::Newton && piston_) piston_->filmChangeShapes(0.0, psiPiston_);
 }
 
 SkirtContact::~SkirtContact() = default;

@@ -15,7 +15,6 @@
 #include "cosim/engine/SkirtFilm.hpp"
 #include "cosim/mapping/FlexibleSurface.hpp"
 #include "lube/ElasticFoundation.hpp"
-#include "lube/FilmLinearization.hpp"
 #include "lube/GreenwoodTripp.hpp"
 
 #include <functional>
@@ -49,8 +48,8 @@ public:
                       WorkTally& work) const override;
     double filmChange(const ContactStep& step, const Eigen::VectorXd& dy, WorkTally& work) const override;
     Eigen::VectorXd modalFilmChangeScale() const override;
-    void linearize(const ContactStep& step, const Eigen::Vector2d& x, const ContactIterate& it, ContactJacobian& J,
-                   WorkTally& work) override;
+    void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x, const ContactIterate& it,
+                   ContactJacobian& J, WorkTally& work) override;
     ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const override;
     void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const override;
 
@@ -95,8 +94,7 @@ private:
     // Elastic Δh of the last y and liner offset evaluated (reused by the Jacobian's evaluations).
     Eigen::VectorXd elasticY_, pistonDh_, linerDh_;
     double elasticOffset_ = std::numeric_limits<double>::quiet_NaN();
-    // coupling.method newton: the film's linearisation and the film-change shapes Ψ (grid × modes)
-    std::unique_ptr<lube::FilmLinearization> linearization_;
+    // coupling.method newton: the film-change shapes Ψ (grid × modes)
     Eigen::MatrixXd psiPiston_, psiLiner_;
     Eigen::MatrixXd jacobianDh_;  // ∂h/∂(e, β, y): grid × (2 + modes), kept between linearisations
     double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();

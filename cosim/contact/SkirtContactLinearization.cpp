@@ -2,7 +2,7 @@
 // the coupled Newton method (docs/coupling.md §1, §3). With h = h_rigid(x) + Ψ y and, with
 // coupling.elastic_squeeze, δḣ_j = (a0/Δt) Ψ_j, the modal column j follows from the film-change
 // shape Ψ_j: δp_j from the film's linearisation with its cavitated set held
-// (lube::FilmLinearization — a generalized Jacobian of the semismooth equation), δp_c,j =
+// (FilmEquation::linearize — a generalized Jacobian of the semismooth equation), δp_c,j =
 // p_c'(h) Ψ_j, the load change by the gradient of the (affine in p, smooth in h) film integrals
 // (lube::FilmLoadGradient), and the modal load of the mapped δp_j + δp_c,j. Each part is affine in
 // the rate r = a0/Δt: δp_j = δp_j^h + r δp_j^ḣ.
@@ -45,7 +45,8 @@ void SkirtContact::filmChangeColumns(const ContactStep& step, const Eigen::Vecto
     }
 }
 
-void SkirtContact::linearize(const ContactStep& step, const Eigen::Vector2d& x, const ContactIterate& it,
+void SkirtContact::linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x,
+                             const ContactIterate& it,
                              ContactJacobian& J, WorkTally& work) {
     const lube::FilmGrid& g = film_.grid();
     const int n = g.size(), m = mp_ + ml_;
@@ -68,23 +69,15 @@ void SkirtContact::linearize(const ContactStep& step, const Eigen::Vector2d& x, 
     const Eigen::MatrixXd& PsiFilm = it.floored > 0 ? flooredPsi : Psi;
 
     // δp from the film's linearisation at the iterate's solution: the thickness part and the
-    // rate part (per unit rate) apart.
+    // rate part (per unit a0/Δt, the master's rate) apart.
     lube::FilmState fs;
     fs.h = it.h;
     fs.dhdt = it.dhdt;
     fs.outer.axial = -step.pistonVelocity;
     const lube::Lubricant& lub = equation_->lubricant();
-    Eigen::VectorXd rho(n), eta(n);
-    for (int r = 0; r < n; ++r) {
-        rho[r] = lub.density(it.p[r]);
-        eta[r] = lub.viscosity(it.p[r]);
-    }
-    linearization_->linearize(fs, rho, eta, it.p, case_.lubricant.cavitationPressure);
-    const Eigen::MatrixXd dPh = linearization_->pressureChange(PsiFilm, Eigen::MatrixXd());
-    // Per unit a0/Δt, the master's rate; the film's own time discretisation may differ (rateFactor).
-    const Eigen::MatrixXd dPrate =
-        elasticRate ? linearization_->pressureChange(Eigen::MatrixXd(), Psi, equation_->rateFactor(step))
-                    : Eigen::MatrixXd(n, 0);
+    equation_->linearize(step, now, it);
+    const Eigen::MatrixXd dPh = equation_->pressureChange(PsiFilm);
+    const Eigen::MatrixXd dPrate = elasticRate ? equation_->rateChange(step, Psi) : Eigen::MatrixXd(n, 0);
     // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
     // (the load is p + p_c); its slope once per node.
     Eigen::VectorXd slope = Eigen::VectorXd::Zero(n);
@@ -98,7 +91,10 @@ void SkirtContact::linearize(const ContactStep& step, const Eigen::Vector2d& x, 
     // The load's gradient in (p, h, p_c) applied to all modal columns at once, the friction's
     // change included (at high sliding speed its moment about the pin is a large part of the
     // motion's dependence on the deformation).
-    const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, it.p, integralOptions());
+    // (The film fraction's change, mass-conserving, is held in the shear.)
+    lube::FilmIntegralOptions io = integralOptions();
+    io.filmFraction = it.fraction.size() ? &it.fraction : nullptr;
+    const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, it.p, io);
     J.loadH = G.change(dPh, PsiFilm, contact_ ? dPc : Eigen::MatrixXd());
     J.loadRate = elasticRate ? G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd()) : Eigen::MatrixXd(6, 0);
 

@@ -52,7 +52,7 @@ void StepSolver::linearizeCoupled(const StepContext& ctx, const Eigen::Vector2d&
     Eigen::MatrixXd loadH, loadRate;
     ContactJacobian J;
     for (std::size_t c = 0; c < contacts_.size(); ++c) {
-        contacts_[c]->linearize(ctx.step, x, ev.films[c], J, work_);
+        contacts_[c]->linearize(ctx.step, ctx.now->films[c], x, ev.films[c], J, work_);
         if (c == 0) {
             loadH = J.loadH;
             loadRate = J.loadRate;

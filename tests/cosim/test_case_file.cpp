@@ -534,9 +534,15 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
     EXPECT_THAT(caseError(dir, "name: small", "name: small\nlubricant: {cavitation_pressure: 2e5}"),
                 AllOf(StartsWith(file + ": lubricant.cavitation_pressure")));
     EXPECT_THAT(caseError(dir, "name: small",
-                          "name: small\nlubricant: {cavitation: mass_conserving}\nbodies: {piston: {file: p.h5}}",
+                          "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: "
+                          "3e-6}}\nbodies: {piston: {file: p.h5}}",
                           kPressureCsv, noBodyFiles()),
-                AllOf(StartsWith(file + ": bodies.piston"), HasSubstr("rigid bodies only")));
+                AllOf(StartsWith(file + ": lubricant.supply"), HasSubstr("rigid bodies only")));
+    EXPECT_THAT(caseError(dir, "name: small",
+                          "name: small\nlubricant: {cavitation: mass_conserving}\nbodies: {piston: {file: p.h5}}\n"
+                          "coupling: {method: partitioned}",
+                          kPressureCsv, noBodyFiles()),
+                AllOf(StartsWith(file + ": coupling.method"), HasSubstr("coupling.method: newton")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {liner_wear_coefficient: 1e-6}"),
                 AllOf(StartsWith(file + ": contact.liner_wear_coefficient"), HasSubstr("check the units")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\ncontact: {piston_wear_coefficient: -1e-16}"),
