@@ -244,6 +244,11 @@ Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev
         sn.shearStress[k2] = phi * eta * (-k.velocity) / f.h[k2] - 0.5 * f.h[k2] * dpdz;
     }
     sn.filmFraction = f.fraction;
+    if (const ContactState& st = s.films.front(); st.oil) {
+        const LinerOilLayer& layer = *st.oil;
+        sn.linerOil = layer.meanThickness({st.linerOffset + g.z(0), st.linerOffset + g.z(g.nAxial() - 1)});
+        for (int c = 0; c < layer.cells(); ++c) sn.linerOilZ.push_back(layer.zLow() + (c + 0.5) * layer.cellLength());
+    }
     if (mp_ > 0) sn.pistonModal = s.y.head(mp_);
     if (ml_ > 0) sn.linerModal = s.y.tail(ml_);
     return sn;

@@ -51,6 +51,11 @@ struct Snapshot {
     double lateral = 0.0, tilt = 0.0;
     Eigen::VectorXd pressure, filmThickness, contactPressure, shearStress, cavitation;
     Eigen::VectorXd filmFraction;  ///< mass-conserving film: φ per node (empty with the Reynolds condition)
+    /// Mass-conserving film on a liner oil layer (lubricant.supply: liner_layer): the layer outside
+    /// the skirt per cell and grid column (m, volume per liner area; cell-major, index c × nθ + j;
+    /// empty otherwise) at the liner-frame z of the cells' centres (m).
+    Eigen::VectorXd linerOil;
+    std::vector<double> linerOilZ;
     Eigen::VectorXd pistonModal, linerModal;  ///< modal coordinates (empty for rigid bodies)
 };
 

@@ -19,6 +19,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLStructuredGridWriter.h>
 
+#include "cosim/io/CylinderMapWriter.hpp"
 #include "cosim/io/VtuWriter.hpp"
 #include "fem/AtomicFile.hpp"
 
@@ -162,6 +163,28 @@ void writeFilm(const std::string& path, const FilmField& film, const SnapshotTim
     });
 }
 
+void checkOil(const LinerOilField& oil, double time) {
+    if (!oil.grid || !oil.z)
+        throw std::runtime_error(fmt::format("liner oil snapshot at time {}: no grid or cell positions given", time));
+    const Eigen::Index expected = Eigen::Index(oil.z->size()) * oil.grid->nTheta();
+    if (oil.thickness.size() != expected)
+        throw std::runtime_error(fmt::format("liner oil snapshot at time {}: {} thickness values, expected {} cells × {} "
+                                             "columns",
+                                             time, oil.thickness.size(), oil.z->size(), oil.grid->nTheta()));
+    for (Eigen::Index k = 0; k < oil.thickness.size(); ++k)
+        if (!std::isfinite(oil.thickness[k]))
+            throw std::runtime_error(fmt::format("liner oil snapshot at time {}: thickness is {} at cell {}, column {}",
+                                                 time, oil.thickness[k], k / oil.grid->nTheta(), k % oil.grid->nTheta()));
+}
+
+// The layer on the liner's bore, in the cylinder frame.
+void writeOil(const std::string& path, const LinerOilField& oil, const SnapshotTime& at) {
+    const int nt = oil.grid->nTheta();
+    writeCylinderMap(path, *oil.grid, *oil.z, oil.origin,
+                     {{"oil_thickness_m", [&](int c, int j) { return oil.thickness[Eigen::Index(c) * nt + j]; }}},
+                     fieldData(at));
+}
+
 void writeBody(const std::string& path, const BodyField& b, const SnapshotTime& at) {
     const fem::Mesh& mesh = *b.mesh;
     fem::Mesh placed;  // the elements of the body, nodes moved into the cylinder frame
@@ -184,7 +207,7 @@ FieldSeriesWriter::FieldSeriesWriter(std::string directory) : directory_(std::mo
 }
 
 void FieldSeriesWriter::write(const SnapshotTime& at, const FilmField& film, const BodyField* piston,
-                              const BodyField* liner) {
+                              const BodyField* liner, const LinerOilField* oil) {
     const double time = at.time;
     if (!std::isfinite(time) || !std::isfinite(at.crankDeg))
         throw std::runtime_error(fmt::format("snapshot time {} is not finite", time));
@@ -195,21 +218,23 @@ void FieldSeriesWriter::write(const SnapshotTime& at, const FilmField& film, con
     checkFilm(film, time);
     if (piston) checkBody("piston", *piston, time);
     if (liner) checkBody("liner", *liner, time);
+    if (oil) checkOil(*oil, time);
 
     const fs::path dir(directory_);
     const std::string index = fmt::format("{:06d}", count_);
     Staged s{time, "vtk/film_" + index + ".vts", piston ? "vtk/piston_" + index + ".vtu" : "",
-             liner ? "vtk/liner_" + index + ".vtu" : ""};
+             liner ? "vtk/liner_" + index + ".vtu" : "", oil ? "vtk/liner_oil_" + index + ".vts" : ""};
     writeFilm((dir / s.film).string(), film, at);
     if (piston) writeBody((dir / s.piston).string(), *piston, at);
     if (liner) writeBody((dir / s.liner).string(), *liner, at);
+    if (oil) writeOil((dir / s.oil).string(), *oil, at);
     staged_.push_back(std::move(s));
     ++count_;
 }
 
 void FieldSeriesWriter::commit() {
     const fs::path dir(directory_);
-    PvdCollection film, piston, liner;
+    PvdCollection film, piston, liner, oil;
     std::vector<std::string> files;
     for (const Staged& s : staged_) {
         film.add(s.time, s.film);
@@ -222,12 +247,18 @@ void FieldSeriesWriter::commit() {
             liner.add(s.time, s.liner);
             files.push_back(s.liner);
         }
+        if (!s.oil.empty()) {
+            oil.add(s.time, s.oil);
+            files.push_back(s.oil);
+        }
     }
     const bool anyPiston = std::any_of(staged_.begin(), staged_.end(), [](const Staged& s) { return !s.piston.empty(); });
     const bool anyLiner = std::any_of(staged_.begin(), staged_.end(), [](const Staged& s) { return !s.liner.empty(); });
     if (!staged_.empty()) film.write((dir / "film.pvd").string());
     if (anyPiston) piston.write((dir / "piston.pvd").string());
     if (anyLiner) liner.write((dir / "liner.pvd").string());
+    if (std::any_of(staged_.begin(), staged_.end(), [](const Staged& s) { return !s.oil.empty(); }))
+        oil.write((dir / "liner_oil.pvd").string());
     // The collections no longer name the previous series: its files go.
     std::error_code ec;
     for (const std::string& f : committedFiles_)
@@ -243,7 +274,7 @@ void FieldSeriesWriter::discard() {
     const fs::path dir(directory_);
     std::error_code ec;
     for (const Staged& s : staged_)
-        for (const std::string* f : {&s.film, &s.piston, &s.liner})
+        for (const std::string* f : {&s.film, &s.piston, &s.liner, &s.oil})
             if (!f->empty()) fs::remove(dir / *f, ec);
     staged_.clear();
 }

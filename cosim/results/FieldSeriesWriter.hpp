@@ -3,9 +3,10 @@
 //
 // Each write() adds one snapshot: DIR/vtk/film_NNNNNN.vts (the film grid as a structured grid,
 // closed at the periodic seam) and, when given, DIR/vtk/piston_NNNNNN.vtu and
-// DIR/vtk/liner_NNNNNN.vtu (the body meshes with displacement vectors for Warp By Vector), written
-// at once: nothing is held in memory. commit() makes the snapshots written since the last commit
-// the series — it rewrites DIR/film.pvd, DIR/piston.pvd and DIR/liner.pvd to list them and then
+// DIR/vtk/liner_NNNNNN.vtu (the body meshes with displacement vectors for Warp By Vector) and
+// DIR/vtk/liner_oil_NNNNNN.vts (the liner's oil layer), written at once: nothing is held in
+// memory. commit() makes the snapshots written since the last commit the series — it rewrites
+// DIR/film.pvd, DIR/piston.pvd, DIR/liner.pvd and DIR/liner_oil.pvd to list them and then
 // deletes the files of the series they replace; discard() deletes them instead. flexehd run
 // commits every cycle, so the collections always list the last complete cycle. Every file is
 // written atomically (NAME.tmp, then renamed) and a collection lists only files that exist, so a
@@ -41,6 +42,14 @@ struct BodyField {
     Eigen::VectorXd elastic;       ///< 3·nodes, m: elastic part only (`elastic_displacement_m`; empty: not written)
 };
 
+/// One snapshot of the liner's oil layer (LinerOilLayer) on its cells and the film grid's columns.
+struct LinerOilField {
+    const lube::FilmGrid* grid = nullptr;  ///< its θ columns and radius
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< cylinder-frame position of the liner frame's origin (m)
+    const std::vector<double>* z = nullptr;  ///< liner-frame z of the cells' centres (m)
+    Eigen::VectorXd thickness;  ///< m, cell-major (c × nθ + j): `oil_thickness_m`
+};
+
 /// When a snapshot was taken: the collection's time axis and the crank angle and cycle it
 /// stands for, written as field data of each file (docs/results-format.md, "VTK series").
 struct SnapshotTime {
@@ -58,7 +67,8 @@ public:
     /// each file carries `TimeValue`, `crank_deg` and `cycle` as field data.
     /// Throws std::runtime_error naming the field (and the node) on a size mismatch or a NaN/Inf
     /// value, before any file is written; or naming the file on an I/O error.
-    void write(const SnapshotTime& at, const FilmField& film, const BodyField* piston, const BodyField* liner);
+    void write(const SnapshotTime& at, const FilmField& film, const BodyField* piston, const BodyField* liner,
+               const LinerOilField* oil = nullptr);
     /// The snapshots written since the last commit (or discard) become the series.
     void commit();
     /// Deletes the snapshots written since the last commit; the series stays as it was.
@@ -72,7 +82,7 @@ public:
 private:
     struct Staged {
         double time;
-        std::string film, piston, liner;  ///< relative paths; empty: no such body
+        std::string film, piston, liner, oil;  ///< relative paths; empty: no such body or layer
     };
     std::string directory_;
     int count_ = 0, committedCount_ = 0;

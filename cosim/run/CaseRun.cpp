@@ -94,7 +94,15 @@ void writeSnapshot(FieldSeriesWriter& fields, const EngineCase& c, const PistonS
     // Time axis: the crank angle of the written cycle, time.start_deg … start_deg + 720 (0–720
     // with the default start), so that it reads as history.csv's crank_deg.
     const SnapshotTime at{s.continuousDeg - 720.0 * (s.cycle - 1), s.crankDeg, s.cycle};
-    fields.write(at, film, sim.piston() ? &piston : nullptr, sim.liner() ? &liner : nullptr);
+    LinerOilField oil;
+    if (s.linerOil.size()) {
+        oil.grid = film.grid;
+        oil.origin = Eigen::Vector3d(0.0, 0.0, s.pinHeight - s.linerOffset);
+        oil.z = &s.linerOilZ;
+        oil.thickness = s.linerOil;
+    }
+    fields.write(at, film, sim.piston() ? &piston : nullptr, sim.liner() ? &liner : nullptr,
+                 s.linerOil.size() ? &oil : nullptr);
 }
 
 // DIR/modes_piston, DIR/modes_liner (unchanged files are kept); returns the seconds taken.

@@ -476,6 +476,51 @@ TEST(FieldSeriesWriter, BodiesAndCollectionsListTheSnapshotsInOrder) {
     EXPECT_EQ(last->GetFieldData()->GetArray("TimeValue")->GetTuple1(0), 729.75);
 }
 
+// The liner's oil layer: one row per cell on the bore (the first θ column repeated at the seam),
+// placed at the liner frame's origin, listed in liner_oil.pvd only for the snapshots that have it.
+TEST(FieldSeriesWriter, LinerOilLayerIsASeriesOnTheBore) {
+    const auto dir = test::scratchDir();
+    FilmFixture f(lube::FilmGrid::fullCircumference(0.043, kAxial, 8));
+    const std::vector<double> z{-0.05, -0.049, -0.048};
+    LinerOilField oil;
+    oil.grid = &f.grid;
+    oil.origin = Eigen::Vector3d(0.0, 0.0, 0.22);
+    oil.z = &z;
+    oil.thickness = Eigen::VectorXd::LinSpaced(24, 1e-6, 4e-6);
+    FieldSeriesWriter w(dir.string());
+    w.write(at(10.0), f.film, nullptr, nullptr, &oil);
+    w.write(at(20.0), f.film, nullptr, nullptr);
+    w.commit();
+    const auto pvd = readPvd(dir / "liner_oil.pvd");
+    ASSERT_EQ(pvd.size(), 1u);
+    EXPECT_EQ(pvd[0].file, "vtk/liner_oil_000000.vts");
+    const auto vts = readVts(dir / pvd[0].file);
+    int dims[3];
+    vts->GetDimensions(dims);
+    EXPECT_EQ(dims[0], 9);
+    EXPECT_EQ(dims[1], 3);
+    auto* t = vts->GetPointData()->GetArray("oil_thickness_m");
+    ASSERT_NE(t, nullptr);
+    for (int c = 0; c < 3; ++c)
+        for (int jj = 0; jj < 9; ++jj) {
+            const int j = jj % 8;
+            double x[3];
+            vts->GetPoint(vtkIdType(c) * 9 + jj, x);
+            EXPECT_NEAR(x[0], 0.043 * std::cos(f.grid.theta(j)), 1e-15);
+            EXPECT_NEAR(x[1], 0.043 * std::sin(f.grid.theta(j)), 1e-15);
+            EXPECT_DOUBLE_EQ(x[2], 0.22 + z[std::size_t(c)]);
+            EXPECT_EQ(t->GetTuple1(vtkIdType(c) * 9 + jj), oil.thickness[c * 8 + j]);
+        }
+    EXPECT_EQ(vts->GetFieldData()->GetArray("crank_deg")->GetTuple1(0), 10.0);
+    oil.thickness.resize(5);
+    EXPECT_THAT([&] { w.write(at(30.0), f.film, nullptr, nullptr, &oil); },
+                ThrowsMessage<std::runtime_error>(HasSubstr("expected 3 cells × 8 columns")));
+    oil.thickness = Eigen::VectorXd::Zero(24);
+    oil.thickness[9] = std::nan("");
+    EXPECT_THAT([&] { w.write(at(30.0), f.film, nullptr, nullptr, &oil); },
+                ThrowsMessage<std::runtime_error>(HasSubstr("cell 1, column 1")));
+}
+
 TEST(FieldSeriesWriter, BadSnapshotsAreRefusedBeforeAnyFileIsWritten) {
     const auto dir = test::scratchDir();
     FilmFixture f(lube::FilmGrid::fullCircumference(0.043, kAxial, 8));
