@@ -27,7 +27,8 @@ struct JfoFace {
 
 
 // The faces of the grid's finite volumes that touch a Film node and the node → face adjacency
-// (CSR): fixed for a grid, built once per solver.
+// (CSR, with each entry's other node, direction and whether that node is Film); the faces
+// between a Film node and a boundary one: fixed for a grid, built once per solver.
 struct JfoTopology {
     struct FaceGeometry {
         int a, b;
@@ -36,6 +37,10 @@ struct JfoTopology {
     };
     std::vector<FaceGeometry> faces;
     std::vector<int> start, adj;
+    std::vector<int> other;           // per adjacency entry: the face's other node
+    std::vector<char> outward;        // per adjacency entry: 1 if the node is the face's a
+    std::vector<char> otherFilm;      // per adjacency entry: the other node is a Film node
+    std::vector<int> boundaryFaces;   // faces with one Film and one Fixed or Void node
     std::vector<double> area;  // control-volume area per node (m²)
 
     explicit JfoTopology(const FilmGrid& g) {
@@ -56,7 +61,20 @@ struct JfoTopology {
         for (std::size_t i = 0; i < faces.size(); ++i) {
             adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].a)]++)] = static_cast<int>(i);
             adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].b)]++)] = static_cast<int>(i);
+            if ((g.kind(faces[i].a) == NodeKind::Film) != (g.kind(faces[i].b) == NodeKind::Film))
+                boundaryFaces.push_back(static_cast<int>(i));
         }
+        other.resize(adj.size());
+        outward.resize(adj.size());
+        otherFilm.resize(adj.size());
+        for (int k = 0; k < n; ++k)
+            for (int q = start[static_cast<std::size_t>(k)]; q < start[static_cast<std::size_t>(k) + 1]; ++q) {
+                const FaceGeometry& f = faces[static_cast<std::size_t>(adj[static_cast<std::size_t>(q)])];
+                const auto sq = static_cast<std::size_t>(q);
+                outward[sq] = f.a == k;
+                other[sq] = f.a == k ? f.b : f.a;
+                otherFilm[sq] = g.kind(other[sq]) == NodeKind::Film;
+            }
     }
 };
 
@@ -81,18 +99,28 @@ public:
     JfoNetwork(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta, double dt,
                const JfoState* previous, const std::vector<double>& inlet, double pcav)
         : g_(g), film_(film), dt_(dt), previous_(previous), inlet_(inlet), pcav_(pcav),
-          faces_(buildFaces(t, g, film, eta)), start_(t.start), adj_(t.adj), area_(t.area.data()) {}
+          faces_(buildFaces(t, g, film, eta)), t_(t), area_(t.area.data()) {
+        // Per adjacency entry, contiguous per node: the face's conductance and its Couette
+        // coefficient out of the node (the loops below read these, not the faces).
+        c_.resize(t.adj.size());
+        qo_.resize(t.adj.size());
+        for (std::size_t q = 0; q < t.adj.size(); ++q) {
+            const JfoFace& f = faces_[static_cast<std::size_t>(t.adj[q])];
+            c_[q] = f.c;
+            qo_[q] = t.outward[q] ? f.q : -f.q;
+        }
+    }
 
     // visit(m, c, qo) for each face of node k: its other node m, Poiseuille coefficient c and the
     // Couette coefficient qo of the flow out of k.
     template <class Visit>
     void forFaces(int k, Visit visit) const {
-        for (int q = start_[static_cast<std::size_t>(k)]; q < start_[static_cast<std::size_t>(k) + 1]; ++q) {
-            const JfoFace& f = faces_[static_cast<std::size_t>(adj_[static_cast<std::size_t>(q)])];
-            const bool out = f.a == k;
-            visit(out ? f.b : f.a, f.c, out ? f.q : -f.q);
-        }
+        const int* other = t_.other.data();
+        for (int q = t_.start[static_cast<std::size_t>(k)]; q < t_.start[static_cast<std::size_t>(k) + 1]; ++q)
+            visit(other[q], c_[static_cast<std::size_t>(q)], qo_[static_cast<std::size_t>(q)]);
     }
+    const std::vector<JfoFace>& faces() const { return faces_; }
+    const JfoTopology& topology() const { return t_; }
     // Storage V h/dt of node k and the oil V φ_prev h_prev/dt it held (0, 0 when steady).
     double storage(int k) const { return dt_ > 0.0 ? area_[k] * film_.h[k] / dt_ : 0.0; }
     double previousOil(int k) const {
@@ -104,12 +132,16 @@ public:
 
     Balance balance(int k, const double* p, const double* phi) const {
         Balance bl{0.0, 0.0, 0.0, 0.0};
-        forFaces(k, [&](int m, double c, double qo) {
+        const int* other = t_.other.data();
+        const char* film = t_.otherFilm.data();
+        for (int q = t_.start[static_cast<std::size_t>(k)]; q < t_.start[static_cast<std::size_t>(k) + 1]; ++q) {
+            const double c = c_[static_cast<std::size_t>(q)], qo = qo_[static_cast<std::size_t>(q)];
+            const int m = other[q];
             bl.D += c;
             bl.S += c * p[m];
             if (qo > 0.0) bl.B += qo;
-            else bl.Sin -= qo * (g_.kind(m) == NodeKind::Film ? phi[m] : inlet(m));  // non-Film: its inlet fraction
-        });
+            else bl.Sin -= qo * (film[q] ? phi[m] : inlet(m));  // non-Film: its inlet fraction
+        }
         if (transient()) {
             bl.B += storage(k);
             bl.Sin += previousOil(k);
@@ -141,9 +173,9 @@ private:
     const std::vector<double>& inlet_;
     double pcav_;
     std::vector<JfoFace> faces_;
-    const std::vector<int>& start_;
-    const std::vector<int>& adj_;
+    const JfoTopology& t_;
     const double* area_;
+    std::vector<double> c_, qo_;  // per adjacency entry
 };
 
 

@@ -243,6 +243,23 @@ bool multigridSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState& f
     return false;
 }
 
+// The net flow (m³/s) from each boundary (Fixed or Void) node into the Film nodes next to it, with
+// the scheme's face fluxes at the solution r (0 on Film nodes).
+Eigen::VectorXd boundaryFlowsOf(const JfoNetwork& net, const FilmGrid& g, const std::vector<double>& inlet,
+                                const JfoResult& r) {
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(g.size());
+    for (int i : net.topology().boundaryFaces) {
+        const JfoFace& f = net.faces()[static_cast<std::size_t>(i)];
+        const bool fa = g.kind(f.a) == NodeKind::Film;
+        const double phiA = fa ? r.fraction[f.a] : inlet[static_cast<std::size_t>(f.a)];
+        const double phiB = fa ? inlet[static_cast<std::size_t>(f.b)] : r.fraction[f.b];
+        const double ab = f.c * (r.pressure[f.a] - r.pressure[f.b]) + f.q * (f.q > 0.0 ? phiA : phiB);
+        if (fa) q[f.b] -= ab;  // from the Film node a into the boundary node b
+        else q[f.a] += ab;
+    }
+    return q;
+}
+
 }  // namespace
 
 
@@ -289,6 +306,7 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
     JfoResult res;
     const bool warm = warmStart && warmStart->pressure.size() == n && warmStart->fraction.size() == n;
     const std::vector<int> rows = startingIterate(g, warm ? warmStart : nullptr, inlet_, pcav, res);
+    bool solved = false;
     if (options_.method == JfoMethod::Multigrid) {
         if (!multigrid_) {
             ReynoldsOptions ro;
@@ -298,15 +316,15 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
             ro.control.tolerance = options_.control.tolerance;
             multigrid_ = std::make_unique<ReynoldsSolver>(g, lubricant_, ro);
         }
-        if (multigridSolve(net, g, film, dt, previous, rows, options_, warm, *multigrid_, res)) return res;
+        solved = multigridSolve(net, g, film, dt, previous, rows, options_, warm, *multigrid_, res);
     }
-    if (options_.method != JfoMethod::GaussSeidel) {
+    if (!solved && options_.method != JfoMethod::GaussSeidel) {
         if (!warm && options_.method == JfoMethod::ActiveSet)
             reynoldsConditionStart(g, lubricant_, film, pcav, rows, res.pressure.data(), res.fraction.data());
-        if (activeSetSolve(net, g, rows, options_, *lu_, res)) return res;
+        solved = activeSetSolve(net, g, rows, options_, *lu_, res);
     }
-    const double w = options_.omega > 0.0 ? options_.omega : PsorSolver::automaticOmega(g);
-    gaussSeidelSolve(net, rows, options_, w, res);
+    if (!solved) gaussSeidelSolve(net, rows, options_, options_.omega > 0.0 ? options_.omega : PsorSolver::automaticOmega(g), res);
+    res.boundaryFlow = boundaryFlowsOf(net, g, inlet_, res);
     return res;
 }
 
@@ -325,18 +343,9 @@ double JfoSolver::boundaryInflow(const FilmState& film, const JfoResult& r) cons
 }
 
 Eigen::VectorXd JfoSolver::boundaryFlows(const FilmState& film, const JfoResult& r) const {
-    const std::vector<JfoFace> faces = buildFaces(*topology_, grid_, film, lubricant_.referenceViscosity());
-    Eigen::VectorXd q = Eigen::VectorXd::Zero(grid_.size());
-    for (const JfoFace& f : faces) {
-        const bool fa = grid_.kind(f.a) == NodeKind::Film, fb = grid_.kind(f.b) == NodeKind::Film;
-        if (fa == fb) continue;
-        const double phiA = fa ? r.fraction[f.a] : inlet_[static_cast<std::size_t>(f.a)];
-        const double phiB = fb ? r.fraction[f.b] : inlet_[static_cast<std::size_t>(f.b)];
-        const double ab = f.c * (r.pressure[f.a] - r.pressure[f.b]) + f.q * (f.q > 0.0 ? phiA : phiB);
-        if (fb) q[f.a] += ab;  // from the boundary node a into the Film node b
-        else q[f.b] -= ab;
-    }
-    return q;
+    const JfoNetwork net(*topology_, grid_, film, lubricant_.referenceViscosity(), 0.0, nullptr, inlet_,
+                         options_.cavitationPressure);
+    return boundaryFlowsOf(net, grid_, inlet_, r);
 }
 
 }  // namespace flexehd::lube

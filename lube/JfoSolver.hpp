@@ -93,6 +93,9 @@ struct JfoResult {
     int iterations = 0;        ///< Gauss–Seidel sweeps (Multigrid: fixed-point passes)
     double residual = 0.0;
     int factorizations = 0;    ///< ActiveSet: partition updates, one sparse LU each
+    /// The net flow (m³/s) from each Fixed or Void node into the Film nodes (0 on Film nodes), as
+    /// JfoSolver::boundaryFlows gives it.
+    Eigen::VectorXd boundaryFlow;
 };
 
 class JfoSolver {

@@ -89,14 +89,14 @@ void MassConservingFilm::solve(const ContactStep& step, const ContactState& now,
     warm_.pressure = r.pressure;
     warm_.fraction = r.fraction;
     ++work.filmSolves;
-    edgeFlows(fs, r, it);
+    edgeFlows(r, it);
     it.oilVolume = solver_.oilVolume(fs, r.fraction);
     it.p = std::move(r.pressure);
     it.fraction = std::move(r.fraction);
 }
 
-void MassConservingFilm::edgeFlows(const lube::FilmState& fs, const lube::JfoResult& r, ContactIterate& it) const {
-    const Eigen::VectorXd q = solver_.boundaryFlows(fs, r);
+void MassConservingFilm::edgeFlows(const lube::JfoResult& r, ContactIterate& it) const {
+    const Eigen::VectorXd& q = r.boundaryFlow;
     const int nt = grid_.nTheta(), last = grid_.nAxial() - 1;
     it.inflowLow = Eigen::VectorXd::Zero(nt);
     it.inflowHigh = Eigen::VectorXd::Zero(nt);

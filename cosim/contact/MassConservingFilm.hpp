@@ -46,7 +46,7 @@ public:
 private:
     /// The inlet fractions of the edge nodes for the iterate's thickness (liner oil layer).
     void setInlets(const ContactStep& step, const ContactState& now, const Eigen::VectorXd& h);
-    void edgeFlows(const lube::FilmState& fs, const lube::JfoResult& r, ContactIterate& it) const;
+    void edgeFlows(const lube::JfoResult& r, ContactIterate& it) const;
 
     const lube::FilmGrid& grid_;
     lube::Lubricant lubricant_;
