@@ -1,0 +1,56 @@
+#pragma once
+// RingFilm: the oil film between a piston ring's running face and the liner, axisymmetric — the
+// Reynolds equation across the face (axial x) with the Reynolds (Swift–Stieber) cavitation
+// condition, the gas pressures below and above the ring at the face's edges (docs/lube.md §9):
+//
+//   d/dx (h³/(12η) dp/dx) = (U/2) dh/dx + ∂h/∂t,   h(x) = h_min + drop(x),   p ≥ p_cav,
+//
+// U the liner's axial speed relative to the ring (positive towards the crown) and ∂h/∂t the
+// ring's radial squeeze rate (the whole face moves with h_min). Solved on a FilmGrid across the
+// face (a few θ columns of the bore: the solution does not depend on θ) by the film solvers of
+// this library; the load and the friction are per unit length of the ring's circumference.
+#include <Eigen/Core>
+
+#include "lube/FilmGrid.hpp"
+#include "lube/Lubricant.hpp"
+#include "lube/ReynoldsSolver.hpp"
+#include "lube/RingFaceProfile.hpp"
+
+namespace flexehd::lube {
+
+struct RingFilmState {
+    double minimumGap = 0.0;     ///< h_min (m, > 0)
+    double slidingSpeed = 0.0;   ///< U: the liner's axial speed relative to the ring (m/s, + towards the crown)
+    double squeezeRate = 0.0;    ///< ∂h_min/∂t (m/s, < 0 closing)
+    double pressureBelow = 0.0;  ///< gauge pressure at the face's lower edge (Pa)
+    double pressureAbove = 0.0;  ///< gauge pressure at the face's upper edge (Pa)
+};
+
+struct RingFilmResult {
+    Eigen::VectorXd x, h, p;  ///< across the face: position (m), film thickness (m), pressure (Pa)
+    double load = 0.0;        ///< ∫ p dx: the film's radial force per unit circumference (N/m)
+    double friction = 0.0;    ///< the film's axial shear force on the ring per unit circumference (N/m)
+};
+
+class RingFilm {
+public:
+    /// nodes across the face (≥ 5); the bore radius (m) sets the control volumes' arc (the
+    /// per-circumference results do not depend on it).
+    RingFilm(RingFaceProfile profile, double boreRadius, Lubricant lubricant, int nodes = 201,
+             double cavitationPressure = 0.0);
+
+    /// Throws std::invalid_argument on a non-positive gap or non-finite input, std::runtime_error
+    /// when the film solve fails.
+    RingFilmResult solve(const RingFilmState& s) const;
+
+    const RingFaceProfile& profile() const { return profile_; }
+
+private:
+    RingFaceProfile profile_;
+    Lubricant lubricant_;
+    double pcav_;
+    FilmGrid grid_;
+    Eigen::VectorXd drop_;  // per grid node
+};
+
+}  // namespace flexehd::lube
