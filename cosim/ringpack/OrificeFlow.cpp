@@ -1,0 +1,67 @@
+#include "cosim/ringpack/OrificeFlow.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace flexehd::cosim {
+
+namespace {
+
+constexpr double kLinearBelow = 1e-4;  // 1 − r below which the flow is linear in Δp
+
+// ψ(r) = √(r^{2/γ} − r^{(γ+1)/γ}) and dψ/dr.
+double psi(double g, double r, double* dr) {
+    const double a = std::pow(r, 2.0 / g), b = std::pow(r, (g + 1.0) / g), s = std::sqrt(std::max(a - b, 0.0));
+    if (dr) *dr = s > 0.0 ? ((2.0 / g) * a / r - ((g + 1.0) / g) * b / r) / (2.0 * s) : 0.0;
+    return s;
+}
+
+// Flow from the upstream side (pu, tu) to pd ≤ pu, its derivatives in pu and pd.
+double downhill(const GasProperties& gas, double cda, double pu, double pd, double tu, double& dpu, double& dpd) {
+    const double g = gas.gamma, k = cda * std::sqrt(2.0 * g / ((g - 1.0) * gas.gasConstant * tu));
+    const double rs = criticalPressureRatio(gas);
+    double r = pd / pu;
+    if (r <= rs) {  // choked: ψ(r*) p_u
+        dpd = 0.0;
+        dpu = k * psi(g, rs, nullptr);
+        return dpu * pu;
+    }
+    if (1.0 - r < kLinearBelow) {  // linear in Δp, matched to the law at r1 = 1 − kLinearBelow
+        const double r1 = 1.0 - kLinearBelow, slope = k * psi(g, r1, nullptr) / (kLinearBelow);
+        dpu = slope;
+        dpd = -slope;
+        return slope * (pu - pd);
+    }
+    double dr = 0.0;
+    const double s = psi(g, r, &dr);
+    dpd = k * dr;                 // ∂(k p_u ψ(p_d/p_u))/∂p_d
+    dpu = k * (s - r * dr);       // ∂/∂p_u
+    return k * pu * s;
+}
+
+}  // namespace
+
+double criticalPressureRatio(const GasProperties& gas) {
+    return std::pow(2.0 / (gas.gamma + 1.0), gas.gamma / (gas.gamma - 1.0));
+}
+
+double orificeFlow(const GasProperties& gas, double cda, double pa, double pb, double ta, double tb, double* dpa,
+                   double* dpb) {
+    if (!(pa > 0.0) || !(pb > 0.0) || !(ta > 0.0) || !(tb > 0.0) || !(cda >= 0.0) || !std::isfinite(pa + pb + ta + tb + cda))
+        throw std::invalid_argument("orifice flow: pressures (" + std::to_string(pa) + ", " + std::to_string(pb) +
+                                    " Pa) and temperatures must be positive and the area >= 0");
+    double du = 0.0, dd = 0.0, m = 0.0;
+    if (pa >= pb) {
+        m = downhill(gas, cda, pa, pb, ta, du, dd);
+        if (dpa) *dpa = du;
+        if (dpb) *dpb = dd;
+        return m;
+    }
+    m = downhill(gas, cda, pb, pa, tb, du, dd);
+    if (dpa) *dpa = -dd;
+    if (dpb) *dpb = -du;
+    return -m;
+}
+
+}  // namespace flexehd::cosim

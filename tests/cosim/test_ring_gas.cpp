@@ -1,0 +1,99 @@
+// The ring pack's gas (docs/ring-pack.md): the orifice flow against the isentropic nozzle's
+// choked formula and its incompressible (Bernoulli) limit, its derivatives against differences; a
+// closed volume leaking through a choked gap against the analytic exponential decay, with the
+// backward-Euler step's first order; and the gas mass of a two-volume chain over a fired cycle
+// (in from the cylinder = blow-by + accumulation).
+#include "cosim/ringpack/InterRingGas.hpp"
+#include "cosim/ringpack/OrificeFlow.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+using namespace flexehd::cosim;
+
+namespace {
+const GasProperties kAir{1.4, 287.0};
+constexpr double kT = 400.0;  // K
+}  // namespace
+
+TEST(OrificeFlow, ChokedAndIncompressibleLimits) {
+    const double g = kAir.gamma, cda = 1e-7;
+    EXPECT_NEAR(criticalPressureRatio(kAir), 0.528, 5e-4);  // air, the textbook value
+    // Choked: ṁ* = C_d A p_u √(γ/(R T)) (2/(γ+1))^{(γ+1)/(2(γ−1))}, for any r below r*.
+    const double pu = 10e5, choked = cda * pu * std::sqrt(g / (kAir.gasConstant * kT)) *
+                                     std::pow(2.0 / (g + 1.0), (g + 1.0) / (2.0 * (g - 1.0)));
+    for (double r : {0.1, 0.3, 0.5})
+        EXPECT_NEAR(orificeFlow(kAir, cda, pu, r * pu, kT, kT), choked, 1e-12 * choked);
+    // The law is continuous at r* and falls to 0 at r = 1; reversed, it flows the other way.
+    const double rs = criticalPressureRatio(kAir);
+    EXPECT_NEAR(orificeFlow(kAir, cda, pu, (rs + 1e-9) * pu, kT, kT), choked, 1e-8 * choked);
+    EXPECT_DOUBLE_EQ(orificeFlow(kAir, cda, 0.3 * pu, pu, kT, kT), -choked);
+    // Small differences: Bernoulli ṁ = C_d A √(2 ρ_u Δp), the leading term of the expansion in
+    // ε = Δp/p_u; the next term is O(ε).
+    for (double eps : {1e-3, 1e-2}) {
+        const double rho = pu / (kAir.gasConstant * kT), bernoulli = cda * std::sqrt(2.0 * rho * eps * pu);
+        const double m = orificeFlow(kAir, cda, pu, (1.0 - eps) * pu, kT, kT);
+        std::printf("eps %.0e: flow / Bernoulli - 1 = %.3g\n", eps, m / bernoulli - 1.0);
+        EXPECT_LT(std::abs(m / bernoulli - 1.0), eps);
+    }
+}
+
+TEST(OrificeFlow, DerivativesMatchDifferences) {
+    const double cda = 2e-7;
+    for (const auto& [pa, pb] : std::vector<std::pair<double, double>>{{5e5, 1e5}, {3e5, 2.5e5}, {2e5, 6e5}, {1e5, 1.00001e5}}) {
+        double da = 0.0, db = 0.0;
+        orificeFlow(kAir, cda, pa, pb, kT, 350.0, &da, &db);
+        const double h = 1e-3;  // Pa
+        const double fa = (orificeFlow(kAir, cda, pa + h, pb, kT, 350.0) - orificeFlow(kAir, cda, pa - h, pb, kT, 350.0)) / (2 * h);
+        const double fb = (orificeFlow(kAir, cda, pa, pb + h, kT, 350.0) - orificeFlow(kAir, cda, pa, pb - h, kT, 350.0)) / (2 * h);
+        EXPECT_NEAR(da, fa, 1e-5 * std::abs(fa) + 1e-16);
+        EXPECT_NEAR(db, fb, 1e-5 * std::abs(fb) + 1e-16);
+    }
+}
+
+// A volume V at T leaking through a choked orifice: dp/dt = −p C_d A C* √(γ R T)/V, so
+// p = p0 exp(−t/τ) while p_d/p < r*; backward Euler gives p0 (1 + Δt/τ)^−N, first order in Δt.
+TEST(InterRingGas, ClosedVolumeLeaksAtTheChokedExponentialRate) {
+    const double g = kAir.gamma, V = 1e-6, cda = 1e-7, p0 = 10e5, pd = 1e5;
+    const double cstar = std::pow(2.0 / (g + 1.0), (g + 1.0) / (2.0 * (g - 1.0)));
+    const double tau = V / (cda * cstar * std::sqrt(g * kAir.gasConstant * kT));
+    std::vector<double> err;
+    for (int N : {50, 100, 200, 400}) {
+        InterRingGas gas(kAir, {V}, {kT}, {0.0, cda}, p0);
+        for (int s = 0; s < N; ++s) gas.advance(tau / N, 1e5, pd);
+        err.push_back(std::abs(gas.pressures()[0] / (p0 * std::exp(-1.0)) - 1.0));
+        std::printf("N %d: p(tau) %.6g Pa (analytic %.6g), error %.3g\n", N, gas.pressures()[0], p0 * std::exp(-1.0),
+                    err.back());
+    }
+    for (std::size_t k = 1; k < err.size(); ++k) EXPECT_NEAR(std::log2(err[k - 1] / err[k]), 1.0, 0.05);
+    EXPECT_LT(err.back(), 1.5e-3);  // backward Euler's error ≈ Δt/(2τ) at t = τ: 1.25e-3
+}
+
+// Two land volumes between the cylinder and the crankcase over a fired cycle at 1000 rpm (a
+// peak of 45 bar at 372°): what enters from the cylinder is the blow-by plus what the volumes
+// gain, to the Newton tolerance, step by step and over the cycle.
+TEST(InterRingGas, GasMassIsConservedOverAFiredCycle) {
+    InterRingGas gas(kAir, {1.2e-6, 0.9e-6}, {450.0, 400.0}, {3e-8, 2.5e-8, 4e-8}, 1e5);
+    const double degree = 60.0 / (1000.0 * 360.0), dt = 0.25 * degree;
+    const double m0 = gas.mass();
+    double in = 0.0, out = 0.0, worst = 0.0, peakLand = 0.0;
+    for (int s = 1; s <= 4 * 720; ++s) {
+        const double deg = 0.25 * s, pc = 1e5 + 44e5 * std::exp(-std::pow((deg - 372.0) / 30.0, 2));
+        const double before = gas.mass();
+        gas.advance(dt, pc, 1e5);
+        in += gas.flow(0) * dt;
+        out += gas.blowBy() * dt;
+        worst = std::max(worst, std::abs((gas.mass() - before) - dt * (gas.flow(0) - gas.blowBy())));
+        peakLand = std::max(peakLand, gas.pressures()[0]);
+    }
+    std::printf("in %.4g kg, blow-by %.4g kg, gained %.4g kg, worst step imbalance %.3g kg, land 2 peak %.3g bar\n", in,
+                out, gas.mass() - m0, worst, peakLand / 1e5);
+    EXPECT_GT(in, 0.0);
+    EXPECT_GT(peakLand, 2e5);  // the first land is pressurised by the firing
+    EXPECT_LT(std::abs(in - out - (gas.mass() - m0)), 1e-9 * in);
+    EXPECT_LT(worst, 1e-10 * in);
+}
