@@ -8,30 +8,32 @@ namespace flexehd::lube {
 
 namespace {
 
-constexpr int kColumns = 3;  // θ columns of the axisymmetric film (the least a periodic grid takes)
-
-ReynoldsOptions ringSolverOptions(double pcav) {
-    ReynoldsOptions o;
-    o.cavitation = Cavitation::Reynolds;
-    o.solver = SolverKind::ActiveSet;
-    o.cavitationPressure = pcav;
-    o.control.tolerance = 1e-12;
-    return o;
-}
-
-FilmGrid faceGrid(const RingFaceProfile& profile, double radius, int nodes) {
-    if (nodes < 5) throw std::invalid_argument("RingFilm: at least 5 nodes across the face, got " + std::to_string(nodes));
-    if (!(radius > 0.0)) throw std::invalid_argument("RingFilm: the bore radius must be positive");
-    return FilmGrid::fullCircumference(radius, FilmGrid::uniform(profile.lower(), profile.upper(), nodes), kColumns);
+// x = A⁻¹ d for the tridiagonal A (sub a, diagonal b, super c), by the Thomas algorithm.
+void tridiagonalSolve(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c,
+                      std::vector<double>& d) {
+    const std::size_t n = b.size();
+    std::vector<double> cp(n);
+    double m = b[0];
+    cp[0] = c[0] / m;
+    d[0] /= m;
+    for (std::size_t i = 1; i < n; ++i) {
+        m = b[i] - a[i] * cp[i - 1];
+        cp[i] = c[i] / m;
+        d[i] = (d[i] - a[i] * d[i - 1]) / m;
+    }
+    for (std::size_t i = n - 1; i-- > 0;) d[i] -= cp[i] * d[i + 1];
 }
 
 }  // namespace
 
-RingFilm::RingFilm(RingFaceProfile profile, double boreRadius, Lubricant lubricant, int nodes, double cavitationPressure)
-    : profile_(std::move(profile)), lubricant_(lubricant), pcav_(cavitationPressure),
-      grid_(faceGrid(profile_, boreRadius, nodes)) {
-    drop_.resize(grid_.size());
-    for (int k = 0; k < grid_.size(); ++k) drop_[k] = profile_.drop(grid_.z(grid_.axialIndex(k)));
+RingFilm::RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes, double cavitationPressure)
+    : profile_(std::move(profile)), lubricant_(lubricant), pcav_(cavitationPressure) {
+    if (nodes < 5) throw std::invalid_argument("RingFilm: at least 5 nodes across the face, got " + std::to_string(nodes));
+    if (lubricant_.pressureDependent())
+        throw std::invalid_argument("RingFilm: a constant-property lubricant only (no pressure-dependent viscosity)");
+    x_ = Eigen::VectorXd::LinSpaced(nodes, profile_.lower(), profile_.upper());
+    drop_.resize(nodes);
+    for (int i = 0; i < nodes; ++i) drop_[i] = profile_.drop(x_[i]);
 }
 
 RingFilmResult RingFilm::solve(const RingFilmState& s) const {
@@ -40,32 +42,58 @@ RingFilmResult RingFilm::solve(const RingFilmState& s) const {
     if (!std::isfinite(s.slidingSpeed) || !std::isfinite(s.squeezeRate) || !std::isfinite(s.pressureBelow) ||
         !std::isfinite(s.pressureAbove))
         throw std::invalid_argument("RingFilm: sliding speed, squeeze rate and edge pressures must be finite");
-    // The edges at the gas pressures of this state (a small grid: its solver is set up per solve).
-    FilmGrid g = grid_;
-    g.setEdge(Edge::AxialLow, EdgeCondition::Pressure, std::max(s.pressureBelow, pcav_));
-    g.setEdge(Edge::AxialHigh, EdgeCondition::Pressure, std::max(s.pressureAbove, pcav_));
-    ReynoldsSolver solver(g, lubricant_, ringSolverOptions(pcav_));
-    FilmState f;
-    f.h = drop_.array() + s.minimumGap;
-    f.dhdt = Eigen::VectorXd::Constant(g.size(), s.squeezeRate);
-    f.outer.axial = s.slidingSpeed;
-    const Eigen::VectorXd p = solver.solve(f).pressure;
-
-    // Per unit circumference: the first column (the film does not depend on θ).
-    const int n = g.nAxial();
+    const int n = static_cast<int>(x_.size());
+    const double eta = lubricant_.referenceViscosity(), dx = x_[1] - x_[0];
     RingFilmResult r;
-    r.x.resize(n);
-    r.h.resize(n);
-    r.p.resize(n);
-    for (int i = 0; i < n; ++i) {
-        const int k = g.index(i, 0);
-        r.x[i] = g.z(i);
-        r.h[i] = f.h[k];
-        r.p[i] = p[k];
+    r.x = x_;
+    r.h = drop_.array() + s.minimumGap;
+    // Faces f = i + ½: conductance c_f = h_f³/(12 η Δx), Couette flux (U/2) h_f; node i's balance
+    // (c₋ + c₊) p_i − c₋ p_{i−1} − c₊ p_{i+1} = −(U/2)(h₊ − h₋) − Δx ∂h/∂t.
+    std::vector<double> c(static_cast<std::size_t>(n - 1)), q(static_cast<std::size_t>(n - 1));
+    for (int f = 0; f + 1 < n; ++f) {
+        const double hf = 0.5 * (r.h[f] + r.h[f + 1]);
+        c[static_cast<std::size_t>(f)] = hf * hf * hf / (12.0 * eta * dx);
+        q[static_cast<std::size_t>(f)] = 0.5 * s.slidingSpeed * hf;
     }
-    const double eta = lubricant_.referenceViscosity();
+    const double pLow = std::max(s.pressureBelow, pcav_), pHigh = std::max(s.pressureAbove, pcav_);
+    // Primal–dual active set: nodes held at p_cav where the free solution falls below it; released
+    // where the balance asks for more pressure than p_cav. The partition settles in a few passes.
+    std::vector<char> held(static_cast<std::size_t>(n), 0);
+    std::vector<double> a(static_cast<std::size_t>(n)), b(static_cast<std::size_t>(n)), up(static_cast<std::size_t>(n)),
+        rhs(static_cast<std::size_t>(n)), p(static_cast<std::size_t>(n));
+    auto balance = [&](int i, const std::vector<double>& pv) {  // A p − b at node i
+        const auto fm = static_cast<std::size_t>(i - 1), fp = static_cast<std::size_t>(i);
+        return c[fm] * (pv[static_cast<std::size_t>(i)] - pv[fm]) + c[fp] * (pv[static_cast<std::size_t>(i)] - pv[fp + 1]) +
+               q[fp] - q[fm] + dx * s.squeezeRate;
+    };
+    for (int pass = 0; pass < 4 * n; ++pass) {
+        for (int i = 0; i < n; ++i) {
+            const auto si = static_cast<std::size_t>(i);
+            a[si] = up[si] = 0.0;
+            if (i == 0 || i == n - 1 || held[si]) {
+                b[si] = 1.0;
+                rhs[si] = i == 0 ? pLow : i == n - 1 ? pHigh : pcav_;
+                continue;
+            }
+            b[si] = c[si - 1] + c[si];
+            a[si] = -c[si - 1];
+            up[si] = -c[si];
+            rhs[si] = -(q[si] - q[si - 1]) - dx * s.squeezeRate;
+        }
+        p = rhs;
+        tridiagonalSolve(a, b, up, p);
+        bool changed = false;
+        for (int i = 1; i + 1 < n; ++i) {
+            const auto si = static_cast<std::size_t>(i);
+            if (!held[si] && p[si] < pcav_) held[si] = 1, changed = true;
+            else if (held[si] && balance(i, p) < 0.0) held[si] = 0, changed = true;  // it wants p > p_cav
+        }
+        if (!changed) break;
+        if (pass == 4 * n - 1) throw std::runtime_error("RingFilm: the cavitated set did not settle");
+    }
+    r.p = Eigen::Map<const Eigen::VectorXd>(p.data(), n);
     for (int i = 0; i + 1 < n; ++i) {  // trapezoids between nodes
-        const double dx = r.x[i + 1] - r.x[i], hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
+        const double hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
         r.load += 0.5 * (r.p[i] + r.p[i + 1]) * dx;
         // Shear on the ring (u = 0) from the liner's Couette flow and the Poiseuille flow; no
         // Couette shear where the film is cavitated on both nodes (Reynolds condition).

@@ -6,14 +6,16 @@
 //   d/dx (h³/(12η) dp/dx) = (U/2) dh/dx + ∂h/∂t,   h(x) = h_min + drop(x),   p ≥ p_cav,
 //
 // U the liner's axial speed relative to the ring (positive towards the crown) and ∂h/∂t the
-// ring's radial squeeze rate (the whole face moves with h_min). Solved on a FilmGrid across the
-// face (a few θ columns of the bore: the solution does not depend on θ) by the film solvers of
-// this library; the load and the friction are per unit length of the ring's circumference.
+// ring's radial squeeze rate (the whole face moves with h_min). Discretised by finite volumes on
+// uniform nodes across the face (the conductances and Couette fluxes of ReynoldsSystem, in one
+// dimension), the complementarity problem solved by a primal–dual active set on the tridiagonal
+// system (a direct solve per partition); the load and the friction are per unit length of the
+// ring's circumference.
 #include <Eigen/Core>
 
-#include "lube/FilmGrid.hpp"
+#include <vector>
+
 #include "lube/Lubricant.hpp"
-#include "lube/ReynoldsSolver.hpp"
 #include "lube/RingFaceProfile.hpp"
 
 namespace flexehd::lube {
@@ -34,10 +36,8 @@ struct RingFilmResult {
 
 class RingFilm {
 public:
-    /// nodes across the face (≥ 5); the bore radius (m) sets the control volumes' arc (the
-    /// per-circumference results do not depend on it).
-    RingFilm(RingFaceProfile profile, double boreRadius, Lubricant lubricant, int nodes = 201,
-             double cavitationPressure = 0.0);
+    /// nodes across the face (≥ 5); a constant-property lubricant (its reference viscosity).
+    RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes = 201, double cavitationPressure = 0.0);
 
     /// Throws std::invalid_argument on a non-positive gap or non-finite input, std::runtime_error
     /// when the film solve fails.
@@ -49,8 +49,7 @@ private:
     RingFaceProfile profile_;
     Lubricant lubricant_;
     double pcav_;
-    FilmGrid grid_;
-    Eigen::VectorXd drop_;  // per grid node
+    Eigen::VectorXd x_, drop_;  // per node
 };
 
 }  // namespace flexehd::lube

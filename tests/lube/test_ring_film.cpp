@@ -75,7 +75,7 @@ TEST(RingFilm, SteadyParabolicFaceMatchesMartinWithItsOrder) {
     const double vertex = face.lower() + 200.0 * f.scale();
     std::vector<double> error;
     for (double dX : {0.1, 0.05, 0.025, 0.0125}) {
-        const RingFilm film(face, 0.043, Lubricant(f.eta), nodesFor(220.0, dX));
+        const RingFilm film(face, Lubricant(f.eta), nodesFor(220.0, dX));
         RingFilmState s;
         s.minimumGap = f.h0;
         s.slidingSpeed = U;
@@ -104,7 +104,7 @@ TEST(RingFilm, PureSqueezeOfTheParabolicFaceMatchesTheClosedForm) {
     const double W = 3.0 * std::sqrt(2.0) * std::numbers::pi * f.eta * V * std::pow(f.R, 1.5) / std::pow(f.h0, 1.5);
     std::vector<double> load;
     for (double d : {0.1, 0.05, 0.025}) {
-        const RingFilm film(f.profile(20.0, 20.0), 0.043, Lubricant(f.eta), nodesFor(40.0, d));
+        const RingFilm film(f.profile(20.0, 20.0), Lubricant(f.eta), nodesFor(40.0, d));
         RingFilmState s;
         s.minimumGap = f.h0;
         s.squeezeRate = -V;
@@ -136,7 +136,7 @@ TEST(RingFilm, FaceProfilesAndBadInput) {
                 ThrowsMessage<std::invalid_argument>(HasSubstr("inside the face")));
     EXPECT_THAT([] { RingFaceProfile::table({{0.0, 1e-6}, {0.0, 2e-6}}); },
                 ThrowsMessage<std::invalid_argument>(HasSubstr("increase strictly (row 2)")));
-    const RingFilm film(barrel, 0.043, Lubricant(0.01), 51);
+    const RingFilm film(barrel, Lubricant(0.01), 51);
     RingFilmState s;
     EXPECT_THAT([&] { film.solve(s); }, ThrowsMessage<std::invalid_argument>(HasSubstr("minimum gap must be positive")));
 }
