@@ -1,5 +1,8 @@
 #include "lube/RingFilm.hpp"
 
+#include "lube/FilmGrid.hpp"
+#include "lube/JfoSolver.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -7,6 +10,8 @@
 namespace flexehd::lube {
 
 namespace {
+
+constexpr int kColumns = 3;  // θ columns of the mass-conserving film's grid (the solution does not depend on θ)
 
 // x = A⁻¹ d for the tridiagonal A (sub a, diagonal b, super c), by the Thomas algorithm.
 void tridiagonalSolve(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c,
@@ -42,11 +47,62 @@ RingFilmResult RingFilm::solve(const RingFilmState& s) const {
     if (!std::isfinite(s.slidingSpeed) || !std::isfinite(s.squeezeRate) || !std::isfinite(s.pressureBelow) ||
         !std::isfinite(s.pressureAbove))
         throw std::invalid_argument("RingFilm: sliding speed, squeeze rate and edge pressures must be finite");
+    const bool starved = !std::isnan(s.supplyFilm);
+    if (starved && !(s.supplyFilm >= 0.0 && std::isfinite(s.supplyFilm)))
+        throw std::invalid_argument("RingFilm: the supply film must be >= 0 m (or NaN: flooded), got " +
+                                    std::to_string(s.supplyFilm));
+    if (starved && s.squeezeRate != 0.0)
+        throw std::invalid_argument("RingFilm: the film fed by an oil layer is steady: the squeeze rate must be 0");
     const int n = static_cast<int>(x_.size());
     const double eta = lubricant_.referenceViscosity(), dx = x_[1] - x_[0];
     RingFilmResult r;
     r.x = x_;
     r.h = drop_.array() + s.minimumGap;
+    if (starved) solveStarved(s, r);
+    else solveFlooded(s, r);
+    for (int i = 0; i + 1 < n; ++i) {  // trapezoids between nodes
+        const double hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
+        r.load += 0.5 * (r.p[i] + r.p[i + 1]) * dx;
+        // Shear on the ring (u = 0) from the liner's Couette flow, on the oil (φ; none where the
+        // Reynolds condition cavitates both nodes), and the Poiseuille flow.
+        const bool cavitated = !starved && r.p[i] <= pcav_ && r.p[i + 1] <= pcav_;
+        const double phi = cavitated ? 0.0 : 0.5 * (r.fraction[i] + r.fraction[i + 1]);
+        r.friction += (phi * eta * s.slidingSpeed / hm - 0.5 * hm * dpdx) * dx;
+    }
+    return r;
+}
+
+void RingFilm::solveStarved(const RingFilmState& s, RingFilmResult& r) const {
+    const int n = static_cast<int>(x_.size());
+    FilmGrid g = FilmGrid::fullCircumference(1.0, std::vector<double>(x_.data(), x_.data() + n), kColumns);
+    g.setEdge(Edge::AxialLow, EdgeCondition::Pressure, std::max(s.pressureBelow, pcav_));
+    g.setEdge(Edge::AxialHigh, EdgeCondition::Pressure, std::max(s.pressureAbove, pcav_));
+    JfoOptions o;
+    o.method = JfoMethod::ActiveSet;
+    o.cavitationPressure = pcav_;
+    o.control.tolerance = 1e-12;
+    JfoSolver jfo(g, lubricant_, o);
+    FilmState f;
+    f.h.resize(g.size());
+    for (int k = 0; k < g.size(); ++k) f.h[k] = r.h[g.axialIndex(k)];
+    f.outer.axial = s.slidingSpeed;
+    // The leading edge (where the liner comes from) takes in the layer's flux U t: its inlet
+    // fraction makes the Couette inflow (|U|/2) h_f φ_in carry it.
+    const int lead = s.slidingSpeed >= 0.0 ? 0 : n - 1, next = lead == 0 ? 1 : n - 2;
+    const double hf = 0.5 * (r.h[lead] + r.h[next]);
+    for (int j = 0; j < kColumns; ++j) jfo.setInletFraction(g.index(lead, j), std::min(1.0, 2.0 * s.supplyFilm / hf));
+    const JfoResult res = jfo.solve(f);
+    r.p.resize(n);
+    r.fraction.resize(n);
+    for (int i = 0; i < n; ++i) {
+        r.p[i] = res.pressure[g.index(i, 0)];
+        r.fraction[i] = res.fraction[g.index(i, 0)];
+    }
+}
+
+void RingFilm::solveFlooded(const RingFilmState& s, RingFilmResult& r) const {
+    const int n = static_cast<int>(x_.size());
+    const double eta = lubricant_.referenceViscosity(), dx = x_[1] - x_[0];
     // Faces f = i + ½: conductance c_f = h_f³/(12 η Δx), Couette flux (U/2) h_f; node i's balance
     // (c₋ + c₊) p_i − c₋ p_{i−1} − c₊ p_{i+1} = −(U/2)(h₊ − h₋) − Δx ∂h/∂t.
     std::vector<double> c(static_cast<std::size_t>(n - 1)), q(static_cast<std::size_t>(n - 1));
@@ -92,15 +148,7 @@ RingFilmResult RingFilm::solve(const RingFilmState& s) const {
         if (pass == 4 * n - 1) throw std::runtime_error("RingFilm: the cavitated set did not settle");
     }
     r.p = Eigen::Map<const Eigen::VectorXd>(p.data(), n);
-    for (int i = 0; i + 1 < n; ++i) {  // trapezoids between nodes
-        const double hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
-        r.load += 0.5 * (r.p[i] + r.p[i + 1]) * dx;
-        // Shear on the ring (u = 0) from the liner's Couette flow and the Poiseuille flow; no
-        // Couette shear where the film is cavitated on both nodes (Reynolds condition).
-        const bool cavitated = r.p[i] <= pcav_ && r.p[i + 1] <= pcav_;
-        r.friction += ((cavitated ? 0.0 : eta * s.slidingSpeed / hm) - 0.5 * hm * dpdx) * dx;
-    }
-    return r;
+    r.fraction = Eigen::VectorXd::Ones(n);
 }
 
 }  // namespace flexehd::lube

@@ -6,13 +6,16 @@
 //   d/dx (h³/(12η) dp/dx) = (U/2) dh/dx + ∂h/∂t,   h(x) = h_min + drop(x),   p ≥ p_cav,
 //
 // U the liner's axial speed relative to the ring (positive towards the crown) and ∂h/∂t the
-// ring's radial squeeze rate (the whole face moves with h_min). Discretised by finite volumes on
+// ring's radial squeeze rate (the whole face moves with h_min). Flooded, or fed by the liner's
+// oil layer: then mass-conserving (JFO, lube::JfoSolver's active set on a grid across the face,
+// steady: the squeeze rate must be 0). Flooded, discretised by finite volumes on
 // uniform nodes across the face (the conductances and Couette fluxes of ReynoldsSystem, in one
 // dimension), the complementarity problem solved by a primal–dual active set on the tridiagonal
 // system (a direct solve per partition); the load and the friction are per unit length of the
 // ring's circumference.
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 #include "lube/Lubricant.hpp"
@@ -26,10 +29,15 @@ struct RingFilmState {
     double squeezeRate = 0.0;    ///< ∂h_min/∂t (m/s, < 0 closing)
     double pressureBelow = 0.0;  ///< gauge pressure at the face's lower edge (Pa)
     double pressureAbove = 0.0;  ///< gauge pressure at the face's upper edge (Pa)
+    /// The oil layer the liner carries into the face (m, ≥ 0; NaN: flooded, the Reynolds
+    /// condition). Given, the film is mass-conserving (JFO): the leading edge takes in the
+    /// layer's flux U t, the film fraction φ < 1 where the film is partial.
+    double supplyFilm = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RingFilmResult {
     Eigen::VectorXd x, h, p;  ///< across the face: position (m), film thickness (m), pressure (Pa)
+    Eigen::VectorXd fraction; ///< film fraction φ across the face (1 with the Reynolds condition)
     double load = 0.0;        ///< ∫ p dx: the film's radial force per unit circumference (N/m)
     double friction = 0.0;    ///< the film's axial shear force on the ring per unit circumference (N/m)
 };
@@ -46,6 +54,10 @@ public:
     const RingFaceProfile& profile() const { return profile_; }
 
 private:
+    /// The film's pressure and fraction for a given supply (JFO on a grid across the face).
+    void solveStarved(const RingFilmState& s, RingFilmResult& r) const;
+    void solveFlooded(const RingFilmState& s, RingFilmResult& r) const;
+
     RingFaceProfile profile_;
     Lubricant lubricant_;
     double pcav_;

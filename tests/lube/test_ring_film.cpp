@@ -2,7 +2,8 @@
 // with the Reynolds exit condition (Martin; Hamrock, Fundamentals of Fluid Film Lubrication:
 // w' = 4.896 η u_m R / h0, rupture at x/√(2R h0) = 0.475 past the minimum, u_m = U/2 with the
 // ring at rest) with the measured order of convergence; the pure squeeze of the same face
-// (W' = 3√2 π η V R^1.5 / h0^1.5 for an approach speed V, full film); and the face profiles.
+// (W' = 3√2 π η V R^1.5 / h0^1.5 for an approach speed V, full film); the face fed by a liner
+// oil layer (starved, mass-conserving) against its meniscus solution; and the face profiles.
 #include <gtest/gtest.h>
 #include <gmock/gmock.h>
 
@@ -121,6 +122,60 @@ TEST(RingFilm, PureSqueezeOfTheParabolicFaceMatchesTheClosedForm) {
     EXPECT_LT(std::abs(load.back() / W - 1.0), std::abs(load[1] - load[2]) / W + 1e-4);
 }
 
+// The parabolic face fed by a liner oil layer t (starved, mass-conserving): in the full film
+// dp/dX ∝ (H − H_e)/H³ with H_e = 2t/h0 (the flux U t carried by the film at the Reynolds exit,
+// where H = H_e), from the inlet meniscus X_m (p = 0) where the partial film ahead, φ h = 2t,
+// becomes full. X_m from ∫_{X_m}^{X_e} (H − H_e)/H³ dX = 0 and the load 24 ∫∫ (units η u_m R/h0)
+// by bisection and the trapezoidal rule (a second method); the film's meniscus and load must
+// converge to them, the load at second order and the meniscus within a cell.
+TEST(RingFilm, StarvedParabolicFaceMatchesTheMeniscusSolution) {
+    const Face f;
+    const double U = 10.0, t = 0.55e-6, He = 2.0 * t / f.h0, Xe = std::sqrt(He - 1.0);  // 2t below the flooded film's 1.226 h0
+    auto integrand = [&](double X) { const double H = 1.0 + X * X; return (H - He) / (H * H * H); };
+    auto closes = [&](double Xm, double* load) {  // p(X_e) for a meniscus at X_m, and the load
+        const int N = 400000;
+        const double dX = (Xe - Xm) / N;
+        double p = 0.0, I = 0.0, f0 = integrand(Xm);
+        for (int i = 0; i < N; ++i) {
+            const double f1 = integrand(Xm + (i + 1) * dX), pn = p + 0.5 * (f0 + f1) * dX;
+            I += 0.5 * (p + pn) * dX;
+            p = pn;
+            f0 = f1;
+        }
+        if (load) *load = 24.0 * I;
+        return p;
+    };
+    double lo = -10.0, hi = -Xe;
+    for (int it = 0; it < 60; ++it) (closes(0.5 * (lo + hi), nullptr) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
+    const double Xm = 0.5 * (lo + hi);
+    double reference = 0.0;
+    closes(Xm, &reference);
+    std::printf("meniscus solution: X_m %.5f, X_e %.5f, load %.6f (eta u_m R / h0)\n", Xm, Xe, reference);
+    const double unit = f.eta * (0.5 * U) * f.R / f.h0;
+    const RingFaceProfile face = f.profile(20.0, 20.0);
+    const double vertex = face.lower() + 20.0 * f.scale();
+    std::vector<double> error;
+    for (double dX : {0.1, 0.05, 0.025, 0.0125}) {
+        const RingFilm film(face, Lubricant(f.eta), nodesFor(40.0, dX));
+        RingFilmState s;
+        s.minimumGap = f.h0;
+        s.slidingSpeed = U;
+        s.supplyFilm = t;
+        const RingFilmResult r = film.solve(s);
+        int i = 0;
+        while (r.fraction[i] < 1.0 || i == 0) ++i;  // the first full-film node from the inlet
+        const double front = (0.5 * (r.x[i - 1] + r.x[i]) - vertex) / f.scale();
+        error.push_back(std::abs(r.load / unit / reference - 1.0));
+        std::printf("dX %.3f: load %.6f, error %.3g; meniscus at X = %.4f (%.4f)\n", dX, r.load / unit, error.back(),
+                    front, Xm);
+        EXPECT_LE(std::abs(front - Xm), dX);
+    }
+    const double order = std::log2(error.front() / error.back()) / 3.0;
+    std::printf("mean order of the load %.2f\n", order);
+    EXPECT_GE(order, 1.8);
+    EXPECT_LT(error.back(), 2e-3);
+}
+
 TEST(RingFilm, FaceProfilesAndBadInput) {
     const RingFaceProfile barrel = RingFaceProfile::barrel(1.5e-3, 6e-6, 0.15e-3);
     EXPECT_DOUBLE_EQ(barrel.drop(0.15e-3), 0.0);
@@ -139,4 +194,10 @@ TEST(RingFilm, FaceProfilesAndBadInput) {
     const RingFilm film(barrel, Lubricant(0.01), 51);
     RingFilmState s;
     EXPECT_THAT([&] { film.solve(s); }, ThrowsMessage<std::invalid_argument>(HasSubstr("minimum gap must be positive")));
+    s.minimumGap = 1e-6;
+    s.supplyFilm = -1e-6;
+    EXPECT_THAT([&] { film.solve(s); }, ThrowsMessage<std::invalid_argument>(HasSubstr("supply film must be >= 0")));
+    s.supplyFilm = 1e-6;
+    s.squeezeRate = -1e-3;
+    EXPECT_THAT([&] { film.solve(s); }, ThrowsMessage<std::invalid_argument>(HasSubstr("squeeze rate must be 0")));
 }
