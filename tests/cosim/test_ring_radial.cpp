@@ -2,6 +2,7 @@
 // parabolic face squeezes its film out as the closed form of the squeeze film says; with the
 // Greenwood–Tripp asperities, no gas and no sliding, the film settles to the gap where the
 // asperities alone carry the tension (the root of the asperity law, found independently).
+#include "cosim/ringpack/RingAxialMotion.hpp"
 #include "cosim/ringpack/RingRadialMotion.hpp"
 
 #include <gtest/gtest.h>
@@ -76,4 +77,37 @@ TEST(RingRadialMotion, BadInputIsNamed) {
                  std::invalid_argument);
     const RingRadialMotion ring(lube::RingFilm(face, lube::Lubricant(0.01), 51), std::nullopt, 100.0);
     EXPECT_THROW(ring.step(0.0, 1e-3, lube::RingFilmState{}, 0.0), std::invalid_argument);
+}
+
+// The ring's travel across its groove under a constant lifting force from rest on the lower flank:
+// z = F t²/(2m), so it reaches the upper flank at t = √(2 m c / F); the semi-implicit step is first
+// order in Δt. Pressed on a flank, the flank carries the force; it lifts when the force turns.
+TEST(RingAxialMotion, CrossesTheGrooveInTheFreeFlightTimeAndRestsOnTheFlanks) {
+    const double m = 0.04, c = 40e-6, F = 2.0;  // kg/m (a 1.5 x 3.5 mm steel ring), m, N/m
+    const double tCross = std::sqrt(2.0 * m * c / F);
+    std::vector<double> err;
+    for (int N : {100, 200, 400}) {
+        RingAxialMotion ring(m, c);
+        const double dt = 2.0 * tCross / (N + 0.37);  // the crossing between steps
+        double arrival = -1.0;
+        for (int s = 1; s <= N; ++s) {
+            ring.step(dt, F);
+            if (arrival < 0.0 && ring.onUpperFlank()) arrival = s * dt;
+        }
+        ASSERT_GT(arrival, 0.0);
+        err.push_back(std::abs(arrival / tCross - 1.0));
+        EXPECT_DOUBLE_EQ(ring.flankForce(), -F);  // the upper flank holds it
+        std::printf("N %d: arrival %.6g s (free flight %.6g s), error %.3g\n", N, arrival, tCross, err.back());
+    }
+    for (double e : err) EXPECT_GT(e, 0.0);
+    EXPECT_LT(err.back(), 2.0 * 2.0 / 400);  // within two steps of the free-flight time
+    for (std::size_t k = 1; k < err.size(); ++k) EXPECT_NEAR(std::log2(err[k - 1] / err[k]), 1.0, 0.2);
+    RingAxialMotion ring(m, c);
+    ring.step(1e-4, -5.0);
+    EXPECT_TRUE(ring.onLowerFlank());
+    EXPECT_DOUBLE_EQ(ring.flankForce(), 5.0);
+    ring.step(1e-4, 5.0);
+    EXPECT_FALSE(ring.onLowerFlank());
+    EXPECT_GT(ring.velocity(), 0.0);
+    EXPECT_THROW(RingAxialMotion(0.0, c), std::invalid_argument);
 }
