@@ -4,6 +4,7 @@
 #include "lube/JfoSolver.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -41,7 +42,18 @@ RingFilm::RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes, doub
     for (int i = 0; i < nodes; ++i) drop_[i] = profile_.drop(x_[i]);
 }
 
-RingFilmResult RingFilm::solve(const RingFilmState& s) const {
+RingFilmResult RingFilm::solve(const RingFilmState& s) const { return solveWith(s, 0.0, nullptr); }
+
+RingFilmResult RingFilm::step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction) const {
+    if (std::isnan(s.supplyFilm))
+        throw std::invalid_argument("RingFilm::step: a step of the film's content needs the supply film (mass-conserving)");
+    if (!(dt > 0.0) || previousFraction.size() != x_.size())
+        throw std::invalid_argument("RingFilm::step: a positive step and the previous film fraction on the " +
+                                    std::to_string(x_.size()) + " nodes expected");
+    return solveWith(s, dt, &previousFraction);
+}
+
+RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous) const {
     if (!(s.minimumGap > 0.0) || !std::isfinite(s.minimumGap))
         throw std::invalid_argument("RingFilm: the minimum gap must be positive, got " + std::to_string(s.minimumGap));
     if (!std::isfinite(s.slidingSpeed) || !std::isfinite(s.squeezeRate) || !std::isfinite(s.pressureBelow) ||
@@ -51,14 +63,15 @@ RingFilmResult RingFilm::solve(const RingFilmState& s) const {
     if (starved && !(s.supplyFilm >= 0.0 && std::isfinite(s.supplyFilm)))
         throw std::invalid_argument("RingFilm: the supply film must be >= 0 m (or NaN: flooded), got " +
                                     std::to_string(s.supplyFilm));
-    if (starved && s.squeezeRate != 0.0)
-        throw std::invalid_argument("RingFilm: the film fed by an oil layer is steady: the squeeze rate must be 0");
+    if (starved && s.squeezeRate != 0.0 && !previous)
+        throw std::invalid_argument("RingFilm: the film fed by an oil layer solved steady: the squeeze rate must be 0 "
+                                    "(RingFilm::step for a squeezing film)");
     const int n = static_cast<int>(x_.size());
     const double eta = lubricant_.referenceViscosity(), dx = x_[1] - x_[0];
     RingFilmResult r;
     r.x = x_;
     r.h = drop_.array() + s.minimumGap;
-    if (starved) solveStarved(s, r);
+    if (starved) solveStarved(s, dt, previous, r);
     else solveFlooded(s, r);
     for (int i = 0; i + 1 < n; ++i) {  // trapezoids between nodes
         const double hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
@@ -72,7 +85,8 @@ RingFilmResult RingFilm::solve(const RingFilmState& s) const {
     return r;
 }
 
-void RingFilm::solveStarved(const RingFilmState& s, RingFilmResult& r) const {
+void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous,
+                            RingFilmResult& r) const {
     const int n = static_cast<int>(x_.size());
     FilmGrid g = FilmGrid::fullCircumference(1.0, std::vector<double>(x_.data(), x_.data() + n), kColumns);
     g.setEdge(Edge::AxialLow, EdgeCondition::Pressure, std::max(s.pressureBelow, pcav_));
@@ -91,13 +105,22 @@ void RingFilm::solveStarved(const RingFilmState& s, RingFilmResult& r) const {
     const int lead = s.slidingSpeed >= 0.0 ? 0 : n - 1, next = lead == 0 ? 1 : n - 2;
     const double hf = 0.5 * (r.h[lead] + r.h[next]);
     for (int j = 0; j < kColumns; ++j) jfo.setInletFraction(g.index(lead, j), std::min(1.0, 2.0 * s.supplyFilm / hf));
-    const JfoResult res = jfo.solve(f);
+    JfoState before;
+    if (previous) {  // the face moved by dt ḣ_min over the step
+        before.h = f.h.array() - dt * s.squeezeRate;
+        before.fraction.resize(g.size());
+        for (int k = 0; k < g.size(); ++k) before.fraction[k] = (*previous)[g.axialIndex(k)];
+    }
+    const JfoResult res = jfo.solve(f, previous ? dt : 0.0, previous ? &before : nullptr);
     r.p.resize(n);
     r.fraction.resize(n);
     for (int i = 0; i < n; ++i) {
         r.p[i] = res.pressure[g.index(i, 0)];
         r.fraction[i] = res.fraction[g.index(i, 0)];
     }
+    const double circumference = 2.0 * std::numbers::pi * g.radius();
+    r.oil = jfo.oilVolume(f, res.fraction) / circumference;
+    r.inflow = res.boundaryFlow.sum() / circumference;
 }
 
 void RingFilm::solveFlooded(const RingFilmState& s, RingFilmResult& r) const {

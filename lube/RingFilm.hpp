@@ -31,13 +31,16 @@ struct RingFilmState {
     double pressureAbove = 0.0;  ///< gauge pressure at the face's upper edge (Pa)
     /// The oil layer the liner carries into the face (m, ≥ 0; NaN: flooded, the Reynolds
     /// condition). Given, the film is mass-conserving (JFO): the leading edge takes in the
-    /// layer's flux U t, the film fraction φ < 1 where the film is partial.
+    /// layer's flux U t, the film fraction φ < 1 where the film is partial; steady (solve) or a
+    /// backward-Euler step of its content from the last step's film fraction (step).
     double supplyFilm = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RingFilmResult {
     Eigen::VectorXd x, h, p;  ///< across the face: position (m), film thickness (m), pressure (Pa)
     Eigen::VectorXd fraction; ///< film fraction φ across the face (1 with the Reynolds condition)
+    double oil = 0.0;         ///< mass-conserving: the film's oil ∫ φ h dx per unit circumference (m²)
+    double inflow = 0.0;      ///< mass-conserving: net flow into the film at its edges per unit circumference (m²/s)
     double load = 0.0;        ///< ∫ p dx: the film's radial force per unit circumference (N/m)
     double friction = 0.0;    ///< the film's axial shear force on the ring per unit circumference (N/m)
 };
@@ -50,12 +53,17 @@ public:
     /// Throws std::invalid_argument on a non-positive gap or non-finite input, std::runtime_error
     /// when the film solve fails.
     RingFilmResult solve(const RingFilmState& s) const;
+    /// Mass-conserving (s.supplyFilm given): one backward-Euler step of dt (s) of the film's
+    /// content from the last step's film fraction across the face (its gap h_min − dt ḣ_min):
+    /// the oil's change is dt × the edges' inflow.
+    RingFilmResult step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction) const;
 
     const RingFaceProfile& profile() const { return profile_; }
 
 private:
     /// The film's pressure and fraction for a given supply (JFO on a grid across the face).
-    void solveStarved(const RingFilmState& s, RingFilmResult& r) const;
+    void solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous, RingFilmResult& r) const;
+    RingFilmResult solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous) const;
     void solveFlooded(const RingFilmState& s, RingFilmResult& r) const;
 
     RingFaceProfile profile_;

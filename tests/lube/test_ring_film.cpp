@@ -176,6 +176,54 @@ TEST(RingFilm, StarvedParabolicFaceMatchesTheMeniscusSolution) {
     EXPECT_LT(error.back(), 2e-3);
 }
 
+// Steps of the mass-conserving film (backward Euler of its content) through a sliding reversal
+// and a squeeze cycle on a 0.4 µm layer: each step's change of the film's oil is Δt × the inflow
+// at its edges (the active set: to round-off).
+TEST(RingFilm, StarvedStepsConserveTheFilmsOil) {
+    const RingFaceProfile face = RingFaceProfile::barrel(1.5e-3, 5e-6, 0.1e-3);
+    const RingFilm film(face, Lubricant(0.01), 301);
+    const double T = 0.01, dt = T / 200;
+    Eigen::VectorXd phi = Eigen::VectorXd::Ones(301);
+    double oil = -1.0, worst = 0.0, scale = 0.0, minPhi = 1.0;
+    for (int k = 1; k <= 200; ++k) {
+        const double t = k * dt, w = 2.0 * std::numbers::pi / T;
+        RingFilmState s;
+        auto gap = [&](double tt) { return 1e-6 * (1.5 + 0.5 * std::cos(w * tt)); };
+        s.minimumGap = gap(t);
+        s.squeezeRate = (gap(t) - gap(t - dt)) / dt;  // the step's: the face's last gap is h_min − Δt ḣ_min
+        s.slidingSpeed = 10.0 * std::sin(w * t);
+        s.supplyFilm = 0.4e-6;
+        const RingFilmResult r = film.step(s, dt, phi);
+        if (oil >= 0.0) {
+            worst = std::max(worst, std::abs((r.oil - oil) - dt * r.inflow));
+            scale = std::max(scale, std::abs(dt * r.inflow));
+        }
+        oil = r.oil;
+        phi = r.fraction;
+        minPhi = std::min(minPhi, phi.minCoeff());
+    }
+    std::printf("worst step imbalance %.3g of the largest step flow %.3g m^2; smallest film fraction %.3f\n",
+                worst / scale, scale, minPhi);
+    EXPECT_LT(minPhi, 0.5) << "the film must be starved";
+    EXPECT_LT(worst, 1e-10 * scale);
+}
+
+// Flooded (the layer thicker than the gap) and closing without sliding, the film stays full: its
+// backward-Euler content term is the squeeze term, and the step is the Reynolds-condition film.
+TEST(RingFilm, FloodedClosingStepIsTheReynoldsFilm) {
+    const RingFaceProfile face = RingFaceProfile::barrel(1.5e-3, 5e-6);
+    const RingFilm film(face, Lubricant(0.01), 201);
+    RingFilmState s;
+    s.minimumGap = 1e-6;
+    s.squeezeRate = -1e-3;
+    const RingFilmResult reynolds = film.solve(s);
+    s.supplyFilm = 1e-3;
+    const RingFilmResult jfo = film.step(s, 1e-5, Eigen::VectorXd::Ones(201));
+    EXPECT_GT(reynolds.p.minCoeff(), -1e-9);
+    EXPECT_LT((jfo.p - reynolds.p).cwiseAbs().maxCoeff(), 1e-9 * reynolds.p.maxCoeff());
+    EXPECT_NEAR(jfo.load, reynolds.load, 1e-9 * reynolds.load);
+}
+
 TEST(RingFilm, FaceProfilesAndBadInput) {
     const RingFaceProfile barrel = RingFaceProfile::barrel(1.5e-3, 6e-6, 0.15e-3);
     EXPECT_DOUBLE_EQ(barrel.drop(0.15e-3), 0.0);
@@ -200,4 +248,6 @@ TEST(RingFilm, FaceProfilesAndBadInput) {
     s.supplyFilm = 1e-6;
     s.squeezeRate = -1e-3;
     EXPECT_THAT([&] { film.solve(s); }, ThrowsMessage<std::invalid_argument>(HasSubstr("squeeze rate must be 0")));
+    EXPECT_THAT([&] { film.step(s, 1e-5, Eigen::VectorXd::Ones(7)); },
+                ThrowsMessage<std::invalid_argument>(HasSubstr("previous film fraction on the 51 nodes")));
 }
