@@ -26,6 +26,11 @@ InterRingGas::InterRingGas(GasProperties gas, std::vector<double> volumes, std::
     cylinder_ = crankcase_ = initialPressure;
 }
 
+double InterRingGas::blowByLitresPerMinute() const {
+    const double normalDensity = 101325.0 / (gas_.gasConstant * 273.15);  // kg/m³
+    return blowBy() / normalDensity * 1000.0 * 60.0;
+}
+
 double InterRingGas::mass() const {
     double m = 0.0;
     for (std::size_t i = 0; i < volume_.size(); ++i)

@@ -36,6 +36,8 @@ public:
     /// Mass flow (kg/s) through orifice i at the last step's end, towards the crankcase > 0.
     double flow(int i) const { return flow_[static_cast<Eigen::Index>(i)]; }
     double blowBy() const { return flow_[flow_.size() - 1]; }  ///< kg/s into the crankcase
+    /// The blow-by as a volume flow at normal conditions (DIN 1343: 101 325 Pa, 273.15 K), l/min.
+    double blowByLitresPerMinute() const;
     double mass() const;  ///< kg of gas in the volumes
 
 private:

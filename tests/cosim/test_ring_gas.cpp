@@ -96,4 +96,6 @@ TEST(InterRingGas, GasMassIsConservedOverAFiredCycle) {
     EXPECT_GT(peakLand, 2e5);  // the first land is pressurised by the firing
     EXPECT_LT(std::abs(in - out - (gas.mass() - m0)), 1e-9 * in);
     EXPECT_LT(worst, 1e-10 * in);
+    // The blow-by in l/min at normal conditions: air's normal density 1.2922 kg/m³ (DIN 1343).
+    EXPECT_NEAR(gas.blowByLitresPerMinute(), gas.blowBy() / 1.2922 * 6e4, 1e-3 * std::abs(gas.blowBy() / 1.2922 * 6e4));
 }
