@@ -25,7 +25,6 @@ struct JfoFace {
     double c, q;
 };
 
-
 // The faces of the grid's finite volumes that touch a Film node and the node → face adjacency
 // (CSR, with each entry's other node, direction and whether that node is Film); the faces
 // between a Film node and a boundary one: fixed for a grid, built once per solver.

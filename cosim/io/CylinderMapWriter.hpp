@@ -12,7 +12,15 @@
 #include "cosim/io/VtuWriter.hpp"
 #include "lube/FilmGrid.hpp"
 
+class vtkStructuredGrid;
+
 namespace flexehd::cosim {
+
+/// Adds one-value field arrays (TimeValue, crank_deg, …) to the grid.
+void addFieldValues(vtkStructuredGrid& grid, const std::vector<FieldValue>& values);
+/// Writes the grid to `path` atomically: VTK XML, appended raw LZ4-compressed blocks, UInt64
+/// headers. Throws std::runtime_error naming the file on an I/O error.
+void writeStructuredGrid(const std::string& path, vtkStructuredGrid& grid);
 
 struct CylinderMapArray {
     std::string name;                         ///< array name (unit suffix)

@@ -17,11 +17,9 @@
 #include <vtkPoints.h>
 #include <vtkStructuredGrid.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkXMLStructuredGridWriter.h>
 
 #include "cosim/io/CylinderMapWriter.hpp"
 #include "cosim/io/VtuWriter.hpp"
-#include "fem/AtomicFile.hpp"
 
 namespace flexehd::cosim {
 namespace {
@@ -145,22 +143,8 @@ void writeFilm(const std::string& path, const FilmField& film, const SnapshotTim
     grid->GetPointData()->AddArray(kind);
     grid->GetPointData()->SetActiveScalars("pressure_pa");
 
-    for (const FieldValue& v : fieldData(at)) {  // ParaView shows TimeValue when the file is opened alone
-        auto a = scalarArray(v.name.c_str(), 1);
-        a->SetValue(0, v.value);
-        grid->GetFieldData()->AddArray(a);
-    }
-
-    fem::writeAtomically(path, [&](const std::string& tmp) {
-        vtkNew<vtkXMLStructuredGridWriter> writer;
-        writer->SetFileName(tmp.c_str());
-        writer->SetInputData(grid);
-        writer->SetDataModeToAppended();
-        writer->EncodeAppendedDataOff();  // raw binary
-        writer->SetHeaderTypeToUInt64();
-        writer->SetCompressorTypeToLZ4();  // ≈ 10× faster than the default zlib
-        if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + path + "'");
-    });
+    addFieldValues(*grid, fieldData(at));  // ParaView shows TimeValue when the file is opened alone
+    writeStructuredGrid(path, *grid);
 }
 
 void checkOil(const LinerOilField& oil, double time) {

@@ -52,4 +52,13 @@ inline cosim::EngineCase smallFlexibleCase(const std::string& pistonFile) {
     return c;
 }
 
+/// Steps the outside checks of a run can redo: a tight coupling tolerance (1e-6) and uniform
+/// 0.25° steps, every one written as a snapshot.
+inline void checkableSteps(cosim::EngineCase& c) {
+    c.coupling.tolerance = 1e-6;
+    c.coupling.maxIterations = 60;
+    c.time.maxStepDeg = 0.25;
+    c.output.vtkEveryDeg = 0.25;
+}
+
 }  // namespace flexehd::test

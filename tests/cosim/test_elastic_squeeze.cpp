@@ -11,6 +11,7 @@
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "CliRunner.hpp"
+#include "RecordedRun.hpp"
 #include "SmallEngineCase.hpp"
 
 #include <gtest/gtest.h>
@@ -32,18 +33,13 @@ TEST(ElasticSqueeze, StepsSolveTheEquationsWithTheElasticRate) {
 
     EngineCase c = flexehd::test::smallFlexibleCase(file);
     c.coupling.elasticSqueeze = true;
-    c.coupling.tolerance = 1e-6;
-    c.coupling.maxIterations = 60;
-    c.time.maxStepDeg = 0.25;
-    c.output.vtkEveryDeg = 0.25;
+    flexehd::test::checkableSteps(c);
     PistonSimulation sim(c);
     ASSERT_EQ(sim.clearance(), nullptr);  // h_rigid is the skirt film's alone
-    std::vector<StepRecord> steps;
-    std::vector<Snapshot> snaps;
-    SimulationCallbacks cb;
-    cb.onStep = [&](const StepRecord& r) { steps.push_back(r); };
-    cb.onSnapshot = [&](const Snapshot& s) { snaps.push_back(s); };
-    sim.run(cb, 400.0);  // through BDC (pure squeeze) and the firing slap
+    // Through BDC (pure squeeze) and the firing slap.
+    const flexehd::test::RecordedRun run = flexehd::test::recordRun(sim, 400.0);
+    const std::vector<StepRecord>& steps = run.steps;
+    const std::vector<Snapshot>& snaps = run.snapshots;
 
     const lube::FilmGrid& g = sim.film().grid();
     const FlexibleSurface& body = *sim.piston();

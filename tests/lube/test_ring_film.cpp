@@ -39,25 +39,29 @@ int nodesFor(double span, double dX) { return static_cast<int>(std::lround(span 
 
 }  // namespace
 
+// The one-dimensional parabola's pressure, in units of 12 η u_m √(2R h0)/h0², integrated from a
+// film start at X0 (p = 0) to X1 by the trapezoidal rule in N steps: p(X1) and, in *load, the load
+// 24 ∫ p dX in units of η u_m R / h0 (dp/dX ∝ (H − H_e)/H³, H = 1 + X²).
+double parabolaPressure(double X0, double X1, double He, int N, double* load) {
+    auto F = [&](double X) { const double H = 1.0 + X * X; return (H - He) / (H * H * H); };
+    const double dX = (X1 - X0) / N;
+    double p = 0.0, I = 0.0, f0 = F(X0);
+    for (int i = 0; i < N; ++i) {
+        const double f1 = F(X0 + (i + 1) * dX), pn = p + 0.5 * (f0 + f1) * dX;
+        I += 0.5 * (p + pn) * dX;
+        p = pn;
+        f0 = f1;
+    }
+    if (load) *load = 24.0 * I;
+    return p;
+}
+
 // The continuum load w' / (η u_m R / h0) and the rupture X_e of the parabola with its flooded inlet
 // at X = −inlet, by a second method: the one-dimensional equation dp/dX ∝ (H − H_e)/H³,
 // H = 1 + X², integrated by the trapezoidal rule from the inlet (p = 0) and shot in X_e until
 // p(X_e) = 0 (then also dp/dX = 0: the Reynolds condition); w' = 24 ∫∫ (H − H_e)/H³.
 std::pair<double, double> martinByQuadrature(double inlet) {
-    auto shoot = [&](double Xe, int N, double* load) {
-        const double He = 1.0 + Xe * Xe, dX = (Xe + inlet) / N;
-        auto F = [&](double X) { const double H = 1.0 + X * X; return (H - He) / (H * H * H); };
-        double p = 0.0, I = 0.0, X = -inlet, f0 = F(X);
-        for (int i = 0; i < N; ++i) {
-            const double f1 = F(X + dX), pn = p + 0.5 * (f0 + f1) * dX;
-            I += 0.5 * (p + pn) * dX;
-            p = pn;
-            X += dX;
-            f0 = f1;
-        }
-        if (load) *load = 24.0 * I;
-        return p;
-    };
+    auto shoot = [&](double Xe, int N, double* load) { return parabolaPressure(-inlet, Xe, 1.0 + Xe * Xe, N, load); };
     double lo = 0.3, hi = 0.6;
     for (int it = 0; it < 60; ++it) (shoot(0.5 * (lo + hi), 200000, nullptr) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
     double load = 0.0;
@@ -131,20 +135,8 @@ TEST(RingFilm, PureSqueezeOfTheParabolicFaceMatchesTheClosedForm) {
 TEST(RingFilm, StarvedParabolicFaceMatchesTheMeniscusSolution) {
     const Face f;
     const double U = 10.0, t = 0.55e-6, He = 2.0 * t / f.h0, Xe = std::sqrt(He - 1.0);  // 2t below the flooded film's 1.226 h0
-    auto integrand = [&](double X) { const double H = 1.0 + X * X; return (H - He) / (H * H * H); };
-    auto closes = [&](double Xm, double* load) {  // p(X_e) for a meniscus at X_m, and the load
-        const int N = 400000;
-        const double dX = (Xe - Xm) / N;
-        double p = 0.0, I = 0.0, f0 = integrand(Xm);
-        for (int i = 0; i < N; ++i) {
-            const double f1 = integrand(Xm + (i + 1) * dX), pn = p + 0.5 * (f0 + f1) * dX;
-            I += 0.5 * (p + pn) * dX;
-            p = pn;
-            f0 = f1;
-        }
-        if (load) *load = 24.0 * I;
-        return p;
-    };
+    // p(X_e) for a meniscus at X_m, and the load.
+    auto closes = [&](double Xm, double* load) { return parabolaPressure(Xm, Xe, He, 400000, load); };
     double lo = -10.0, hi = -Xe;
     for (int it = 0; it < 60; ++it) (closes(0.5 * (lo + hi), nullptr) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
     const double Xm = 0.5 * (lo + hi);
