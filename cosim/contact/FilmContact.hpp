@@ -13,6 +13,7 @@
 // and the whole iteration are the master's. Every contact keeps its own grid, solver, surface
 // mappings and history (ContactState); a contact is a new class, never an edit of the step.
 
+#include "cosim/contact/ContactColumns.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
 #include "lube/FilmIntegrals.hpp"
 
@@ -20,6 +21,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace flexehd::cosim {
 
@@ -124,6 +126,12 @@ public:
     /// The resultant mapped onto the flexible piston against the film's normal force:
     /// worstDiff = max |mapped − film| (N), largestForce = max |film| (N) over the calls.
     virtual void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const = 0;
+
+    /// The columns this contact adds to history.csv after the master's, with their summary.json
+    /// figures (ContactColumns.hpp); none by default. Fixed for the contact's life.
+    virtual std::vector<ContactColumn> columns() const { return {}; }
+    /// The values of columns() at an accepted iterate, appended to `values` in their order.
+    virtual void columnValues(const ContactIterate& /*it*/, std::vector<double>& /*values*/) const {}
 };
 
 }  // namespace flexehd::cosim

@@ -66,6 +66,7 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
     auto skirt = std::make_unique<SkirtContact>(c, [this](double deg) { return linerOffset(deg); });
     skirt_ = skirt.get();
     contacts_.push_back(std::move(skirt));
+    columnCounts_.push_back(skirt_->columns().size());
     // The bodies the contacts' surfaces share, read with the skirt's.
     if (skirt_->piston()) {
         pistonBody_ = skirt_->piston()->flexibleBody();
@@ -93,12 +94,30 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
 PistonSimulation::~PistonSimulation() = default;
 
 void PistonSimulation::addContact(std::unique_ptr<FilmContact> contact) {
+    columnCounts_.push_back(contact->columns().size());
     contacts_.push_back(std::move(contact));
     stepper_->contactsChanged();
 }
 
 double PistonSimulation::linerOffset(double crankDeg) const {
     return -case_.engine.pinTdcDepth - (kin_.tdcPosition() - kin_.at(crankDeg).position);
+}
+
+std::vector<ContactColumn> PistonSimulation::contactColumns() const {
+    std::vector<ContactColumn> all;
+    for (const auto& contact : contacts_)
+        for (ContactColumn& c : contact->columns()) all.push_back(std::move(c));
+    return all;
+}
+
+void PistonSimulation::contactRecord(const StepEvaluation& ev, StepRecord& r) const {
+    for (std::size_t c = 0; c < contacts_.size(); ++c) {
+        const std::size_t before = r.contactValues.size();
+        contacts_[c]->columnValues(ev.films[c], r.contactValues);
+        if (r.contactValues.size() - before != columnCounts_[c])
+            throw std::logic_error(fmt::format("film contact {} gave {} column values for its {} columns", c,
+                                               r.contactValues.size() - before, columnCounts_[c]));
+    }
 }
 
 ClearanceRange PistonSimulation::centredClearance(double crankDeg) const {
@@ -139,6 +158,7 @@ StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev
                 r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(f.hTotal[k] - f.hRigid[k]));
     }
     if (f.fraction.size()) oilRecord(s, f, r);
+    contactRecord(ev, r);
     r.couplingIterations = iterations;
     r.stepDeg = stepDeg;
     return r;

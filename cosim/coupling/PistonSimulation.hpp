@@ -128,6 +128,9 @@ public:
     const FlexibleSurface* liner() const { return skirt_->liner(); }
     /// Bore distortion and thermal terms of the film thickness (null when the case has none).
     const ClearanceTerms* clearance() const { return skirt_->clearance(); }
+    /// The contacts' own history.csv columns and their summary figures, in contact order
+    /// (StepRecord::contactValues holds their values).
+    std::vector<ContactColumn> contactColumns() const;
     /// Liner-frame z of the piston frame's origin at the crank angle.
     double linerOffset(double crankDeg) const;
     /// The centred, undeformed film thickness at the crank angle's piston position (see
@@ -151,6 +154,8 @@ private:
     void cycleOil(const std::vector<StepRecord>& cycle);
     /// The oil columns of a record from the skirt's mass-conserving film.
     void oilRecord(const StepState& s, const ContactIterate& f, StepRecord& r) const;
+    /// The contacts' own column values of a record.
+    void contactRecord(const StepEvaluation& ev, StepRecord& r) const;
     /// The next step: dtDeg, shortened to land on the next snapshot angle or the cycle's end.
     double plannedStep(double crankDeg, double dtDeg, double cycleStart, double cycleEnd, bool& atSnapshot) const;
     /// The local error estimate of the step s → n in units of its tolerance.
@@ -176,6 +181,7 @@ private:
     // snapshots' film columns are its).
     std::vector<std::unique_ptr<FilmContact>> contacts_;
     SkirtContact* skirt_ = nullptr;
+    std::vector<std::size_t> columnCounts_;  // of each contact's own columns
     // The flexible bodies (null: rigid), shared with the contacts' surfaces.
     std::shared_ptr<const FlexibleBody> pistonBody_, linerBody_;
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner

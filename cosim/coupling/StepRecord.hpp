@@ -3,6 +3,8 @@
 // (docs/results-format.md). Signs follow docs/dynamics.md: forces act ON THE PISTON, in the
 // cylinder frame (x major thrust side, z towards the head); moments about the pin axis, +y.
 
+#include <vector>
+
 namespace flexehd::cosim {
 
 struct StepRecord {
@@ -44,6 +46,9 @@ struct StepRecord {
     double replenishedOil = 0.0;  ///< m³, added to the liner by the replenishment since the start (< 0: removed)
     int couplingIterations = 0;     ///< film solves in this step (coupling + Newton)
     double stepDeg = 0.0;           ///< °, crank-angle step that reached this point
+    /// The values of the further contacts' own columns (FilmContact::columns, in contact order;
+    /// PistonSimulation::contactColumns names them)
+    std::vector<double> contactValues;
 };
 
 }  // namespace flexehd::cosim

@@ -1,5 +1,6 @@
 #include "cosim/results/HistoryWriter.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <iterator>
@@ -103,8 +104,17 @@ const std::vector<std::string>& HistoryWriter::columns(bool oil) {
     return oil ? all : base;
 }
 
-HistoryWriter::HistoryWriter(const std::string& path, bool oilColumns)
-    : path_(path), out_(path, std::ios::out | std::ios::trunc), oil_(oilColumns) {
+HistoryWriter::HistoryWriter(const std::string& path, bool oilColumns, std::vector<std::string> contactColumns)
+    : path_(path), oil_(oilColumns), contactColumns_(std::move(contactColumns)) {
+    std::vector<std::string> names = columns(oil_);
+    for (const std::string& name : contactColumns_) {
+        if (name.empty() || name.find_first_of(", \t\r\n") != std::string::npos)
+            throw std::invalid_argument("history column '" + name + "': a column name is not empty and has no comma or space");
+        if (std::find(names.begin(), names.end(), name) != names.end())
+            throw std::invalid_argument("history column '" + name + "' is there twice");
+        names.push_back(name);
+    }
+    out_.open(path, std::ios::out | std::ios::trunc);
     if (!out_) throw std::runtime_error("cannot open '" + path + "' for writing");
     // The column names first, then the comments: numpy.genfromtxt(names=True) takes its names
     // from the first line and skips '#' lines after it, pandas.read_csv(comment='#') skips them.
@@ -114,6 +124,7 @@ HistoryWriter::HistoryWriter(const std::string& path, bool oilColumns)
         if (c) header += ',';
         header += table()[c].name;
     }
+    for (const std::string& name : contactColumns_) header += ',' + name;
     header += '\n';
     header += kComments;
     out_ << header;
@@ -127,6 +138,14 @@ void HistoryWriter::append(const StepRecord& r) {
             throw std::runtime_error(fmt::format("'{}': column '{}' is {} at crank angle {:.9g}° (cycle {}); "
                                                  "history rows must be finite",
                                                  path_, c.name, r.*c.real, r.crankDeg, r.cycle));
+    if (r.contactValues.size() != contactColumns_.size())
+        throw std::logic_error(fmt::format("'{}': a record with {} contact values for {} contact columns", path_,
+                                           r.contactValues.size(), contactColumns_.size()));
+    for (std::size_t k = 0; k < contactColumns_.size(); ++k)
+        if (!std::isfinite(r.contactValues[k]))
+            throw std::runtime_error(fmt::format("'{}': column '{}' is {} at crank angle {:.9g}° (cycle {}); "
+                                                 "history rows must be finite",
+                                                 path_, contactColumns_[k], r.contactValues[k], r.crankDeg, r.cycle));
     std::string line;
     line.reserve(320);
     auto out = std::back_inserter(line);
@@ -139,6 +158,7 @@ void HistoryWriter::append(const StepRecord& r) {
         else
             fmt::format_to(out, "{}", r.*c.integer);
     }
+    for (double v : r.contactValues) fmt::format_to(out, ",{:.{}g}", v, kSignificantDigits);
     line += '\n';
     out_.write(line.data(), static_cast<std::streamsize>(line.size()));
     if (!out_.flush()) throw std::runtime_error("error writing '" + path_ + "'");

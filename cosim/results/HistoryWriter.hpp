@@ -20,11 +20,16 @@ public:
     /// Creates (or truncates) `path` and writes the comment and header lines.
     /// Throws std::runtime_error naming the file if it cannot be written.
     /// oilColumns: the mass-conserving film's oil columns too (oil_in_m3_per_s … liner_oil_m3).
-    explicit HistoryWriter(const std::string& path, bool oilColumns = false);
+    /// contactColumns: the further contacts' own columns (PistonSimulation::contactColumns), after
+    /// step_deg, their values StepRecord::contactValues; std::invalid_argument for an empty name,
+    /// one with a comma or space, or one that repeats a column.
+    explicit HistoryWriter(const std::string& path, bool oilColumns = false,
+                           std::vector<std::string> contactColumns = {});
 
     /// Writes one line and flushes it. Throws std::runtime_error naming the column and the
     /// crank angle if a value is NaN or Inf (nothing is written then), or naming the file
-    /// on an I/O error.
+    /// on an I/O error; std::logic_error when the record's contact values do not match the
+    /// contact columns.
     void append(const StepRecord& record);
 
     /// Column names of the header line, in file order.
@@ -33,7 +38,7 @@ public:
     static constexpr int kSignificantDigits = 9;
 
     /// Reads a history file: '#' and blank lines are skipped, columns are matched by their
-    /// header name (order free, unknown columns ignored, a missing one is an error but for the
+    /// header name (order free, unknown columns — the further contacts' among them — ignored, a missing one is an error but for the
     /// oil columns, 0 when absent). A last
     /// line without its terminating newline is the partial line of a run killed while
     /// writing: it is dropped (and `*partialLastLine` set when given). Any other malformed
@@ -44,6 +49,7 @@ private:
     std::string path_;
     std::ofstream out_;
     bool oil_;
+    std::vector<std::string> contactColumns_;
 };
 
 }  // namespace flexehd::cosim

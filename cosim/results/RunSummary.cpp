@@ -5,6 +5,7 @@
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 
 #include "cosim/results/CycleMetrics.hpp"
 
@@ -128,6 +129,36 @@ Json::json_pointer pointer(const std::string& dotted) {
     return Json::json_pointer(p);
 }
 
+// A figure of column k of the records' contact values over the cycle (at least two records).
+double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleStatistic statistic) {
+    double least = cycle.front().contactValues[k], largest = least, integral = 0.0;
+    for (std::size_t i = 1; i < cycle.size(); ++i) {
+        const double v = cycle[i].contactValues[k];
+        least = std::min(least, v);
+        largest = std::max(largest, v);
+        integral += 0.5 * (v + cycle[i - 1].contactValues[k]) * (cycle[i].time - cycle[i - 1].time);
+    }
+    const double duration = cycle.back().time - cycle.front().time;
+    switch (statistic) {
+        case CycleStatistic::Minimum: return least;
+        case CycleStatistic::Maximum: return largest;
+        case CycleStatistic::Mean: return duration > 0.0 ? integral / duration : cycle.front().contactValues[k];
+    }
+    return 0.0;
+}
+
+// The further contacts' figures (ContactColumns.hpp) of the last cycle, when it has two records.
+void addContactFigures(const RunSummaryInput& in, Json& d) {
+    if (in.cycle.size() < 2) return;
+    const std::vector<ContactColumn> columns = in.sim.contactColumns();
+    for (std::size_t k = 0; k < columns.size(); ++k)
+        for (const ColumnFigure& f : columns[k].figures) {
+            if (d.contains(pointer(f.key)))
+                throw std::logic_error("summary.json: the contact figure '" + f.key + "' repeats a key");
+            d[pointer(f.key)] = columnFigure(in.cycle, k, f.statistic);
+        }
+}
+
 }  // namespace
 
 nlohmann::json runSummary(const RunSummaryInput& in) {
@@ -143,6 +174,7 @@ nlohmann::json runSummary(const RunSummaryInput& in) {
         Json v = e.value(s);
         if (!v.is_null()) d[pointer(e.key)] = std::move(v);
     }
+    addContactFigures(in, d);
     return d;
 }
 

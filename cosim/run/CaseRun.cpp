@@ -128,9 +128,16 @@ void writeSummary(const std::string& dir, const nlohmann::json& doc) {
     fem::writeTextAtomically(dir + "/summary.json", doc.dump(2) + "\n");
 }
 
+// The names of the contacts' own history columns.
+std::vector<std::string> columnNames(const std::vector<ContactColumn>& columns) {
+    std::vector<std::string> names;
+    for (const ContactColumn& col : columns) names.push_back(col.name);
+    return names;
+}
+
 }  // namespace
 
-CaseRunResult runCase(const EngineCase& c, const RunLog& log) {
+CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<ContactBuilder>& contacts) {
     const fem::Stopwatch total;
     const std::string dir = c.output.directory;
     std::filesystem::create_directories(dir);
@@ -138,10 +145,12 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log) {
         say(log.info, fmt::format("removed {} unfinished .tmp file(s) that an interrupted run left in {}", stale, dir));
     say(log.info, describe(c));
     PistonSimulation sim(c);
+    for (const ContactBuilder& build : contacts) sim.addContact(build(c, sim));
     reportBodies(c, sim, log);
 
     double outputInRun = 0.0;  // output inside the step loop
-    HistoryWriter history(dir + "/history.csv", c.lubricant.cavitation == CavitationModel::MassConserving);
+    HistoryWriter history(dir + "/history.csv", c.lubricant.cavitation == CavitationModel::MassConserving,
+                          columnNames(sim.contactColumns()));
     FieldSeriesWriter fields(dir);
     SimulationCallbacks cb;
     cb.onStep = [&](const StepRecord& r) {

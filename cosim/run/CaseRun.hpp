@@ -4,11 +4,14 @@
 // directory (docs/results-format.md): history.csv line by line, the VTK series of the last
 // complete cycle, the bodies' mode shapes and summary.json.
 #include <functional>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "cosim/case/EngineCase.hpp"
+#include "cosim/contact/FilmContact.hpp"
 
 namespace flexehd::cosim {
 
@@ -25,9 +28,15 @@ struct CaseRunResult {
     double seconds = 0.0;    ///< wall-clock, the whole run
 };
 
+class PistonSimulation;
+
+/// A further film contact of the run beside the skirt's, built once the simulation is (it may ask
+/// it for the liner offset); its own columns go to history.csv and summary.json.
+using ContactBuilder = std::function<std::unique_ptr<FilmContact>(const EngineCase&, const PistonSimulation&)>;
+
 /// Runs `c` into c.output.directory (created; unfinished .tmp files of an earlier run removed).
 /// A failed run writes summary.json with status "failed" and its message, then throws
 /// std::runtime_error with the message and where the partial results are.
-CaseRunResult runCase(const EngineCase& c, const RunLog& log = {});
+CaseRunResult runCase(const EngineCase& c, const RunLog& log = {}, const std::vector<ContactBuilder>& contacts = {});
 
 }  // namespace flexehd::cosim

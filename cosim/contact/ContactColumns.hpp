@@ -1,0 +1,30 @@
+#pragma once
+// ContactColumns: the results a film contact adds to a run's outputs by itself (docs/results-format.md,
+// "Columns of further contacts"): columns of history.csv after the master's, each with the cycle
+// figures summary.json reports of it. The writers take the columns from the contacts; a new
+// contact's results need no edit of the master or of a writer.
+
+#include <string>
+#include <vector>
+
+namespace flexehd::cosim {
+
+/// How a cycle figure is formed from a column over the last cycle's records: its least or largest
+/// value, or its time mean (trapezoidal over the steps, as the skirt's mean friction power).
+enum class CycleStatistic { Minimum, Maximum, Mean };
+
+/// One figure of summary.json: its key (dotted for nested objects, with its unit, e.g.
+/// "band.friction_power_mean_w") and how it is formed.
+struct ColumnFigure {
+    std::string key;
+    CycleStatistic statistic = CycleStatistic::Mean;
+};
+
+/// One column of history.csv: its name (with its unit, e.g. "band_friction_power_w") and the
+/// summary figures of it.
+struct ContactColumn {
+    std::string name;
+    std::vector<ColumnFigure> figures;
+};
+
+}  // namespace flexehd::cosim
