@@ -1,7 +1,6 @@
 #include "cosim/coupling/PistonSimulation.hpp"
 
 #include "cosim/oil/LinerOilLayer.hpp"
-#include "cosim/wear/ArchardWear.hpp"
 
 #include "cosim/case/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
@@ -79,15 +78,6 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
     if (mp_ + ml_ > 0) requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, mp_ + ml_);
     stepper_ = std::make_unique<StepSolver>(case_, kin_, dyn_, pressure_, contacts_, pistonBody_, linerBody_,
                                             [this](double deg) { return linerOffset(deg); }, work_);
-    if (c.contact.pistonWearCoefficient > 0.0 || c.contact.linerWearCoefficient > 0.0) {
-        const lube::FilmGrid& g = skirt_->grid();  // the liner's reach: the skirt's edges over a revolution
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (int k = 0; k <= 1440; ++k) {
-            lo = std::min(lo, linerOffset(0.25 * k) + g.z(0));
-            hi = std::max(hi, linerOffset(0.25 * k) + g.z(g.nAxial() - 1));
-        }
-        wear_ = std::make_unique<ArchardWear>(g, c.contact.pistonWearCoefficient, c.contact.linerWearCoefficient, lo, hi);
-    }
     stats_.timings.setup = t0.seconds();
 }
 
@@ -183,39 +173,23 @@ void PistonSimulation::oilRecord(const StepState& s, const ContactIterate& f, St
     r.replenishedOil = st.oilBalance.replenished;
 }
 
-void PistonSimulation::afterAccepted(const StepState& s, const StepEvaluation& ev, double stepDeg, double& worstDiff,
-                                     double& largestForce) {
+void PistonSimulation::afterAccepted(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg,
+                                     double& worstDiff, double& largestForce) {
     if (mp_ > 0) checkLoadMapping(ev, worstDiff, largestForce);
-    if (wear_)
-        wear_->add(ev.films.front().pc, kin_.at(s.crankDeg).velocity, linerOffset(s.crankDeg),
-                   stepDeg * kin_.secondsPerDegree());
+    const AcceptedStep step{s, ev, cycle, stepDeg, stepDeg * kin_.secondsPerDegree()};
+    for (RunObserver* o : observers_) o->stepAccepted(step);
 }
 
-void PistonSimulation::cyclePeriodicity(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
-                                        const std::vector<StepRecord>& previous, const std::vector<double>& previousSince) {
+void PistonSimulation::cyclePeriodicity(int cycleNumber, const std::vector<StepRecord>& cycle,
+                                        const std::vector<double>& since, const std::vector<StepRecord>& previous,
+                                        const std::vector<double>& previousSince) {
     const TimeSpec& T = case_.time;
     if (case_.lubricant.cavitation == CavitationModel::MassConserving) cycleOil(cycle);
-    if (wear_) {
-        wear_->finishCycle();
-        wearSummary();
-    }
+    for (RunObserver* o : observers_) o->cycleEnded(cycleNumber);
     if (previous.empty()) return;  // this cycle vs the previous one
     stats_.periodicityError = periodicityError(cycle, since, previous, previousSince);
     stats_.periodic = stats_.periodicityError <= T.periodicityTolerance &&
                       (!stats_.oil || stats_.oilPeriodicityError <= T.oilPeriodicityTolerance);
-}
-
-void PistonSimulation::wearSummary() {
-    // The largest mean rates of the cycle's maps and where they are (docs/coupling.md §7).
-    const lube::FilmGrid& g = skirt_->grid();
-    Eigen::Index kp = 0, kl = 0;
-    stats_.wear = true;
-    stats_.pistonWearMax = wear_->pistonRate().maxCoeff(&kp) * 3600.0;
-    stats_.pistonWearZ = g.z(g.axialIndex(int(kp)));
-    stats_.pistonWearThetaDeg = g.theta(g.thetaIndex(int(kp))) * 180.0 / 3.14159265358979323846;
-    stats_.linerWearMax = wear_->linerRate().maxCoeff(&kl) * 3600.0;
-    stats_.linerWearDepth = -wear_->linerCellZ(int(kl) / g.nTheta());
-    stats_.linerWearThetaDeg = g.theta(int(kl) % g.nTheta()) * 180.0 / 3.14159265358979323846;
 }
 
 void PistonSimulation::cycleOil(const std::vector<StepRecord>& cycle) {
@@ -468,7 +442,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             stats_.minStepDeg = std::min(stats_.minStepDeg, step);
             prev = std::move(s);
             s = std::move(n);
-            afterAccepted(s, ev, step, worstMappingDiff, largestFilmForce);
+            afterAccepted(s, ev, cycle, step, worstMappingDiff, largestFilmForce);
             lastEv = ev;
             haveLast = true;
             StepRecord rec = record(s, ev, cycle, step, iterations);
@@ -486,7 +460,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             }
         }
         stats_.cycles = cycle;
-        cyclePeriodicity(cycleRecords, cycleSince, previousCycle, previousSince);
+        cyclePeriodicity(cycle, cycleRecords, cycleSince, previousCycle, previousSince);
         if (cb.progress)
             cb.progress(progress.cycleDoneLine(tRun.seconds(), previousCycle.empty() ? std::nullopt
                                                                                    : std::optional(stats_.periodicityError)));

@@ -18,6 +18,7 @@
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
 #include "cosim/contact/SkirtContact.hpp"
+#include "cosim/coupling/RunObserver.hpp"
 #include "cosim/coupling/StepRecord.hpp"
 #include "cosim/engine/CrankKinematics.hpp"
 #include "cosim/engine/CylinderPressure.hpp"
@@ -34,8 +35,6 @@
 #include <vector>
 
 namespace flexehd::cosim {
-
-class ArchardWear;
 
 class StepSolver;
 struct StepState;
@@ -77,11 +76,6 @@ struct RunStatistics {
     /// and the sides leaked over it (m³); `oil` false with the Reynolds condition.
     bool oil = false;
     double linerOil = 0.0, filmOil = 0.0, oilPeriodicityError = 0.0, replenishedOil = 0.0, leakedOil = 0.0;
-    /// Wear maps (contact.*_wear_coefficient > 0), the last cycle's largest mean wear rate (m/h) on
-    /// the skirt (at piston-frame z, θ) and on the liner (at its depth below the deck, θ).
-    bool wear = false;
-    double pistonWearMax = 0.0, pistonWearZ = 0.0, pistonWearThetaDeg = 0.0;
-    double linerWearMax = 0.0, linerWearDepth = 0.0, linerWearThetaDeg = 0.0;
     long steps = 0, rejectedSteps = 0, filmSolves = 0, jacobians = 0;
     long fallbackSolves = 0;        ///< film solves redone by the active-set solver (multigrid failed)
     long resolvedSteps = 0;         ///< steps ended by the resolution test of the coupled Newton (docs/coupling.md §1)
@@ -111,6 +105,9 @@ public:
     /// A further film contact of the piston, beside the skirt's (before run). Its modal loads and
     /// film changes use the same coordinates as the skirt's: the piston's, then the liner's.
     void addContact(std::unique_ptr<FilmContact> contact);
+    /// An observer of the run's accepted steps and cycle ends (before run; not owned, it must
+    /// outlive the run).
+    void addObserver(RunObserver& observer) { observers_.push_back(&observer); }
 
     /// Runs the cycles; records of the final cycle are returned. Throws std::runtime_error with a
     /// diagnosis when the step size falls below time.min_step_deg.
@@ -119,8 +116,6 @@ public:
 
     const RunStatistics& statistics() const { return stats_; }
     const SkirtFilm& film() const { return skirt_->film(); }
-    /// The wear-rate maps of the last complete cycle (null without wear coefficients).
-    const ArchardWear* wear() const { return wear_.get(); }
     const CrankKinematics& kinematics() const { return kin_; }
     const PistonDynamics& dynamics() const { return dyn_; }
     /// The flexible bodies seen from the skirt's grid (null when rigid).
@@ -141,15 +136,13 @@ private:
     StepRecord record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, int iterations) const;
     // The stages of run (PistonSimulation.cpp).
     StepState initialState(const SimulationCallbacks& cb) const;
-    /// After an accepted step: the load-mapping check and the wear maps' accumulation.
-    void afterAccepted(const StepState& s, const StepEvaluation& ev, double stepDeg, double& worstDiff,
+    /// After an accepted step: the load-mapping check and the observers.
+    void afterAccepted(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, double& worstDiff,
                        double& largestForce);
-    /// The cycle's periodicity against the previous one (motion, and the oil of a mass-conserving
-    /// film) into stats_; the wear maps' cycle ends.
-    void cyclePeriodicity(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
+    /// The cycle's end: the observers, and its periodicity against the previous one (motion, and
+    /// the oil of a mass-conserving film) into stats_.
+    void cyclePeriodicity(int cycleNumber, const std::vector<StepRecord>& cycle, const std::vector<double>& since,
                           const std::vector<StepRecord>& previous, const std::vector<double>& previousSince);
-    /// The wear maps' maxima into stats_.
-    void wearSummary();
     /// The last cycle's oil figures into stats_ (mass-conserving film).
     void cycleOil(const std::vector<StepRecord>& cycle);
     /// The oil columns of a record from the skirt's mass-conserving film.
@@ -187,7 +180,7 @@ private:
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
     WorkTally work_;       // the contacts' and the step's work, since construction
     std::unique_ptr<StepSolver> stepper_;
-    std::unique_ptr<ArchardWear> wear_;  // contact.*_wear_coefficient > 0
+    std::vector<RunObserver*> observers_;
     RunStatistics stats_;
 };
 

@@ -47,6 +47,9 @@ void addCentredClearance(std::vector<Entry>& table) {
                              }});
 }
 
+// The wear maxima are written once a cycle finished.
+bool wearDone(const Source& s) { return s.in.wear && s.in.wear->finished(); }
+
 const char* bodyModel(BodyModel m) { return m == BodyModel::Flexible ? "flexible" : "rigid"; }
 
 const std::vector<Entry>& entries() {
@@ -79,12 +82,12 @@ const std::vector<Entry>& entries() {
         {"periodic", [](const Source& s) { return Json(s.st().periodic); }},
         {"periodicity_error_m", [](const Source& s) { return Json(s.st().periodicityError); }},
         {"periodicity_tolerance_m", [](const Source& s) { return Json(s.in.c.time.periodicityTolerance); }},
-        {"wear.piston_rate_max_m_per_h", [](const Source& s) { return s.st().wear ? Json(s.st().pistonWearMax) : Json(); }},
-        {"wear.piston_max_z_m", [](const Source& s) { return s.st().wear ? Json(s.st().pistonWearZ) : Json(); }},
-        {"wear.piston_max_theta_deg", [](const Source& s) { return s.st().wear ? Json(s.st().pistonWearThetaDeg) : Json(); }},
-        {"wear.liner_rate_max_m_per_h", [](const Source& s) { return s.st().wear ? Json(s.st().linerWearMax) : Json(); }},
-        {"wear.liner_max_depth_m", [](const Source& s) { return s.st().wear ? Json(s.st().linerWearDepth) : Json(); }},
-        {"wear.liner_max_theta_deg", [](const Source& s) { return s.st().wear ? Json(s.st().linerWearThetaDeg) : Json(); }},
+        {"wear.piston_rate_max_m_per_h", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().pistonRate) : Json(); }},
+        {"wear.piston_max_z_m", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().pistonZ) : Json(); }},
+        {"wear.piston_max_theta_deg", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().pistonThetaDeg) : Json(); }},
+        {"wear.liner_rate_max_m_per_h", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().linerRate) : Json(); }},
+        {"wear.liner_max_depth_m", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().linerDepth) : Json(); }},
+        {"wear.liner_max_theta_deg", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().linerThetaDeg) : Json(); }},
         {"oil.liner_volume_m3", [](const Source& s) { return s.st().oil ? Json(s.st().linerOil) : Json(); }},
         {"oil.film_volume_m3", [](const Source& s) { return s.st().oil ? Json(s.st().filmOil) : Json(); }},
         {"oil.periodicity_error", [](const Source& s) { return s.st().oil ? Json(s.st().oilPeriodicityError) : Json(); }},

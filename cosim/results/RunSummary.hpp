@@ -11,6 +11,7 @@
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/coupling/StepRecord.hpp"
+#include "cosim/wear/SkirtWear.hpp"
 
 namespace flexehd::cosim {
 
@@ -23,6 +24,7 @@ struct RunSummaryInput {
     double outputSeconds = 0.0;            ///< s, output outside the step loop (mode shapes)
     double outputInRun = 0.0;              ///< s, output inside the step loop (history, snapshots)
     double totalSeconds = 0.0;             ///< s, the whole run
+    const SkirtWear* wear = nullptr;       ///< the wear maps (null: the case asks for none)
 };
 
 nlohmann::json runSummary(const RunSummaryInput& in);

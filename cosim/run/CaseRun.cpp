@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "cosim/results/WearMapWriter.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/results/RunSummary.hpp"
+#include "cosim/wear/SkirtWear.hpp"
 #include "fem/AtomicFile.hpp"
 #include "fem/Stopwatch.hpp"
 
@@ -146,6 +148,8 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     say(log.info, describe(c));
     PistonSimulation sim(c);
     for (const ContactBuilder& build : contacts) sim.addContact(build(c, sim));
+    std::optional<SkirtWear> wear;
+    if (SkirtWear::wanted(c)) sim.addObserver(wear.emplace(c, sim));
     reportBodies(c, sim, log);
 
     double outputInRun = 0.0;  // output inside the step loop
@@ -184,9 +188,10 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
         fields.discard();  // the unfinished cycle's snapshots; the last complete cycle's stay listed
     }
     if (cycle.empty() && status == "ok") status = "failed";
-    if (sim.wear() && sim.wear()->finished()) writeWearMaps(dir, sim.film().grid(), *sim.wear());  // the last whole cycle's
+    if (wear && wear->finished()) writeWearMaps(dir, sim.film().grid(), wear->maps());  // the last whole cycle's
     CaseRunResult result;
-    result.summary = runSummary({c, sim, cycle, status, message, outputSeconds, outputInRun, total.seconds()});
+    result.summary =
+        runSummary({c, sim, cycle, status, message, outputSeconds, outputInRun, total.seconds(), wear ? &*wear : nullptr});
     writeSummary(dir, result.summary);
     if (status != "ok") throw std::runtime_error(message + " (partial results in " + dir + ")");
     result.cycles = sim.statistics().cycles;
