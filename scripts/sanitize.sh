@@ -16,7 +16,8 @@ flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recove
 FLEXEHD_BUILD_DIR="$build" CMAKE_BUILD_TYPE=RelWithDebInfo bash "$root/scripts/build.sh" \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined"
+  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DFLEXEHD_TEST_TIMEOUT_SCALE=10  # the per-test budgets of tests/CMakeLists.txt, for the slower build
 # detect_leaks=0: Gmsh, VTK and Open MPI keep process-lifetime allocations that LeakSanitizer
 # would list; ASan's memory errors and UBSan's reports are what this run checks.
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=0:halt_on_error=1"

@@ -5,4 +5,5 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/install_deps.sh"
 bash "$root/scripts/build.sh"
 build="${FLEXEHD_BUILD_DIR:-$root/build}"
-ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+# Each test has its own TIMEOUT (tests/CMakeLists.txt); --timeout bounds those that have none.
+ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 600

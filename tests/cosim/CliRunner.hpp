@@ -4,6 +4,8 @@
 #include <unistd.h>
 #include <sys/wait.h>
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -19,11 +21,38 @@ struct CommandResult {
     std::string err;  ///< stderr
 };
 
-/// Runs `flexehd ARGS` through the shell (arguments must be shell-safe).
-inline CommandResult runFlexehd(const std::string& args) {
+/// The time a child process of a test may take by default: the test's own budget
+/// (FLEXEHD_TEST_TIMEOUT_S, its ctest TIMEOUT) less the 10 s grace of `timeout` and a margin, so
+/// that the child is stopped and the test says so before ctest stops the test.
+inline int defaultChildTimeout() {
+#ifdef FLEXEHD_TEST_TIMEOUT_S
+    return FLEXEHD_TEST_TIMEOUT_S > 30 ? FLEXEHD_TEST_TIMEOUT_S - 15 : 15;
+#else
+    return 120;
+#endif
+}
+
+/// `command` under coreutils `timeout`: SIGTERM after `seconds`, SIGKILL 10 s later if it is still
+/// running. `timeout` runs it in a process group of its own and signals the whole group, so the
+/// child's own children (a sweep's variants, mpirun's ranks) end with it.
+inline std::string timeLimited(const std::string& command, int seconds) {
+    return "timeout --kill-after=10s " + std::to_string(seconds) + " " + command;
+}
+
+/// Whether exit status `status` of a timeLimited command says that the limit stopped it (124:
+/// ended by SIGTERM, 137: by SIGKILL); if so, a test failure naming `what` and the limit.
+inline bool failedByTimeLimit(int status, const std::string& what, int seconds) {
+    if (status != 124 && status != 137) return false;
+    ADD_FAILURE() << what << " did not finish within " << seconds << " s (stopped, exit status " << status << ")";
+    return true;
+}
+
+/// Runs `flexehd ARGS` through the shell (arguments must be shell-safe), stopped after
+/// `timeoutSeconds` (a test failure then).
+inline CommandResult runFlexehd(const std::string& args, int timeoutSeconds = defaultChildTimeout()) {
     const auto dir = std::filesystem::temp_directory_path();
     const std::string errFile = (dir / ("flexehd_cli_err_" + std::to_string(::getpid()))).string();
-    const std::string cmd = std::string(FLEXEHD_BINARY) + " " + args + " 2>" + errFile;
+    const std::string cmd = timeLimited(std::string(FLEXEHD_BINARY) + " " + args, timeoutSeconds) + " 2>" + errFile;
     CommandResult r;
     FILE* p = popen(cmd.c_str(), "r");
     std::array<char, 4096> buf;
@@ -32,6 +61,7 @@ inline CommandResult runFlexehd(const std::string& args) {
     std::ifstream e(errFile);
     r.err.assign(std::istreambuf_iterator<char>(e), {});
     std::filesystem::remove(errFile);
+    failedByTimeLimit(r.status, "flexehd " + args, timeoutSeconds);
     return r;
 }
 

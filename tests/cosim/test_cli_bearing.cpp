@@ -96,8 +96,8 @@ TEST(CliBearing, ShortBearingOcvirk) {
 // S_1 = [0.0188 0.0446 0.121 0.264 0.631 1.33], hoc_1 = [0.1 0.2 0.4 0.6 0.8 0.9],
 // Rfc_1 = [1.05 1.70 3.2 5.79 12.8 26.4]): S = 0.121, (R/c)f = 3.2 (given to two digits there).
 // Only these two are asserted. The rest of the row as recalled from Shigley's Mechanical
-// Engineering Design (φ = 50.58°, Q/(RcNL) = 4.33, Qs/Q = 0.680, P/p_max = 0.415) could not be
-// checked against a published source in this session and is not asserted; the command gives
+// Engineering Design (φ = 50.58°, Q/(RcNL) = 4.33, Qs/Q = 0.680, P/p_max = 0.415) is not
+// checked against a published source here and is not asserted; the command gives
 // 50.53°, 4.329, 0.668 and 0.4145 at 256×65. S and P/p_max are checked against their definitions
 // in SommerfeldNumberDefinition, friction and flow against the long-bearing closed forms in
 // LongFullSommerfeldLoadFrictionAndFlow.

@@ -103,14 +103,18 @@ TEST(CliModes, MissingMeshAndBadArgumentsFail) {
 TEST(CliModes, TooManyModesForTheMemoryAreRefused) {
     // An address-space limit leaves no room for AddressSanitizer's shadow memory.
     if (std::getenv("FLEXEHD_SANITIZE")) GTEST_SKIP() << "address-space limit under AddressSanitizer";
-    const std::string cmd = "sh -c 'ulimit -v 1000000 && exec " + std::string(FLEXEHD_BINARY) + " modes --mesh " +
-                            dataPath("beam.geo") + kSteel + " --count 3000' 2>&1";
+    const int limit = flexehd::test::defaultChildTimeout();
+    const std::string cmd = flexehd::test::timeLimited("sh -c 'ulimit -v 1000000 && exec " + std::string(FLEXEHD_BINARY) +
+                                                           " modes --mesh " + dataPath("beam.geo") + kSteel +
+                                                           " --count 3000'", limit) + " 2>&1";
     FILE* p = popen(cmd.c_str(), "r");
     ASSERT_NE(p, nullptr);
     std::string out;
     std::array<char, 4096> buf;
     while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-    EXPECT_EQ(WEXITSTATUS(pclose(p)), 1) << out;
+    const int status = WEXITSTATUS(pclose(p));
+    flexehd::test::failedByTimeLimit(status, "flexehd modes --count 3000 (address space 1 GB)", limit);
+    EXPECT_EQ(status, 1) << out;
     EXPECT_THAT(out, HasSubstr("flexehd: error: --count 3000: the Lanczos basis for 3000 modes of "));
     EXPECT_THAT(out, HasSubstr("are available: ask for fewer modes"));
 }

@@ -215,14 +215,17 @@ TEST(CliRun, GridTooLargeForTheMemoryIsRefusedBeforeItIsAllocated) {
     // An address-space limit leaves no room for AddressSanitizer's shadow memory.
     if (std::getenv("FLEXEHD_SANITIZE")) GTEST_SKIP() << "address-space limit under AddressSanitizer";
     const std::string big = withGrid("3000", "3000");
-    const std::string cmd = "sh -c 'ulimit -v 2000000 && exec " + std::string(FLEXEHD_BINARY) + " run " + big +
-                            " --quiet' 2>&1";
+    const int limit = flexehd::test::defaultChildTimeout();
+    const std::string cmd = flexehd::test::timeLimited("sh -c 'ulimit -v 2000000 && exec " + std::string(FLEXEHD_BINARY) +
+                                                           " run " + big + " --quiet'", limit) + " 2>&1";
     FILE* p = popen(cmd.c_str(), "r");
     ASSERT_NE(p, nullptr);
     std::string out;
     std::array<char, 4096> buf;
     while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-    EXPECT_EQ(WEXITSTATUS(pclose(p)), 1) << out;
+    const int status = WEXITSTATUS(pclose(p));
+    flexehd::test::failedByTimeLimit(status, "flexehd run " + big + " (address space 2 GB)", limit);
+    EXPECT_EQ(status, 1) << out;
     EXPECT_NE(out.find(": grid: the film grid of 3000 × 3000 = 9000000 nodes needs at least 4.5 GB of memory; 2.0 GB "
                        "are available"),
               std::string::npos)

@@ -86,10 +86,13 @@ std::vector<std::string> csvWithoutTimes(const fs::path& p) {
     return lines;
 }
 
-CommandResult runMpi(int ranks, const std::string& args) {
+// mpirun -n RANKS flexehd ARGS, stopped after `timeoutSeconds` with its ranks (a test failure then).
+CommandResult runMpi(int ranks, const std::string& args, int timeoutSeconds = flexehd::test::defaultChildTimeout()) {
     // Open MPI refuses root unless told; the container runs tests as root.
-    const std::string cmd = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") + FLEXEHD_MPIEXEC +
-                            " -n " + std::to_string(ranks) + " --oversubscribe " + FLEXEHD_BINARY + " " + args;
+    const std::string cmd = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") +
+                            flexehd::test::timeLimited(std::string(FLEXEHD_MPIEXEC) + " -n " + std::to_string(ranks) +
+                                                           " --oversubscribe " + FLEXEHD_BINARY + " " + args,
+                                                       timeoutSeconds);
     const auto err = fs::temp_directory_path() / ("flexehd_mpi_err_" + std::to_string(::getpid()));
     CommandResult r;
     FILE* p = popen((cmd + " 2>" + err.string()).c_str(), "r");
@@ -98,6 +101,7 @@ CommandResult runMpi(int ranks, const std::string& args) {
     r.status = WEXITSTATUS(pclose(p));
     r.err = readText(err);
     fs::remove(err);
+    flexehd::test::failedByTimeLimit(r.status, "mpirun -n " + std::to_string(ranks) + " flexehd " + args, timeoutSeconds);
     return r;
 }
 
@@ -335,6 +339,7 @@ TEST(CliSweep, AVariantEndsWhenTheSweepIsKilled) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
         child = childOf(sweep);
     }
+    if (!child) ::kill(sweep, SIGKILL);  // its 200 cycles would outlast the test
     ASSERT_NE(child, 0) << "the sweep started no variant";
     std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the variant is running
     ::kill(sweep, SIGKILL);

@@ -197,7 +197,7 @@ TEST(CraigBampton, InterfaceThatCannotHoldTheBodyIsReported) {
                 testing::HasSubstr("do not hold the body"));
 }
 
-// Review findings: patterns that load nothing are dropped, not fatal; rigid-body flags do
+// Degenerate input: patterns that load nothing are dropped, not fatal; rigid-body flags do
 // not depend on how many (or how stiff) basis vectors were computed; collinear RBE2 sets
 // are refused with a reason.
 TEST(CraigBampton, DegeneratePatternsAreDroppedAndRigidModesCountedRight) {
