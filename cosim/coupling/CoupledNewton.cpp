@@ -25,6 +25,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -115,19 +116,12 @@ bool StepSolver::formCoupledJacobian(const StepContext& ctx, const Eigen::Vector
     // The (e, β) columns by differences of full evaluations (film solve and modal response): a
     // rigid motion moves the cavitation boundary, whose effect the held-set linearisation misses —
     // at high sliding and squeeze speeds enough to stall Newton (docs/coupling.md §1).
-    const double fdScale = 1e-5;  // of the clearance (tilt: of the clearance over the reach)
+    const Eigen::Vector2d delta = 1e-5 * tol;  // of the clearance (tilt: of the clearance over the reach)
+    std::array<StepEvaluation, 2> moved;
+    if (!perturbedMotion(ctx, x, y, delta, true, moved, filmSolves)) return false;
     for (int i = 0; i < 2; ++i) {
-        Eigen::Vector2d xp = x;
-        xp[i] += fdScale * tol[i];
-        StepEvaluation e2;
-        try {
-            e2 = evaluate(ctx, xp, y, true);
-        } catch (const std::runtime_error&) {
-            return false;
-        }
-        ++filmSolves;
-        J.block<2, 1>(0, i) = (e2.residual - ev.residual) / (fdScale * tol[i]);
-        J.col(i).tail(mp_ + ml_) = (ev.Hy - e2.Hy) / (fdScale * tol[i]);
+        J.block<2, 1>(0, i) = (moved[i].residual - ev.residual) / delta[i];
+        J.col(i).tail(mp_ + ml_) = (ev.Hy - moved[i].Hy) / delta[i];
     }
     newtonInverse_ = J.partialPivLu().inverse();
     // Unknowns in units of the film-thickness change they cause (Broyden norm, merit, damping).

@@ -4,6 +4,7 @@
 // with the partitioned, accelerated modal fixed point — until the motion and the coupling
 // residual meet their tolerances.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -211,19 +212,26 @@ bool StepSolver::motionJacobian(const StepContext& ctx, const StepTolerances& to
                                       const Eigen::VectorXd& y, const StepEvaluation& ev, int& iterations) {
     // Finite differences of the motion residual (modal coordinates frozen).
     const Eigen::Vector2d delta = 1e-5 * tol.motion;
+    std::array<StepEvaluation, 2> moved;
+    if (!perturbedMotion(ctx, x, y, delta, false, moved, iterations)) return false;
+    for (int i = 0; i < 2; ++i) jacobian_.col(i) = (moved[i].residual - ev.residual) / delta[i];
+    ++work_.jacobians;
+    return true;
+}
+
+bool StepSolver::perturbedMotion(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                                 const Eigen::Vector2d& delta, bool structure, std::array<StepEvaluation, 2>& moved,
+                                 int& solves) {
     for (int i = 0; i < 2; ++i) {
         Eigen::Vector2d xp = x;
         xp[i] += delta[i];
-        StepEvaluation e2;
         try {
-            e2 = evaluate(ctx, xp, y, false);
+            moved[i] = evaluate(ctx, xp, y, structure);
         } catch (const std::runtime_error&) {
             return false;
         }
-        ++iterations;
-        jacobian_.col(i) = (e2.residual - ev.residual) / delta[i];
+        ++solves;
     }
-    ++work_.jacobians;
     return true;
 }
 

@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -109,6 +110,12 @@ private:
     /// The coupled Newton iteration has converged to the resolution of its unknowns.
     bool resolvedToTheUnknownsResolution(const StepTolerances& tol, const StepEvaluation& ev, double couplingRes,
                                          const Eigen::VectorXd& dz) const;
+    /// The step's evaluations at x + δ_i e_i (i = e, β; y held; with the bodies' response when
+    /// `structure`), each counted in `solves`: the finite-difference columns of the motion unknowns
+    /// for both schemes. False if a film solve failed.
+    bool perturbedMotion(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                         const Eigen::Vector2d& delta, bool structure, std::array<StepEvaluation, 2>& moved,
+                         int& solves);
     /// The finite-difference Jacobian of the motion residual (modal coordinates frozen).
     bool motionJacobian(const StepContext& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
                         const Eigen::VectorXd& y, const StepEvaluation& ev, int& iterations);
