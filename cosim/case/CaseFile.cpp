@@ -104,7 +104,7 @@ void readPiston(const YamlSection& s, const EngineSpec& engine, PistonSpec& p) {
             const std::string rowPath = fmt::format("{}[{}]", path, i);
             double z = 0.0, drop = 0.0;
             if (!row.IsSequence() || row.size() != 2 || !row[0].IsScalar() || !row[1].IsScalar() ||
-                !parseDouble(row[0].Scalar(), z) || !parseDouble(row[1].Scalar(), drop))
+                !parseNumber(row[0].Scalar(), z) || !parseNumber(row[1].Scalar(), drop))
                 s.source().fail(rowPath, row,
                      "expected a pair [z, drop] of numbers in m, got " + describe(row) +
                          (row.IsSequence() ? fmt::format(" with {} entries", row.size()) : ""));
@@ -163,7 +163,7 @@ void readOilSupply(const YamlSection& lubricant, LubricantSpec& l) {
             const std::string rowPath = fmt::format("{}[{}]", s.keyPath("thickness_table"), i);
             double depth = 0.0, t = 0.0;
             if (!row.IsSequence() || row.size() != 2 || !row[0].IsScalar() || !row[1].IsScalar() ||
-                !parseDouble(row[0].Scalar(), depth) || !parseDouble(row[1].Scalar(), t))
+                !parseNumber(row[0].Scalar(), depth) || !parseNumber(row[1].Scalar(), t))
                 s.source().fail(rowPath, row, "expected a pair [depth, thickness] of numbers in m, got " + describe(row));
             if (!o.layer.empty() && !(depth > o.layer.back().depth))
                 s.source().fail(rowPath, row,
@@ -362,7 +362,7 @@ BodySpec readBody(const YamlSection& bodies, const std::string& key, const std::
     const std::string path = bodies.keyPath(key);
     const YamlSource& ctx = bodies.source();
     if (n.IsScalar()) {
-        const std::string v = trim(n.Scalar());
+        const std::string v(trim(n.Scalar()));
         if (v == "rigid") return b;
         ctx.fail(path, n,
              fmt::format("expected 'rigid' or a mapping {{file: ..., surface: ..., interface: ...}} for a flexible "
@@ -396,13 +396,13 @@ BodySpec readBody(const YamlSection& bodies, const std::string& key, const std::
         const std::string expected = "an interface name or a list of them";
         b.interfaces.clear();
         if (itf.IsScalar() && !trim(itf.Scalar()).empty()) {
-            b.interfaces.push_back(trim(itf.Scalar()));
+            b.interfaces.emplace_back(trim(itf.Scalar()));
         } else if (itf.IsSequence() && itf.size() > 0) {
             for (std::size_t i = 0; i < itf.size(); ++i) {
                 if (!itf[i].IsScalar() || trim(itf[i].Scalar()).empty())
                     ctx.fail(fmt::format("{}[{}]", s.keyPath("interface"), i), itf[i],
                          "expected an interface name, got " + describe(itf[i]));
-                const std::string name = trim(itf[i].Scalar());
+                const std::string name(trim(itf[i].Scalar()));
                 if (std::find(b.interfaces.begin(), b.interfaces.end(), name) != b.interfaces.end())
                     ctx.fail(fmt::format("{}[{}]", s.keyPath("interface"), i), itf[i], "interface listed twice");
                 b.interfaces.push_back(name);
@@ -424,36 +424,20 @@ std::vector<PressureSample> readPressureTable(const std::string& path) {
     std::vector<PressureSample> samples;
     std::vector<int> lines;
     std::istringstream in(content);
-    std::string raw;
-    int lineNo = 0;
+    DataLines table(in);
     bool headerAllowed = true;
-    while (std::getline(in, raw)) {
-        ++lineNo;
-        const std::string line = trim(raw);
-        if (line.empty() || line[0] == '#') continue;
-        std::vector<std::string> fields;
-        const char sep = line.find(',') != std::string::npos ? ',' : line.find(';') != std::string::npos ? ';' : ' ';
-        if (sep == ' ') {
-            std::istringstream ws(line);
-            std::string f;
-            while (ws >> f) fields.push_back(f);
-        } else {
-            std::size_t start = 0;
-            for (;;) {
-                const auto pos = line.find(sep, start);
-                fields.push_back(trim(line.substr(start, pos == std::string::npos ? std::string::npos : pos - start)));
-                if (pos == std::string::npos) break;
-                start = pos + 1;
-            }
-        }
+    while (table.next()) {
+        const int lineNo = table.number();
+        const std::string_view line = table.text();
+        const std::vector<std::string_view> fields = splitFields(line);
         double angle = 0.0, pressure = 0.0;
-        const bool firstIsNumber = !fields.empty() && parseDouble(fields[0], angle);
+        const bool firstIsNumber = !fields.empty() && parseNumber(fields[0], angle);
         if (headerAllowed && !firstIsNumber) {  // a header line
             headerAllowed = false;
             continue;
         }
         headerAllowed = false;
-        if (fields.size() != 2 || !firstIsNumber || !parseDouble(fields[1], pressure))
+        if (fields.size() != 2 || !firstIsNumber || !parseNumber(fields[1], pressure))
             throw std::runtime_error(
                 fmt::format("{}:{}: expected two numbers, crank angle in deg and absolute pressure in Pa, got '{}'",
                             path, lineNo, line));

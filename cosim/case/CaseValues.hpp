@@ -7,14 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "cosim/io/TextTable.hpp"
 #include "cosim/io/YamlSection.hpp"
 
 namespace flexehd::cosim::casefile {
 
-std::string trim(const std::string& s);
-/// A whole-text finite number (a leading '+' allowed).
-bool parseDouble(const std::string& text, double& value);
-bool parseInt(const std::string& text, long long& value);
 /// "a " or "an " before the phrase.
 std::string withArticle(const std::string& phrase);
 
