@@ -3,7 +3,7 @@
 #include "cosim/oil/LinerOilLayer.hpp"
 #include "cosim/wear/ArchardWear.hpp"
 
-#include "cosim/case/MemoryBudget.hpp"
+#include "cosim/coupling/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
 
 #include "cosim/clearance/ClearanceTerms.hpp"

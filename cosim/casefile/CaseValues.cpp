@@ -1,4 +1,4 @@
-#include "cosim/case/CaseValues.hpp"
+#include "cosim/casefile/CaseValues.hpp"
 
 #include <algorithm>
 #include <cctype>
