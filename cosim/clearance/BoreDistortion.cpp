@@ -1,11 +1,11 @@
 #include "cosim/clearance/BoreDistortion.hpp"
 
+#include "cosim/io/TextTable.hpp"
 #include "cosim/io/VtuPointField.hpp"
 
 #include <Eigen/QR>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -13,7 +13,6 @@
 #include <limits>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 namespace flexehd::cosim {
@@ -22,42 +21,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string::npos) return "";
-    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
-std::string lower(std::string s) {
-    for (auto& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
-bool parseNumber(const std::string& text, double& v) {
-    std::string t = trim(text);
-    if (!t.empty() && t[0] == '+') t.erase(0, 1);
-    if (t.empty()) return false;
-    const auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    return ec == std::errc() && p == t.data() + t.size() && std::isfinite(v);
-}
-
-/// Fields of a CSV line: comma-, semicolon- or blank-separated.
-std::vector<std::string> fields(const std::string& line) {
-    std::vector<std::string> out;
-    const char sep = line.find(',') != std::string::npos ? ',' : line.find(';') != std::string::npos ? ';' : ' ';
-    if (sep == ' ') {
-        std::istringstream ws(line);
-        std::string f;
-        while (ws >> f) out.push_back(f);
-        return out;
-    }
-    std::size_t start = 0;
-    for (;;) {
-        const auto pos = line.find(sep, start);
-        out.push_back(trim(line.substr(start, pos == std::string::npos ? std::string::npos : pos - start)));
-        if (pos == std::string::npos) break;
-        start = pos + 1;
-    }
+std::string lower(std::string_view s) {
+    std::string out(s);
+    for (auto& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
     return out;
 }
 
@@ -76,16 +42,13 @@ Table readTable(const std::string& path, const std::string& headerHelp,
     std::ifstream in(path);
     if (!in) throw std::runtime_error(path + ": no such file or not readable");
     Table t;
-    std::string raw;
-    int lineNo = 0;
     bool header = false;
     std::vector<std::size_t> numeric;  // parsed columns
-    while (std::getline(in, raw)) {
-        ++lineNo;
-        if (lineNo == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);  // UTF-8 byte-order mark
-        const std::string line = trim(raw);
-        if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> f = fields(line);
+    DataLines lines(in, /*skipByteOrderMark=*/true);
+    while (lines.next()) {
+        const int lineNo = lines.number();
+        const std::string_view line = lines.text();
+        const std::vector<std::string_view> f = splitFields(line);
         if (!header) {
             header = true;
             double dummy = 0.0;
@@ -93,7 +56,7 @@ Table readTable(const std::string& path, const std::string& headerHelp,
                 throw std::runtime_error(fmt::format("{}:{}: the first line must be a header naming the columns: {}",
                                                      path, lineNo, headerHelp));
             for (std::size_t c = 0; c < f.size(); ++c) {
-                const std::string name = lower(trim(f[c]));
+                const std::string name = lower(f[c]);
                 if (!t.column.emplace(name, c).second)
                     throw std::runtime_error(fmt::format("{}:{}: column '{}' given twice", path, lineNo, name));
             }
@@ -273,13 +236,9 @@ std::vector<BoreNode> readCsvNodes(const std::string& path) {
     // Which displacement columns: decided from the header (ur, or the three components).
     bool radial = false;
     {
-        std::string raw;
-        while (std::getline(probe, raw)) {
-            const std::string line = trim(raw);
-            if (line.empty() || line[0] == '#') continue;
-            for (const auto& f : fields(line)) radial = radial || lower(trim(f)) == "ur";
-            break;
-        }
+        DataLines lines(probe);
+        if (lines.next())
+            for (const auto f : splitFields(lines.text())) radial = radial || lower(f) == "ur";
     }
     const Table t = radial ? readTable(path, help, {{"x"}, {"y"}, {"z"}, {"ur"}})
                            : readTable(path, help, {{"x"}, {"y"}, {"z"}, {"ux"}, {"uy"}, {"uz"}});

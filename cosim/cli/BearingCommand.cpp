@@ -10,7 +10,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "cosim/case/MemoryBudget.hpp"
+#include "cosim/coupling/MemoryBudget.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
 #include "lube/JournalBearing.hpp"

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "cosim/case/MemoryBudget.hpp"
+#include "cosim/coupling/MemoryBudget.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"

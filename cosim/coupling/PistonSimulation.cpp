@@ -2,7 +2,7 @@
 
 #include "cosim/oil/LinerOilLayer.hpp"
 
-#include "cosim/case/MemoryBudget.hpp"
+#include "cosim/coupling/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
 
 #include "cosim/clearance/ClearanceTerms.hpp"

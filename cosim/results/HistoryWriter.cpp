@@ -1,13 +1,14 @@
 #include "cosim/results/HistoryWriter.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
 #include <string_view>
 
 #include <fmt/format.h>
+
+#include "cosim/io/TextTable.hpp"
 
 namespace flexehd::cosim {
 namespace {
@@ -66,30 +67,6 @@ constexpr const char* kComments =
     "# signs: forces and moments act ON the piston (liner_friction_* ON the liner), cylinder frame (+x major thrust side, +z towards "
     "the head, y pin axis); lateral > 0 towards +x; tilt about +y, > 0 = top of the piston towards "
     "+x; moments about the pin axis (+y)\n";
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-    return s;
-}
-
-std::vector<std::string_view> split(std::string_view line) {
-    std::vector<std::string_view> fields;
-    for (;;) {
-        const auto comma = line.find(',');
-        fields.push_back(trim(line.substr(0, comma)));
-        if (comma == std::string_view::npos) return fields;
-        line.remove_prefix(comma + 1);
-    }
-}
-
-template <typename T>
-bool parse(std::string_view text, T& value) {
-    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-    if (text.empty()) return false;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size();
-}
 
 }  // namespace
 
@@ -172,23 +149,17 @@ std::vector<StepRecord> HistoryWriter::read(const std::string& path, bool* parti
     std::vector<StepRecord> records;
     std::vector<int> columnOf;  // file column of each table() entry
     std::size_t fileColumns = 0;
-    std::string line;
-    int lineNumber = 0;
-    while (std::getline(in, line)) {
-        ++lineNumber;
-        // getline hits EOF before a newline only on an unterminated last line: a run killed
-        // in the middle of writing it.
-        const bool complete = !in.eof();
-        const std::string_view text = trim(line);
-        if (text.empty() || text.front() == '#') continue;
-        if (!complete) {
+    DataLines lines(in);
+    while (lines.next()) {
+        const int lineNumber = lines.number();
+        if (!lines.terminated()) {  // a run killed in the middle of writing its last line
             if (columnOf.empty())
                 throw std::runtime_error("'" + path + "': the header line (line " + std::to_string(lineNumber) +
                                          ") is incomplete");
             if (partialLastLine) *partialLastLine = true;
             break;
         }
-        const auto fields = split(text);
+        const auto fields = split(lines.text());
         if (columnOf.empty()) {  // the header
             fileColumns = fields.size();
             for (const auto& c : table()) {
@@ -215,7 +186,7 @@ std::vector<StepRecord> HistoryWriter::read(const std::string& path, bool* parti
             const auto& c = table()[k];
             if (columnOf[k] < 0) continue;
             const std::string_view value = fields[static_cast<std::size_t>(columnOf[k])];
-            const bool ok = c.real ? parse(value, r.*c.real) && std::isfinite(r.*c.real) : parse(value, r.*c.integer);
+            const bool ok = c.real ? parseNumber(value, r.*c.real) : parseWhole(value, r.*c.integer);
             if (!ok)
                 throw std::runtime_error("'" + path + "' line " + std::to_string(lineNumber) + ", column '" + c.name +
                                          "': '" + std::string(value) + "' is not " +

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "cosim/case/CaseFile.hpp"
+#include "cosim/casefile/CaseFile.hpp"
 
 namespace flexehd::cosim {
 namespace {

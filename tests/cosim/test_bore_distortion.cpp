@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "cosim/clearance/BoreDistortion.hpp"
-#include "cosim/case/CaseFile.hpp"
+#include "cosim/casefile/CaseFile.hpp"
 #include "cosim/clearance/ClearanceTerms.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/engine/SkirtFilm.hpp"

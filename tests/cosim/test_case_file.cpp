@@ -1,4 +1,4 @@
-// The case file (cosim/case/CaseFile) and the cylinder-pressure function (cosim/engine/CylinderPressure):
+// The case file (cosim/casefile/CaseFile) and the cylinder-pressure function (cosim/engine/CylinderPressure):
 // the shipped example reads and holds the documented values; every kind of bad input is an
 // error naming the file and the key; periodic piecewise-linear interpolation against hand
 // values; the example's piston mass properties against an integration over the piston mesh.
@@ -18,7 +18,7 @@
 
 #include <Eigen/LU>
 
-#include "cosim/case/CaseFile.hpp"
+#include "cosim/casefile/CaseFile.hpp"
 #include "cosim/engine/CylinderPressure.hpp"
 #include "fem/MeshReader.hpp"
 #include "fem/Quadrature.hpp"

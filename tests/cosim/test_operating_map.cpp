@@ -19,7 +19,7 @@
 //  * the contact load split is consistent with the reported gap: a hard-contact force only
 //    where the minimum film thickness is negative (the surfaces overlap), never more than the
 //    whole contact force.
-#include "cosim/case/CaseFile.hpp"
+#include "cosim/casefile/CaseFile.hpp"
 #include "cosim/results/CycleMetrics.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "CliRunner.hpp"

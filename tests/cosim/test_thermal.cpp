@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.hpp"
-#include "cosim/case/CaseFile.hpp"
+#include "cosim/casefile/CaseFile.hpp"
 #include "cosim/thermal/CylindricalSurfaceSampler.hpp"
 #include "cosim/thermal/LinerTemperature.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"

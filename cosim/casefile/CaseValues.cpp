@@ -1,4 +1,4 @@
-#include "cosim/case/CaseValues.hpp"
+#include "cosim/casefile/CaseValues.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -16,34 +16,6 @@
 namespace flexehd::cosim::casefile {
 
 namespace fs = std::filesystem;
-
-// ---- small text helpers ---------------------------------------------------------------------
-
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string::npos) return "";
-    const auto e = s.find_last_not_of(" \t\r\n");
-    return s.substr(b, e - b + 1);
-}
-
-/// Strict number: the whole text (a leading '+' allowed), finite.
-bool parseDouble(const std::string& text, double& value) {
-    std::string t = trim(text);
-    if (!t.empty() && t[0] == '+') t.erase(0, 1);
-    if (t.empty()) return false;
-    const char* end = t.data() + t.size();
-    const auto [ptr, ec] = std::from_chars(t.data(), end, value);
-    return ec == std::errc() && ptr == end && std::isfinite(value);
-}
-
-bool parseInt(const std::string& text, long long& value) {
-    std::string t = trim(text);
-    if (!t.empty() && t[0] == '+') t.erase(0, 1);
-    if (t.empty()) return false;
-    const char* end = t.data() + t.size();
-    const auto [ptr, ec] = std::from_chars(t.data(), end, value);
-    return ec == std::errc() && ptr == end;
-}
 
 namespace {
 const auto& joined = joinedKeys;
@@ -70,7 +42,7 @@ double number(const YamlSection& s, const std::string& key, Quantity q, Sign sig
     }
     const YAML::Node n = s.get(key);
     double v = 0.0;
-    if (!n.IsScalar() || !parseDouble(n.Scalar(), v))
+    if (!n.IsScalar() || !parseNumber(n.Scalar(), v))
         s.fail(key, fmt::format("expected {}, got {}", expectation(q, sign), describe(n)));
     if ((sign == Sign::Positive && !(v > 0.0)) || (sign == Sign::NonNegative && !(v >= 0.0)))
         s.fail(key, fmt::format("expected {}, got {}", expectation(q, sign), trim(n.Scalar())));
@@ -82,7 +54,7 @@ int integer(const YamlSection& s, const std::string& key, int minimum, int maxim
     const YAML::Node n = s.get(key);
     long long v = 0;
     const std::string expected = fmt::format("a whole number{}{} from {} to {}", *what ? " of " : "", what, minimum, maximum);
-    if (!n.IsScalar() || !parseInt(n.Scalar(), v))
+    if (!n.IsScalar() || !parseWhole(n.Scalar(), v))
         s.fail(key, fmt::format("expected {}, got {}", expected, describe(n)));
     if (v < minimum || v > maximum) s.fail(key, fmt::format("expected {}, got {}", expected, trim(n.Scalar())));
     return static_cast<int>(v);
@@ -104,7 +76,7 @@ std::string text(const YamlSection& s, const std::string& key, const std::string
     }
     const YAML::Node n = s.get(key);
     if (!n.IsScalar() || trim(n.Scalar()).empty()) s.fail(key, "expected " + what + ", got " + describe(n));
-    return trim(n.Scalar());
+    return std::string(trim(n.Scalar()));
 }
 
 /// One of `options` (the YAML spelling), returned as its index.
@@ -113,7 +85,7 @@ std::size_t choice(const YamlSection& s, const std::string& key, const std::vect
     const YAML::Node n = s.get(key);
     const std::string expected = "one of " + joined(options);
     if (!n.IsScalar()) s.fail(key, "expected " + expected + ", got " + describe(n));
-    const std::string v = trim(n.Scalar());
+    const std::string v(trim(n.Scalar()));
     for (std::size_t i = 0; i < options.size(); ++i)
         if (v == options[i]) return i;
     const std::string guess = closestKey(v, options);

@@ -1,4 +1,4 @@
-#include "cosim/case/MemoryBudget.hpp"
+#include "cosim/coupling/MemoryBudget.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cosim/case/EngineCase.hpp"
+#include "cosim/casefile/PressureTable.hpp"  // readPressureTable, which the case reads
 
 namespace flexehd::cosim {
 
@@ -27,11 +28,5 @@ struct CaseFileOptions {
 /// Reads and validates a case file. Relative paths in it (cylinder pressure, reduced bodies,
 /// output directory) resolve against the case file's directory; EngineCase holds them absolute.
 EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options = {});
-
-/// Reads a cylinder-pressure CSV: two columns, crank angle in degrees (0–720) and absolute
-/// pressure in Pa, separated by a comma (or a semicolon, or blanks); lines starting with `#`
-/// and blank lines are skipped, and the first other line may be a header. The table is
-/// validated as by CylinderPressure. Errors: std::runtime_error "FILE:LINE: reason".
-std::vector<PressureSample> readPressureTable(const std::string& path);
 
 }  // namespace flexehd::cosim

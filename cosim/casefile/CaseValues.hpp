@@ -1,5 +1,5 @@
 #pragma once
-// The typed values of the case file (CaseFile.cpp): numbers with their quantity and sign, whole
+// The typed values of the case file (its section readers): numbers with their quantity and sign, whole
 // numbers with their range, booleans, names, choices, and the checks of the files a case names.
 // Every message says what was expected, as "expected a positive length in m, got 'abc'".
 #include <cstddef>
@@ -7,14 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "cosim/io/TextTable.hpp"
 #include "cosim/io/YamlSection.hpp"
 
 namespace flexehd::cosim::casefile {
 
-std::string trim(const std::string& s);
-/// A whole-text finite number (a leading '+' allowed).
-bool parseDouble(const std::string& text, double& value);
-bool parseInt(const std::string& text, long long& value);
 /// "a " or "an " before the phrase.
 std::string withArticle(const std::string& phrase);
 
@@ -24,6 +21,11 @@ struct Quantity {
     const char* what;  ///< "length"
     const char* unit;  ///< "m"
 };
+
+inline constexpr Quantity kLength{"length", "m"};
+inline constexpr Quantity kMass{"mass", "kg"};
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kDeg = kPi / 180.0;
 
 /// "a positive length in m".
 std::string expectation(Quantity q, Sign sign);

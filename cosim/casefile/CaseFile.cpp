@@ -1,0 +1,73 @@
+// The case file's table of contents: the YAML document and its top-level keys, then each
+// section by its reader (CaseSections.hpp) in the order the sections depend on each other,
+// with the cross-section checks once the sections they span are read.
+#include "cosim/casefile/CaseFile.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "cosim/casefile/CaseSections.hpp"
+#include "cosim/casefile/CaseValues.hpp"
+#include "cosim/casefile/CrossSectionChecks.hpp"
+#include "cosim/io/YamlSection.hpp"
+
+namespace flexehd::cosim {
+namespace {
+
+using namespace casefile;
+namespace fs = std::filesystem;
+
+YAML::Node loadCaseYaml(const std::string& path, const fs::path& absolute) {
+    std::string error;
+    const std::string content = readWholeFile(absolute, error);
+    if (!error.empty()) throw std::runtime_error(path + ": cannot read the case file: " + error);
+    YAML::Node root;
+    try {
+        root = YAML::Load(content);
+    } catch (const YAML::Exception& e) {
+        throw std::runtime_error(
+            fmt::format("{}:{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
+    }
+    if (!root.IsDefined() || root.IsNull()) throw std::runtime_error(path + ": the case file is empty");
+    return root;
+}
+
+}  // namespace
+
+EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options) {
+    const fs::path absolute = fs::absolute(fs::path(path)).lexically_normal();
+    const YamlSource ctx{path, absolute.parent_path()};
+
+    const YAML::Node root = loadCaseYaml(path, absolute);
+    const YamlSection top(ctx, root, "",
+                          {"name", "engine", "piston", "lubricant", "contact", "cylinder_pressure", "bodies", "grid",
+                           "time", "coupling", "output", "liner", "thermal"});
+    EngineCase c;
+    c.path = absolute.string();
+    c.name = text(top, "name", absolute.stem().string(), "a name (text)");
+
+    // Bodies first: whether the liner is flexible decides whether engine.pin_tdc_depth is required.
+    readBodies(top, options, c);
+    const YamlSection engine = readEngine(top, c.engine);
+    readLiner(top, c.engine, c.liner);
+    readThermal(top, options, c.thermal);
+    requirePinTdcDepth(engine, c);
+
+    readPiston(top, c.engine, c.piston);
+    requireSkirtBelowDeck(engine, c);
+
+    const YamlSection lubricant = readLubricant(top, c.engine, c.lubricant);
+    readContact(top, c.contact);
+    readCylinderPressure(top, c);
+    readGrid(top, c.piston, c.grid);
+    readTime(top, c.time);
+    const YamlSection coupling = readCoupling(top, c.coupling);
+    requireSupportedMassConserving(lubricant, coupling, c);
+    readOutput(top, c.output);
+    return c;
+}
+
+}  // namespace flexehd::cosim

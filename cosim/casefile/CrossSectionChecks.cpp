@@ -1,0 +1,48 @@
+#include "cosim/casefile/CrossSectionChecks.hpp"
+
+#include <fmt/format.h>
+
+namespace flexehd::cosim::casefile {
+
+// engine.pin_tdc_depth where the liner's tables or mesh need the piston placed on them.
+void requirePinTdcDepth(const YamlSection& engine, const EngineCase& c) {
+    if ((c.liner.boreDistortion.format != BoreDistortionFormat::None || !c.thermal.file.empty()) &&
+        !engine.has("pin_tdc_depth"))
+        engine.missing("pin_tdc_depth",
+                       "the depth of the pin axis below the deck at TDC in m (required with liner.bore_distortion "
+                       "or thermal: it places the piston on the liner's tables)");
+    if (c.linerBody.model == BodyModel::Flexible && !engine.has("pin_tdc_depth"))
+        engine.missing("pin_tdc_depth",
+                       "the depth of the pin axis below the deck at TDC in m (required with a "
+                       "flexible liner: it places the piston on the liner mesh)");
+}
+
+// The skirt top below the deck at TDC.
+void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c) {
+    if ((engine.has("pin_tdc_depth") || c.linerBody.model == BodyModel::Flexible) &&
+        !(c.engine.pinTdcDepth > c.piston.skirtTop))
+        engine.fail("pin_tdc_depth",
+                    fmt::format("at TDC the skirt top (piston.skirt_top = {:g} m above the pin) would stand above the "
+                                "deck: pin_tdc_depth must exceed it, got {:g} m",
+                                c.piston.skirtTop, c.engine.pinTdcDepth));
+}
+
+// The mass-conserving film with a flexible body: the coupled Newton method, on a flooded supply
+// (docs/coupling.md §6).
+void requireSupportedMassConserving(const YamlSection& lubricant, const YamlSection& coupling, const EngineCase& c) {
+    const bool flexible = c.pistonBody.model == BodyModel::Flexible || c.linerBody.model == BodyModel::Flexible;
+    if (c.lubricant.cavitation != CavitationModel::MassConserving || !flexible) return;
+    if (c.coupling.method == CouplingMethod::Partitioned)
+        coupling.fail("method", "partitioned does not converge with lubricant.cavitation: mass_conserving and a flexible "
+                                "body: the film's content term carries the elastic thickness change, a coupling gain "
+                                "that grows as 1/dt (docs/coupling.md section 6). Use coupling.method: newton (the "
+                                "default)");
+    if (c.lubricant.supply.model == OilSupplyModel::LinerLayer)
+        lubricant.fail("supply", "model: liner_layer runs with rigid bodies only: with a flexible body the coupled "
+                                 "Newton iteration does not converge on the starved film (its linearisation holds the "
+                                 "full-film / cavitated partition, and a starved film's meniscus moves with the "
+                                 "deformation; docs/coupling.md section 6). Use rigid bodies (flexehd run --rigid), or "
+                                 "the flooded supply with flexible ones");
+}
+
+}  // namespace flexehd::cosim::casefile

@@ -1,0 +1,18 @@
+#pragma once
+// The checks of the case file that span sections: each fails at the key to change, with the
+// sections it needs read.
+#include "cosim/case/EngineCase.hpp"
+#include "cosim/io/YamlSection.hpp"
+
+namespace flexehd::cosim::casefile {
+
+/// engine.pin_tdc_depth given where the liner's tables (bore distortion, thermal) or a flexible
+/// liner need the piston placed on the liner (after engine, liner, thermal and bodies).
+void requirePinTdcDepth(const YamlSection& engine, const EngineCase& c);
+/// The skirt top below the deck at TDC (after engine, bodies and piston).
+void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c);
+/// The mass-conserving film with a flexible body: the coupled Newton method on a flooded supply
+/// (docs/coupling.md §6; after bodies, lubricant and coupling).
+void requireSupportedMassConserving(const YamlSection& lubricant, const YamlSection& coupling, const EngineCase& c);
+
+}  // namespace flexehd::cosim::casefile

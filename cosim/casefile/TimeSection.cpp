@@ -1,0 +1,34 @@
+// time: the crank-angle steps, their error control and the cycles (docs/case-file.md, "time").
+#include "cosim/casefile/CaseSections.hpp"
+
+#include <fmt/format.h>
+
+namespace flexehd::cosim::casefile {
+
+void readTime(const YamlSection& top, TimeSpec& t) {
+    const YamlSection time(top.source(), top.get("time"), "time",
+                           {"start_deg", "max_step_deg", "min_step_deg", "lateral_tolerance", "tilt_tolerance_deg",
+                            "max_cycles", "periodicity_tolerance", "oil_periodicity_tolerance"});
+    t.startDeg = number(time, "start_deg", {"crank angle", "deg"}, Sign::NonNegative, t.startDeg);
+    if (!(t.startDeg < 720.0))
+        time.fail("start_deg", fmt::format("expected a crank angle in [0, 720) deg, got {:g}", t.startDeg));
+    t.maxStepDeg = number(time, "max_step_deg", {"crank-angle step", "deg"}, Sign::Positive, t.maxStepDeg);
+    t.minStepDeg = number(time, "min_step_deg", {"crank-angle step", "deg"}, Sign::Positive, t.minStepDeg);
+    if (t.maxStepDeg > 10.0)
+        time.fail("max_step_deg", fmt::format("expected at most 10 deg, got {:g}", t.maxStepDeg));
+    if (!(t.maxStepDeg >= t.minStepDeg))
+        time.fail(
+            time.has("max_step_deg") ? "max_step_deg" : "min_step_deg",
+            fmt::format("expected max_step_deg ({:g}) >= min_step_deg ({:g})", t.maxStepDeg, t.minStepDeg));
+    t.lateralTolerance =
+        number(time, "lateral_tolerance", {"length", "m"}, Sign::Positive, t.lateralTolerance);
+    if (time.has("tilt_tolerance_deg"))
+        t.tiltTolerance = number(time, "tilt_tolerance_deg", {"angle", "deg"}, Sign::Positive, 0.0) * kDeg;
+    t.maxCycles = integer(time, "max_cycles", 1, 1000, t.maxCycles, "cycles");
+    t.periodicityTolerance =
+        number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, t.periodicityTolerance);
+    t.oilPeriodicityTolerance = number(time, "oil_periodicity_tolerance", {"relative change of the oil volume", ""},
+                                       Sign::Positive, t.oilPeriodicityTolerance);
+}
+
+}  // namespace flexehd::cosim::casefile
