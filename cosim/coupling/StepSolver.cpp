@@ -198,14 +198,21 @@ bool StepSolver::resolvedToTheUnknownsResolution(const StepTolerances& tol, cons
     // Where the film is thin and the step short, the squeeze film makes the motion so stiff that
     // a change of e, β by 1e-5 c_r (the resolution the motion test asks of them) changes its
     // residual by more than the tolerance; then, with the modal equations met, a fresh
-    // Jacobian's full Newton update below that resolution and the motion residual within 10× its
-    // tolerance end the iteration (docs/coupling.md §1).
-    const double motionMeasure =
-        std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + tol.forceFloor)),
-                 std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach)));
-    return couplingRes <= tol.coupling && motionMeasure <= 10.0 &&
+    // Jacobian's full Newton update below that resolution and each motion residual within 10× its
+    // tolerance, or within the change a step of e, β by their resolution makes of it (the fresh
+    // Jacobian's motion rows), end the iteration (docs/coupling.md §1).
+    const Eigen::Vector2d tolerance(1e-4 * (ev.scale[0] + tol.forceFloor),
+                                    1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach));
+    const Eigen::Vector2d resolution = 1e-5 * tol.motion;
+    bool motionResolved = true;
+    for (int i = 0; i < 2; ++i) {
+        const double resolvable =
+            std::abs(newtonJacobian_(i, 0)) * resolution[0] + std::abs(newtonJacobian_(i, 1)) * resolution[1];
+        motionResolved = motionResolved && std::abs(ev.residual[i]) <= std::max(10.0 * tolerance[i], resolvable);
+    }
+    return couplingRes <= tol.coupling && motionResolved &&
            dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * case_.piston.clearance &&
-           std::abs(dz[0]) <= 1e-5 * tol.motion[0] && std::abs(dz[1]) <= 1e-5 * tol.motion[1];
+           std::abs(dz[0]) <= resolution[0] && std::abs(dz[1]) <= resolution[1];
 }
 
 bool StepSolver::motionJacobian(const StepContext& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
