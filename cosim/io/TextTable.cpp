@@ -39,14 +39,7 @@ std::vector<std::string_view> splitFields(std::string_view line) {
     return fields;
 }
 
-bool parseNumber(std::string_view text, double& value) {
-    text = trim(text);
-    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-    if (text.empty()) return false;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    return ec == std::errc() && ptr == end && std::isfinite(value);
-}
+bool parseNumber(std::string_view text, double& value) { return parseField(text, value) && std::isfinite(value); }
 
 bool DataLines::next() {
     while (std::getline(in_, raw_)) {

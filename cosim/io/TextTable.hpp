@@ -26,16 +26,23 @@ std::vector<std::string_view> splitFields(std::string_view line);
 /// allowed): "+1e-3" is one, "1e", "1 2", "" and "inf" are not.
 bool parseNumber(std::string_view text, double& value);
 
-/// A whole number that is the whole of `text` (blanks at either end and a leading '+' allowed)
-/// and fits `Int`.
-template <typename Int>
-bool parseWhole(std::string_view text, Int& value) {
+/// A value of type T that is the whole of `text` (blanks at either end and a leading '+'
+/// allowed), in range: what parseNumber and parseWhole share.
+template <typename T>
+bool parseField(std::string_view text, T& value) {
     text = trim(text);
     if (!text.empty() && text.front() == '+') text.remove_prefix(1);
     if (text.empty()) return false;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);
     return ec == std::errc() && ptr == end;
+}
+
+/// A whole number that is the whole of `text` (blanks at either end and a leading '+' allowed)
+/// and fits `Int`.
+template <typename Int>
+bool parseWhole(std::string_view text, Int& value) {
+    return parseField(text, value);
 }
 
 /// The lines of a text table that hold something, one at a time: each trimmed and numbered
