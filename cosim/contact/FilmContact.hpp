@@ -15,11 +15,13 @@
 
 #include "cosim/contact/ContactColumns.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
+#include "cosim/oil/LinerOil.hpp"
 #include "lube/FilmIntegrals.hpp"
 
 #include <Eigen/Core>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,16 +34,16 @@ struct ContactStep {
     double a0 = 1.0, a1 = -1.0, a2 = 0.0;  ///< BDF2: ḟ = (a0 f + a1 fₙ + a2 fₙ₋₁)/dt
     double pistonVelocity = 0.0;      ///< m/s, the piston's axial velocity (+z towards the head)
     double linerOffset = 0.0;         ///< m, liner-frame z of the piston frame's origin
+    /// The liner's oil layer at the step's start and every contact's cover on it (null: no
+    /// contact runs on a liner layer).
+    const LinerOilState* oil = nullptr;
 };
 
-class LinerOilLayer;
-
 /// Oil volumes (m³) a mass-conserving film exchanged since the start of the run (docs/coupling.md
-/// §6): through its axial edges in and out, out at its sides (into the panels' relief: lost to
-/// the crankcase), added to the liner by the replenishment (< 0: removed), and what the film drew
-/// beyond the liner's layer (should stay 0).
+/// §6): through its axial edges in and out, and out at its sides (into the panels' relief: lost
+/// to the crankcase).
 struct OilBalance {
-    double edgeIn = 0.0, edgeOut = 0.0, sideOut = 0.0, replenished = 0.0, shortfall = 0.0;
+    double edgeIn = 0.0, edgeOut = 0.0, sideOut = 0.0;
 };
 
 /// A contact's film at an accepted step: the history its squeeze term and warm start need.
@@ -52,8 +54,6 @@ struct ContactState {
     Eigen::VectorXd p;       ///< Pa, gauge film pressure
     Eigen::VectorXd fraction;  ///< mass-conserving film: film fraction φ per node (empty: Reynolds)
     double linerOffset = 0.0;  ///< m, the step's liner offset
-    /// The liner's oil layer outside the skirt (null: flooded supply).
-    std::shared_ptr<const LinerOilLayer> oil;
     OilBalance oilBalance;     ///< mass-conserving film: cumulative volumes
 };
 
@@ -132,6 +132,17 @@ public:
     virtual std::vector<ContactColumn> columns() const { return {}; }
     /// The values of columns() at an accepted iterate, appended to `values` in their order.
     virtual void columnValues(const ContactIterate& /*it*/, std::vector<double>& /*values*/) const {}
+
+    /// A contact on the liner's oil layer (docs/coupling.md §6, "The liner's oil layer and its
+    /// covers"): what it needs of the master's layer; none (the default) for a contact that
+    /// neither reads nor writes it.
+    virtual std::optional<LinerFootprint> linerFootprint() const { return std::nullopt; }
+    /// The band of the liner it covers at the liner offset (m; a contact with a footprint).
+    virtual LinerCover linerCover(double /*linerOffset*/) const { return {}; }
+    /// Its trade with the layer over the accepted step from `now` to `next` (the accepted
+    /// iterate `it`): what its edges took in, left and banked (LinerOilExchange).
+    virtual void exchangeOil(const ContactState& /*now*/, const ContactState& /*next*/, const ContactIterate& /*it*/,
+                             LinerOilExchange& /*ex*/) const {}
 };
 
 }  // namespace flexehd::cosim

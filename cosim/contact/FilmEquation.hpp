@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 #include "lube/Lubricant.hpp"
 
+#include <optional>
+
 namespace flexehd::cosim {
 
 class FilmEquation {
@@ -24,7 +26,7 @@ public:
     /// film state the loads integrate. Throws std::runtime_error when the solve fails.
     virtual void solve(const ContactStep& step, const ContactState& now, const ContactState& before,
                        ContactIterate& it, lube::FilmState& fs, WorkTally& work) = 0;
-    /// Completes the state kept from an accepted iterate (film fraction, liner oil, balance).
+    /// Completes the state kept from an accepted iterate (film fraction, its oil balance).
     virtual void accept(const ContactStep& step, const ContactState& now, const ContactIterate& it,
                         ContactState& s) const = 0;
     /// coupling.method newton: linearises the film at the iterate's solution (its cavitated set
@@ -37,6 +39,13 @@ public:
     /// squeeze term (coupling.elastic_squeeze; zero where the film's content term is its own).
     virtual Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const = 0;
     virtual const lube::Lubricant& lubricant() const = 0;
+    /// A film fed by the liner's oil layer: what it needs of the layer (FilmContact::linerFootprint);
+    /// none by default.
+    virtual std::optional<LinerFootprint> linerFootprint() const { return std::nullopt; }
+    /// Its trade with the liner's layer over the accepted step from `now` to `next`
+    /// (FilmContact::exchangeOil).
+    virtual void exchangeOil(const ContactState& /*now*/, const ContactState& /*next*/, const ContactIterate& /*it*/,
+                             LinerOilExchange& /*ex*/) const {}
 };
 
 }  // namespace flexehd::cosim

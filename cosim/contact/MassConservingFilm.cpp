@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace flexehd::cosim {
 
@@ -42,16 +43,17 @@ MassConservingFilm::MassConservingFilm(const EngineCase& c, const lube::FilmGrid
     if (sp.model == OilSupplyModel::LinerLayer) {
         double lo = 0.0, hi = 0.0;
         skirtReach(grid, linerOffset, lo, hi);
-        double zReplenish = -std::numeric_limits<double>::infinity();
-        if (sp.replenish)
-            zReplenish = std::isnan(sp.replenishBelowDepth) ? linerOffset(90.0) + grid.z(0) : -sp.replenishBelowDepth;
-        exchange_ = std::make_unique<SkirtOilExchange>(grid, sp, lo, hi, zReplenish);
+        exchange_ = std::make_unique<SkirtOilExchange>(grid, sp, lo, hi);
     }
+}
+
+std::optional<LinerFootprint> MassConservingFilm::linerFootprint() const {
+    if (!exchange_) return std::nullopt;
+    return exchange_->footprint();
 }
 
 void MassConservingFilm::initialize(ContactState& s) const {
     if (exchange_) {
-        s.oil = exchange_->initialLayer(s.linerOffset);
         s.fraction = exchange_->initialFraction(s.h, s.linerOffset);
     } else {
         s.fraction = Eigen::VectorXd::Ones(grid_.size());
@@ -60,7 +62,10 @@ void MassConservingFilm::initialize(ContactState& s) const {
 
 void MassConservingFilm::setInlets(const ContactStep& step, const ContactState& now, const Eigen::VectorXd& h) {
     if (!exchange_) return;
-    exchange_->inletFractions(*now.oil, now.linerOffset, step.linerOffset, step.dt, -step.pistonVelocity, h, inlet_);
+    if (!step.oil || !step.oil->layer)
+        throw std::logic_error("MassConservingFilm: the step carries no liner oil layer for a liner_layer supply");
+    exchange_->inletFractions(*step.oil->layer, step.oil->covers, now.linerOffset, step.linerOffset, step.dt,
+                              -step.pistonVelocity, h, inlet_);
     for (int j = 0; j < grid_.nTheta(); ++j)
         for (int i : {0, grid_.nAxial() - 1}) {
             const int k = grid_.index(i, j);
@@ -117,12 +122,11 @@ void MassConservingFilm::accept(const ContactStep& step, const ContactState& now
     for (int j = 0; j < grid_.nTheta(); ++j)
         for (double q : {it.inflowLow[j], it.inflowHigh[j]}) (q > 0.0 ? b.edgeIn : b.edgeOut) += std::abs(q) * step.dt;
     b.sideOut -= it.sideInflow * step.dt;
-    if (exchange_) {
-        OilExchangeVolumes moved;
-        s.oil = exchange_->advance(*now.oil, now.linerOffset, step.linerOffset, step.dt, it.inflowLow, it.inflowHigh, moved);
-        b.replenished += moved.replenished;
-        b.shortfall += moved.shortfall;
-    }
+}
+
+void MassConservingFilm::exchangeOil(const ContactState& now, const ContactState& next, const ContactIterate& it,
+                                     LinerOilExchange& ex) const {
+    if (exchange_) exchange_->exchange(ex, now.linerOffset, next.linerOffset, it.inflowLow, it.inflowHigh);
 }
 
 void MassConservingFilm::linearize(const ContactStep& step, const ContactState& now, const ContactIterate& it) {

@@ -22,8 +22,8 @@ namespace flexehd::cosim {
 
 class MassConservingFilm final : public FilmEquation {
 public:
-    /// linerOffset(crank angle in degrees): where the grid stands on the liner (the layer's range
-    /// and the default replenishment depth).
+    /// linerOffset(crank angle in degrees): where the grid stands on the liner (the reach of its
+    /// edges on the liner's layer).
     MassConservingFilm(const EngineCase& c, const lube::FilmGrid& grid, const std::function<double(double)>& linerOffset);
 
     void initialize(ContactState& s) const override;
@@ -36,6 +36,9 @@ public:
     /// Zero: the content term V (φh − φₙhₙ)/Δt is in h, whole (pressureChange has it).
     Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const override;
     const lube::Lubricant& lubricant() const override { return lubricant_; }
+    std::optional<LinerFootprint> linerFootprint() const override;
+    void exchangeOil(const ContactState& now, const ContactState& next, const ContactIterate& it,
+                     LinerOilExchange& ex) const override;
 
     /// The film solve's tolerance on the scaled mass residual (lube::JfoSolver), as the Reynolds
     /// film's: each step's oil balance holds to it (its error is the sum of the nodes' residuals).

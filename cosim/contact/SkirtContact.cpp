@@ -210,9 +210,13 @@ ContactState SkirtContact::accepted(const ContactStep& step, const ContactState&
     s.hTotal = it.hTotal;
     s.p = it.p;
     s.linerOffset = step.linerOffset;
-    s.oil = now.oil;
     equation_->accept(step, now, it, s);
     return s;
+}
+
+LinerCover SkirtContact::linerCover(double linerOffset) const {
+    const lube::FilmGrid& g = film_.grid();
+    return {linerOffset + g.z(0), linerOffset + g.z(g.nAxial() - 1)};
 }
 
 void SkirtContact::checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const {

@@ -52,6 +52,14 @@ public:
                    ContactJacobian& J, WorkTally& work) override;
     ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const override;
     void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const override;
+    /// The mass-conserving film on a liner oil layer: the film equation's footprint; the skirt
+    /// covers the liner between its grid's edge rows.
+    std::optional<LinerFootprint> linerFootprint() const override { return equation_->linerFootprint(); }
+    LinerCover linerCover(double linerOffset) const override;
+    void exchangeOil(const ContactState& now, const ContactState& next, const ContactIterate& it,
+                     LinerOilExchange& ex) const override {
+        equation_->exchangeOil(now, next, it, ex);
+    }
 
     const SkirtFilm& film() const { return film_; }
     const lube::FilmGrid& grid() const { return film_.grid(); }

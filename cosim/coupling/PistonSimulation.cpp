@@ -1,7 +1,5 @@
 #include "cosim/coupling/PistonSimulation.hpp"
 
-#include "cosim/oil/LinerOilLayer.hpp"
-
 #include "cosim/coupling/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
 
@@ -100,6 +98,41 @@ std::vector<ContactColumn> PistonSimulation::contactColumns() const {
     return all;
 }
 
+void PistonSimulation::setUpLinerOil() {
+    linerOil_.reset();
+    covering_.clear();
+    std::vector<LinerFootprint> footprints;
+    for (std::size_t c = 0; c < contacts_.size(); ++c)
+        if (std::optional<LinerFootprint> f = contacts_[c]->linerFootprint()) {
+            footprints.push_back(std::move(*f));
+            covering_.push_back(c);
+        }
+    if (footprints.empty()) return;
+    // The replenishment's depth: the case's, or the lowest cover's lower edge at mid-stroke.
+    const OilSupplySpec& sp = case_.lubricant.supply;
+    double zReplenish = -std::numeric_limits<double>::infinity();
+    if (sp.replenish && !std::isnan(sp.replenishBelowDepth)) {
+        zReplenish = -sp.replenishBelowDepth;
+    } else if (sp.replenish) {
+        zReplenish = std::numeric_limits<double>::infinity();
+        for (std::size_t c : covering_) zReplenish = std::min(zReplenish, contacts_[c]->linerCover(linerOffset(90.0)).low);
+    }
+    linerOil_ = std::make_unique<LinerOil>(sp, footprints, zReplenish);
+}
+
+LinerCovers PistonSimulation::coversAt(const StepState& s) const {
+    std::vector<LinerCover> bands;
+    for (std::size_t c : covering_) bands.push_back(contacts_[c]->linerCover(s.films[c].linerOffset));
+    return LinerCovers(std::move(bands));
+}
+
+void PistonSimulation::advanceLinerOil(const StepState& s, const StepEvaluation& ev, StepState& n) const {
+    if (!linerOil_) return;
+    n.oil = linerOil_->advance(s.oil, coversAt(n), n.dt, [&](LinerOilExchange& ex) {
+        for (std::size_t c : covering_) contacts_[c]->exchangeOil(s.films[c], n.films[c], ev.films[c], ex);
+    });
+}
+
 void PistonSimulation::contactRecord(const StepEvaluation& ev, StepRecord& r) const {
     for (std::size_t c = 0; c < contacts_.size(); ++c) {
         const std::size_t before = r.contactValues.size();
@@ -147,20 +180,27 @@ StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev
             if (g.kind(k) != lube::NodeKind::Void)
                 r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(f.hTotal[k] - f.hRigid[k]));
     }
-    if (f.fraction.size()) oilRecord(s, f, r);
+    if (f.fraction.size()) oilRecord(s, ev, r);
     contactRecord(ev, r);
     r.couplingIterations = iterations;
     r.stepDeg = stepDeg;
     return r;
 }
 
-void PistonSimulation::oilRecord(const StepState& s, const ContactIterate& f, StepRecord& r) const {
-    // The mass-conserving skirt film's oil (docs/coupling.md §6).
+void PistonSimulation::oilRecord(const StepState& s, const StepEvaluation& ev, StepRecord& r) const {
+    // The oil of the mass-conserving films, summed over the contacts, and of the liner's layer
+    // (docs/coupling.md §6).
+    double sideInflow = 0.0;
+    for (const ContactIterate& c : ev.films) {  // a contact without oil adds nothing
+        for (Eigen::Index j = 0; j < c.inflowLow.size(); ++j)
+            for (double q : {c.inflowLow[j], c.inflowHigh[j]}) (q > 0.0 ? r.oilIn : r.oilOut) += std::abs(q);
+        sideInflow += c.sideInflow;
+        r.filmOil += c.oilVolume;
+    }
+    r.sideLeakage = -sideInflow;
+    // The wetted share is the skirt's film's.
     const lube::FilmGrid& g = skirt_->grid();
-    for (int j = 0; j < g.nTheta(); ++j)
-        for (double q : {f.inflowLow[j], f.inflowHigh[j]}) (q > 0.0 ? r.oilIn : r.oilOut) += std::abs(q);
-    r.sideLeakage = -f.sideInflow;
-    r.filmOil = f.oilVolume;
+    const ContactIterate& f = ev.films.front();
     double wet = 0.0, area = 0.0;
     for (int k = 0; k < g.size(); ++k) {
         if (g.kind(k) != lube::NodeKind::Film) continue;
@@ -168,9 +208,8 @@ void PistonSimulation::oilRecord(const StepState& s, const ContactIterate& f, St
         if (f.fraction[k] >= 1.0) wet += g.area(k);
     }
     r.wettedShare = area > 0.0 ? wet / area : 0.0;
-    const ContactState& st = s.films.front();
-    if (st.oil) r.linerOil = st.oil->volume({st.linerOffset + g.z(0), st.linerOffset + g.z(g.nAxial() - 1)});
-    r.replenishedOil = st.oilBalance.replenished;
+    r.linerOil = LinerOil::volume(s.oil);
+    r.replenishedOil = s.oil.replenished;
 }
 
 void PistonSimulation::afterAccepted(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg,
@@ -238,9 +277,9 @@ Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev
         sn.shearStress[k2] = phi * eta * (-k.velocity) / f.h[k2] - 0.5 * f.h[k2] * dpdz;
     }
     sn.filmFraction = f.fraction;
-    if (const ContactState& st = s.films.front(); st.oil) {
-        const LinerOilLayer& layer = *st.oil;
-        sn.linerOil = layer.meanThickness({st.linerOffset + g.z(0), st.linerOffset + g.z(g.nAxial() - 1)});
+    if (s.oil.layer) {
+        const LinerOilLayer& layer = *s.oil.layer;
+        sn.linerOil = layer.meanThickness(s.oil.covers);
         for (int c = 0; c < layer.cells(); ++c) sn.linerOilZ.push_back(layer.zLow() + (c + 0.5) * layer.cellLength());
     }
     if (mp_ > 0) sn.pistonModal = s.y.head(mp_);
@@ -253,6 +292,7 @@ StepState PistonSimulation::initialState(const SimulationCallbacks& cb) const {
     s.crankDeg = case_.time.startDeg;
     const double offset = linerOffset(s.crankDeg);
     for (const auto& contact : contacts_) s.films.push_back(contact->initialState(offset));
+    if (linerOil_) s.oil = linerOil_->initial(coversAt(s));
     if (const ClearanceTerms* clearance = skirt_->clearance()) {
         if (cb.progress) {
             cb.progress("film thickness: " + clearance->summary());
@@ -381,6 +421,7 @@ double PistonSimulation::periodicityError(const std::vector<StepRecord>& cycle, 
 std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
     const fem::Stopwatch tRun;
     const TimeSpec& T = case_.time;
+    setUpLinerOil();
     StepState s = initialState(cb);
     StepState prev = s;
     double dtDeg = std::min(T.maxStepDeg, 0.1);
@@ -436,6 +477,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             }
             addWork(counted);
             requireBoundedMotion(n, cycle);
+            advanceLinerOil(s, ev, n);
             ++stats_.steps;
             stepper_->stepAccepted();
             stats_.maxIterations = std::max(stats_.maxIterations, iterations);

@@ -24,6 +24,7 @@
 #include "cosim/engine/CylinderPressure.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
 #include "cosim/mapping/FlexibleBody.hpp"
+#include "cosim/oil/LinerOil.hpp"
 
 #include <Eigen/Core>
 
@@ -145,8 +146,15 @@ private:
                           const std::vector<StepRecord>& previous, const std::vector<double>& previousSince);
     /// The last cycle's oil figures into stats_ (mass-conserving film).
     void cycleOil(const std::vector<StepRecord>& cycle);
-    /// The oil columns of a record from the skirt's mass-conserving film.
-    void oilRecord(const StepState& s, const ContactIterate& f, StepRecord& r) const;
+    /// The oil columns of a record: the mass-conserving films' (summed over the contacts), the
+    /// skirt's wetted share, the liner's layer.
+    void oilRecord(const StepState& s, const StepEvaluation& ev, StepRecord& r) const;
+    /// The master's liner oil layer over the contacts that run on one (none: no layer).
+    void setUpLinerOil();
+    /// Every covering contact's band on the liner at the state.
+    LinerCovers coversAt(const StepState& s) const;
+    /// The liner's oil after the accepted step s → n (the contacts' trade, the replenishment).
+    void advanceLinerOil(const StepState& s, const StepEvaluation& ev, StepState& n) const;
     /// The contacts' own column values of a record.
     void contactRecord(const StepEvaluation& ev, StepRecord& r) const;
     /// The next step: dtDeg, shortened to land on the next snapshot angle or the cycle's end.
@@ -175,6 +183,9 @@ private:
     std::vector<std::unique_ptr<FilmContact>> contacts_;
     SkirtContact* skirt_ = nullptr;
     std::vector<std::size_t> columnCounts_;  // of each contact's own columns
+    // The liner's oil layer (null: no contact runs on one) and the contacts that cover it.
+    std::unique_ptr<LinerOil> linerOil_;
+    std::vector<std::size_t> covering_;
     // The flexible bodies (null: rigid), shared with the contacts' surfaces.
     std::shared_ptr<const FlexibleBody> pistonBody_, linerBody_;
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner

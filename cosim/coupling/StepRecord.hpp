@@ -37,12 +37,13 @@ struct StepRecord {
     /// deformation together; 0 with rigid bodies)
     double elasticFilmChange = 0.0;
     // The mass-conserving film only (lubricant.cavitation: mass_conserving; docs/coupling.md §6):
-    double oilIn = 0.0;        ///< m³/s, oil flowing into the skirt's film through its axial edges
+    // Flows and oil are summed over the contacts' films.
+    double oilIn = 0.0;        ///< m³/s, oil flowing into the films through their axial edges
     double oilOut = 0.0;       ///< m³/s, ≥ 0, oil flowing out through them
-    double sideLeakage = 0.0;  ///< m³/s, net oil leaving the film at the panels' sides
-    double filmOil = 0.0;      ///< m³, oil in the skirt's film, Σ V φ h
+    double sideLeakage = 0.0;  ///< m³/s, net oil leaving the films at their sides
+    double filmOil = 0.0;      ///< m³, oil in the films, Σ V φ h
     double wettedShare = 0.0;  ///< the share of the skirt's area in full film (φ = 1)
-    double linerOil = 0.0;     ///< m³, oil on the liner outside the skirt (0 with a flooded supply)
+    double linerOil = 0.0;     ///< m³, oil on the liner outside the contacts' covers (0 with a flooded supply)
     double replenishedOil = 0.0;  ///< m³, added to the liner by the replenishment since the start (< 0: removed)
     int couplingIterations = 0;     ///< film solves in this step (coupling + Newton)
     double stepDeg = 0.0;           ///< °, crank-angle step that reached this point

@@ -66,6 +66,7 @@ StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, d
     st.pistonVelocity = ctx.crank.velocity;
     ctx.gas = dyn_.gasForce(pressure_(crankAngle720(ctx.crankDeg)));
     st.linerOffset = linerOffset_(ctx.crankDeg);
+    st.oil = s.oil.layer ? &s.oil : nullptr;
     ctx.now = &s;
     ctx.before = &prev;
     if (pistonDynamics_ || linerDynamics_) {

@@ -27,6 +27,7 @@ struct StepState {
     Eigen::VectorXd y;      // modal coordinates: the piston's, then the liner's
     Eigen::VectorXd w;      // modal velocities ẏ (bodies.response: dynamic; else empty)
     std::vector<ContactState> films;  // per contact (the squeeze term's history, the warm start)
+    LinerOilState oil;                // the liner's oil layer and the contacts' covers on it
 };
 
 /// One step from an accepted state: its BDF2 context, crank state and gas force.

@@ -1,4 +1,4 @@
-// LinerOilLayer: the liner's oil layer outside the skirt, cell by cell (docs/coupling.md §6).
+// LinerOilLayer: the liner's oil layer outside the contacts, cell by cell (docs/coupling.md §6).
 #include "cosim/oil/LinerOilLayer.hpp"
 
 #include <algorithm>
@@ -28,16 +28,16 @@ void LinerOilLayer::fill(const std::function<double(double)>& thickness) {
     }
 }
 
-double LinerOilLayer::uncovered(int c, const SkirtCover& cover) const {
+double LinerOilLayer::uncovered(int c, const LinerCovers& cover) const {
     const double z0 = zLow_ + c * cell_;
-    return cell_ - overlap(z0, z0 + cell_, cover.low, cover.high);
+    return cell_ - cover.covered(z0, z0 + cell_);
 }
 
 int LinerOilLayer::cellOf(double z) const {
     return std::clamp(static_cast<int>(std::floor((z - zLow_) / cell_)), 0, nCells_ - 1);
 }
 
-double LinerOilLayer::volume(int j, double a, double b, const SkirtCover& cover) const {
+double LinerOilLayer::volume(int j, double a, double b, const LinerCovers& cover) const {
     const double w = width(j);
     if (!(w > 0.0) || !(b > a)) return 0.0;
     double v = 0.0;
@@ -45,12 +45,12 @@ double LinerOilLayer::volume(int j, double a, double b, const SkirtCover& cover)
         const double z0 = zLow_ + c * cell_, z1 = z0 + cell_;
         const double lo = std::max(a, z0), hi = std::min(b, z1);
         if (!(hi > lo)) continue;
-        v += t(c, j) * (hi - lo - overlap(lo, hi, cover.low, cover.high)) * w;
+        v += t(c, j) * (hi - lo - cover.covered(lo, hi)) * w;
     }
     return v;
 }
 
-double LinerOilLayer::volume(const SkirtCover& cover) const {
+double LinerOilLayer::volume(const LinerCovers& cover) const {
     double v = 0.0;
     for (int c = 0; c < nCells_; ++c) {
         const double u = uncovered(c, cover);
@@ -64,7 +64,7 @@ double LinerOilLayer::thicknessAt(int j, double z) const {
     return t(cellOf(z), j);
 }
 
-void LinerOilLayer::deposit(int j, double a, double b, double v, const SkirtCover& before) {
+void LinerOilLayer::deposit(int j, double a, double b, double v, const LinerCovers& before) {
     const double w = width(j);
     if (!(w > 0.0) || !(b > a)) return;
     for (int c = cellOf(a); c <= cellOf(b); ++c) {
@@ -76,7 +76,7 @@ void LinerOilLayer::deposit(int j, double a, double b, double v, const SkirtCove
     }
 }
 
-double LinerOilLayer::addOutside(int j, double z, int outward, double v, const SkirtCover& cover) {
+double LinerOilLayer::addOutside(int j, double z, int outward, double v, const LinerCovers& cover) {
     const double w = width(j);
     if (!(w > 0.0) || v == 0.0) return 0.0;
     const double tiny = 1e-9 * cell_;
@@ -92,11 +92,11 @@ double LinerOilLayer::addOutside(int j, double z, int outward, double v, const S
         v += take;
         if (v >= 0.0) return 0.0;
     }
-    if (v > 0.0) throw std::logic_error("LinerOilLayer::addOutside: no liner cell outside the skirt's edge");
+    if (v > 0.0) throw std::logic_error("LinerOilLayer::addOutside: no liner cell outside the contact's edge");
     return -v;
 }
 
-double LinerOilLayer::restore(double zBelow, const std::function<double(double)>& thickness, const SkirtCover& cover) {
+double LinerOilLayer::restore(double zBelow, const std::function<double(double)>& thickness, const LinerCovers& cover) {
     double added = 0.0;
     for (int c = 0; c < nCells_; ++c) {
         const double zc = zLow_ + (c + 0.5) * cell_;
@@ -113,7 +113,7 @@ double LinerOilLayer::restore(double zBelow, const std::function<double(double)>
     return added;
 }
 
-Eigen::VectorXd LinerOilLayer::meanThickness(const SkirtCover& cover) const {
+Eigen::VectorXd LinerOilLayer::meanThickness(const LinerCovers& cover) const {
     Eigen::VectorXd m(static_cast<Eigen::Index>(t_.size()));
     for (int c = 0; c < nCells_; ++c) {
         const double share = uncovered(c, cover) / cell_;
