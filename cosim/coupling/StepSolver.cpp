@@ -31,6 +31,7 @@ StepSolver::StepSolver(const EngineCase& c, const CrankKinematics& kin, const Pi
             linerDynamics_ = std::make_unique<modal::HeldModalDynamics>(linerBody_->body(), linerBody_->heldInterfaces());
     }
     if (c.coupling.method == CouplingMethod::Newton && mp_ + ml_ > 0) newtonParts_ = std::make_unique<CoupledJacobianParts>();
+    accelerator_ = makeCouplingAccelerator(c.coupling.acceleration);
     contactsChanged();
 }
 
@@ -242,8 +243,8 @@ bool StepSolver::perturbedMotion(const StepContext& ctx, const Eigen::Vector2d& 
     return true;
 }
 
-void StepSolver::partitionedUpdate(const StepEvaluation& ev, const Eigen::Vector2d& dx, CouplingAccelerator& acc,
-                                         Eigen::Vector2d& x, Eigen::VectorXd& y) {
+void StepSolver::partitionedUpdate(const StepEvaluation& ev, const Eigen::Vector2d& dx, Eigen::Vector2d& x,
+                                   Eigen::VectorXd& y) {
     // One fixed-point map of the joint unknowns z = (e, β, y): the chord step of the motion
     // with y held and the modal response H with x held, accelerated together by IQN-ILS /
     // Aitken in units of clearances of film change (docs/coupling.md §1: accelerating y
@@ -254,7 +255,7 @@ void StepSolver::partitionedUpdate(const StepEvaluation& ev, const Eigen::Vector
     z << x, y;
     Gz << x + dx, ev.Hy;
     const Eigen::VectorXd zn =
-        acc.next(z.cwiseProduct(partitionedScale_), Gz.cwiseProduct(partitionedScale_)).cwiseQuotient(partitionedScale_);
+        accelerator_->next(z.cwiseProduct(partitionedScale_), Gz.cwiseProduct(partitionedScale_)).cwiseQuotient(partitionedScale_);
     x = zn.head<2>();
     y = zn.tail(m);
     work_.modal += t0.seconds();
@@ -285,7 +286,7 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
     Eigen::VectorXd y = s.y;
     if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.step.dt / s.dt) * (s.y - prev.y);
     const bool flexible = mp_ + ml_ > 0;
-    CouplingAccelerator acc(case_.coupling.acceleration);
+    accelerator_->reset();  // a new history every step
     const StepTolerances tol = stepTolerances();
     const int maxIt = case_.coupling.maxIterations;
     Eigen::Vector2d lastX = x, lastR = Eigen::Vector2d::Zero();
@@ -345,7 +346,7 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
             x += dx;
             y += dz.tail(mp_ + ml_);
         } else if (flexible) {
-            partitionedUpdate(ev, dx, acc, x, y);
+            partitionedUpdate(ev, dx, x, y);
         } else {
             x += dx;
         }

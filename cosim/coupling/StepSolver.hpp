@@ -120,8 +120,8 @@ private:
     bool motionJacobian(const StepContext& ctx, const StepTolerances& tol, const Eigen::Vector2d& x,
                         const Eigen::VectorXd& y, const StepEvaluation& ev, int& iterations);
     /// coupling.method partitioned: the accelerated fixed-point map of (e, β, y).
-    void partitionedUpdate(const StepEvaluation& ev, const Eigen::Vector2d& dx, CouplingAccelerator& acc,
-                           Eigen::Vector2d& x, Eigen::VectorXd& y);
+    /// The accelerator (accelerator_) holds the step's history of the map.
+    void partitionedUpdate(const StepEvaluation& ev, const Eigen::Vector2d& dx, Eigen::Vector2d& x, Eigen::VectorXd& y);
     void acceptStep(const StepContext& ctx, const StepState& s, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
                     const StepEvaluation& ev, StepState& out) const;
     // The coupled Jacobian (CoupledNewton.cpp).
@@ -165,6 +165,7 @@ private:
     // coupling.method partitioned with flexible bodies: units of (e, β, y) in clearances of film
     // change, for the quasi-Newton acceleration of the joint fixed-point map (docs/coupling.md §1)
     Eigen::VectorXd partitionedScale_;
+    std::unique_ptr<CouplingAccelerator> accelerator_;  // coupling.acceleration, reset every step
     int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
     double newtonRate_ = -1.0;       // the a0/Δt it was formed for
     Eigen::Matrix2d jacobian_ = Eigen::Matrix2d::Zero();  // the motion's (partitioned, rigid)
