@@ -132,6 +132,9 @@ public:
     virtual std::vector<ContactColumn> columns() const { return {}; }
     /// The values of columns() at an accepted iterate, appended to `values` in their order.
     virtual void columnValues(const ContactIterate& /*it*/, std::vector<double>& /*values*/) const {}
+    /// What the coupling scheme needs of the contact (CouplingNeeds.hpp), told once before the
+    /// contact's first step; nothing to prepare by default.
+    virtual void prepare(const struct CouplingNeeds& /*needs*/) {}
 };
 
 }  // namespace flexehd::cosim
