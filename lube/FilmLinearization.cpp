@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "lube/GridColouring.hpp"
+#include "lube/ColouredDifference.hpp"
 
 namespace flexehd::lube {
 
@@ -20,11 +20,8 @@ struct FilmLinearization::Factor {
 };
 
 
-FilmLinearization::FilmLinearization(const FilmGrid& grid) : grid_(&grid), factor_(std::make_unique<Factor>()) {
-    GridColouring gc = distanceTwoColouring(grid);
-    colour_ = std::move(gc.colour);
-    colours_ = gc.colours;
-}
+FilmLinearization::FilmLinearization(const FilmGrid& grid)
+    : grid_(&grid), colouring_(distanceTwoColouring(grid)), factor_(std::make_unique<Factor>()) {}
 
 FilmLinearization::~FilmLinearization() = default;
 FilmLinearization::FilmLinearization(FilmLinearization&&) noexcept = default;
@@ -73,39 +70,20 @@ void FilmLinearization::linearize(const FilmState& film, const Eigen::VectorXd& 
         for (int r = 0; r < nf; ++r) dwdhdt_[r] = sys.rhs()[freeIndex_[r]] - s1.rhs()[freeIndex_[r]];
     }
 
-    // ∂w/∂h by colour: row r's entry for node a (colour c) is the change of w_r when colour c
-    // is perturbed, divided by δh_a. δh_a = 1e-7 h_a: truncation ~1e-7, round-off ~1e-9 relative.
-    std::vector<Eigen::Triplet<double>> trip;
-    trip.reserve(static_cast<std::size_t>(5 * nf));
-    FilmState fc = film;
-    for (int c = 0; c < colours_; ++c) {
-        fc.h = film.h;
-        bool any = false;
-        for (int k = 0; k < n; ++k)
-            if (colour_[static_cast<std::size_t>(k)] == c && g.kind(k) != NodeKind::Void) {
-                fc.h[k] *= 1.0 + 1e-7;
-                any = true;
-            }
-        if (!any) continue;
+    // ∂w/∂h by colour (ColouredDifference), on the free rows.
+    Eigen::VectorXd w0(nf);
+    for (int i = 0; i < nf; ++i) w0[i] = w[freeIndex_[static_cast<std::size_t>(i)]];
+    dwdh_ = colouredThicknessDerivative(g, colouring_, film, freeIndex_, w0, [&](const FilmState& fc) {
         const ReynoldsSystem sc(g, fc, rho, eta);
         const Eigen::VectorXd wc = sc.matrix() * p - sc.rhs();
-        for (int i = 0; i < nf; ++i) {
-            const int r = freeIndex_[static_cast<std::size_t>(i)];
-            auto add = [&](int a) {
-                if (colour_[static_cast<std::size_t>(a)] != c || g.kind(a) == NodeKind::Void) return;
-                const double v = (wc[r] - w[r]) / (fc.h[a] - film.h[a]);
-                if (v != 0.0) trip.emplace_back(i, a, v);
-            };
-            add(r);
-            forEachNeighbour(g, r, add);
-        }
-    }
-    dwdh_.resize(nf, n);
-    dwdh_.setFromTriplets(trip.begin(), trip.end());
+        Eigen::VectorXd rows(nf);
+        for (int i = 0; i < nf; ++i) rows[i] = wc[freeIndex_[static_cast<std::size_t>(i)]];
+        return rows;
+    });
 
     // A_FF: the free rows and columns of A (the held ones are p = p_cav, Fixed and Void are
     // prescribed: their δp is 0). Its pattern changes with the free set; analysed when it does.
-    trip.clear();
+    std::vector<Eigen::Triplet<double>> trip;
     for (int col = 0; col < n; ++col) {
         const int cj = slot[static_cast<std::size_t>(col)];
         if (cj < 0) continue;

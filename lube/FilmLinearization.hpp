@@ -9,8 +9,9 @@
 //
 // ∂w/∂ḣ is diagonal (the squeeze term A_k ρ_k ḣ_k of seed eq. 1, exact by linearity); ∂w/∂h
 // (Poiseuille h_f³, Couette h_f) is taken by finite differences on a distance-2 colouring of the
-// grid — a node's row depends on h at the node and its four neighbours, so nodes three grid steps
-// apart can be perturbed together: about 8 assemblies per linearisation, not one per node.
+// grid (ColouredDifference) — a node's row depends on h at the node and its four neighbours, so
+// nodes three grid steps apart can be perturbed together: about 8 assemblies per linearisation,
+// not one per node.
 // A_FF, the free rows and columns only, is factorized once per linearisation (CHOLMOD simplicial; its pattern
 // analysed again when the free set changes); any number of (δh, δḣ) columns are then answered by
 // one multi-column solve of the free rows' size.
@@ -21,6 +22,7 @@
 
 #include "lube/FilmGrid.hpp"
 #include "lube/FilmState.hpp"
+#include "lube/GridColouring.hpp"
 #include "lube/ReynoldsSystem.hpp"
 
 namespace flexehd::lube {
@@ -46,13 +48,12 @@ public:
     /// Film nodes held at the bound (cavitated) in the last linearisation.
     int cavitatedNodes() const { return cavitated_; }
     /// Number of colours of the distance-2 colouring (assemblies per linearisation).
-    int colours() const { return colours_; }
+    int colours() const { return colouring_.colours; }
 
 private:
     struct Factor;
     const FilmGrid* grid_;
-    std::vector<int> colour_;  // per node
-    int colours_ = 0;
+    GridColouring colouring_;
     std::unique_ptr<Factor> factor_;
     SparseMatrix dwdh_;        // ∂w/∂h: free rows × grid nodes
     Eigen::VectorXd dwdhdt_;   // diagonal ∂w/∂ḣ of the free rows

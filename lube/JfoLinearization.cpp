@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lube/ColouredDifference.hpp"
 #include "lube/JfoNetwork.hpp"
 #include "lube/SparseLuFactor.hpp"
 
@@ -73,37 +74,13 @@ void JfoLinearization::linearize(const FilmState& film, double dt, const JfoStat
         throw std::runtime_error("JfoLinearization: the film's balances on its full-film / cavitated partition are "
                                  "singular (a cavity with no supply?)");
 
-    // ∂F/∂h by colour: row r's entry for node a (colour c) is the change of F_r when colour c is
-    // perturbed, over δh_a = 1e-7 h_a (truncation ~1e-7, round-off ~1e-9 relative).
+    // ∂F/∂h by colour (ColouredDifference).
     const bool flux = inlets_ == InletResponse::FluxHeldWherePartial;
     const Eigen::VectorXd F0 = balances(net, g, rows_, p, phi, flux);
-    std::vector<Eigen::Triplet<double>> trip;
-    trip.reserve(static_cast<std::size_t>(5 * nf));
-    FilmState fc = film;
-    for (int c = 0; c < colouring_.colours; ++c) {
-        fc.h = film.h;
-        bool any = false;
-        for (int k = 0; k < n; ++k)
-            if (colouring_.colour[static_cast<std::size_t>(k)] == c && g.kind(k) != NodeKind::Void) {
-                fc.h[k] *= 1.0 + 1e-7;
-                any = true;
-            }
-        if (!any) continue;
+    dFdh_ = colouredThicknessDerivative(g, colouring_, film, rows_, F0, [&](const FilmState& fc) {
         const JfoNetwork nc(topo, g, fc, eta, dt, previous, inlet, pcav);
-        const Eigen::VectorXd Fc = balances(nc, g, rows_, p, phi, flux);
-        for (int r = 0; r < nf; ++r) {
-            const int k = rows_[static_cast<std::size_t>(r)];
-            auto add = [&](int a) {
-                if (colouring_.colour[static_cast<std::size_t>(a)] != c || g.kind(a) == NodeKind::Void) return;
-                const double v = (Fc[r] - F0[r]) / (fc.h[a] - film.h[a]);
-                if (v != 0.0) trip.emplace_back(r, a, v);
-            };
-            add(k);
-            forEachNeighbour(g, k, add);
-        }
-    }
-    dFdh_.resize(nf, n);
-    dFdh_.setFromTriplets(trip.begin(), trip.end());
+        return balances(nc, g, rows_, p, phi, flux);
+    });
 }
 
 Eigen::MatrixXd JfoLinearization::pressureChange(const Eigen::MatrixXd& dh) const {

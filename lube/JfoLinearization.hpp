@@ -10,8 +10,8 @@
 // so the change of the film fraction in a cavity carries the change of the Couette inflow it
 // brings to the film downstream. ∂F/∂h at fixed (p, φ) — Poiseuille h_f³, Couette h_f and the
 // content V φ h/Δt — is taken by finite differences on a distance-2 colouring of the grid
-// (GridColouring: one network per colour); M is factorized once per linearisation (sparse LU,
-// its ordering kept). Held: the previous step's content, and at each inlet (a Fixed node's
+// (ColouredDifference: one network per colour); M is factorized once per linearisation (sparse
+// LU, its ordering kept). Held: the previous step's content, and at each inlet (a Fixed node's
 // Couette inflow) its film fraction or, where that is below 1, optionally its flux φ_in h_f — an
 // inlet fed with a given oil volume per step, whose fraction falls as the gap opens.
 #include <Eigen/Core>

@@ -14,6 +14,7 @@
 // mappings and history (ContactState); a contact is a new class, never an edit of the step.
 
 #include "cosim/contact/ContactColumns.hpp"
+#include "cosim/contact/CouplingNeeds.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
 #include "cosim/oil/LinerOil.hpp"
 #include "lube/FilmIntegrals.hpp"
@@ -143,6 +144,9 @@ public:
     /// iterate `it`): what its edges took in, left and banked (LinerOilExchange).
     virtual void exchangeOil(const ContactState& /*now*/, const ContactState& /*next*/, const ContactIterate& /*it*/,
                              LinerOilExchange& /*ex*/) const {}
+    /// What the coupling scheme needs of the contact (CouplingNeeds.hpp), told once before the
+    /// contact's first step; nothing to prepare by default.
+    virtual void prepare(const CouplingNeeds& /*needs*/) {}
 };
 
 }  // namespace flexehd::cosim

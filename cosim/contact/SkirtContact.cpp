@@ -55,10 +55,13 @@ SkirtContact::SkirtContact(const EngineCase& c, std::function<double(double)> li
         }
         clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
     }
-    if (c.coupling.method == CouplingMethod::Newton && piston_) piston_->filmChangeShapes(0.0, psiPiston_);
 }
 
 SkirtContact::~SkirtContact() = default;
+
+void SkirtContact::prepare(const CouplingNeeds& needs) {
+    if (needs.modalJacobian && piston_) piston_->filmChangeShapes(0.0, psiPiston_);
+}
 
 ContactState SkirtContact::initialState(double linerOffset) const {
     ContactState s;

@@ -10,6 +10,7 @@
 // the grid at minus the piston's velocity.
 
 #include "cosim/case/EngineCase.hpp"
+#include "cosim/contact/CouplingNeeds.hpp"
 #include "cosim/contact/FilmContact.hpp"
 #include "cosim/contact/FilmEquation.hpp"
 #include "cosim/engine/SkirtFilm.hpp"
@@ -60,6 +61,8 @@ public:
                      LinerOilExchange& ex) const override {
         equation_->exchangeOil(now, next, it, ex);
     }
+    /// The modal Jacobian: the piston's film-change shapes Ψ (constant on the skirt's grid).
+    void prepare(const CouplingNeeds& needs) override;
 
     const SkirtFilm& film() const { return film_; }
     const lube::FilmGrid& grid() const { return film_.grid(); }

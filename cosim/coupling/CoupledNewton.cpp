@@ -20,7 +20,7 @@
 //   δp_j = δp_j^h + r δp_j^ḣ,   R_x rows = A_x + r B_x,   R_y rows = I − S(r)⁻¹ (F^h + r F^ḣ).
 // The parts are kept (CoupledJacobianParts) and the Jacobian is re-formed for a new step size
 // without a new linearisation — a step-size change alone costs a dense refactorization.
-#include "cosim/coupling/StepSolver.hpp"
+#include "cosim/coupling/CoupledNewtonScheme.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -31,29 +31,30 @@
 #include <limits>
 #include <stdexcept>
 
+#include "cosim/coupling/StepSolver.hpp"
 #include "fem/Stopwatch.hpp"
 
 namespace flexehd::cosim {
 
-Eigen::Matrix<double, 2, 6> StepSolver::actionGradient(const StepContext& ctx) const {
+Eigen::Matrix<double, 2, 6> CoupledNewtonScheme::actionGradient(const StepContext& ctx) const {
     // The equations of motion's right-hand side is affine in the film action (F_x, F_z, M_y).
     Eigen::Matrix<double, 2, 6> dForce = Eigen::Matrix<double, 2, 6>::Zero();
-    const Eigen::Vector2d f0 = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 0.0});
-    dForce.col(0) = dyn_.force(ctx.crank, ctx.gas, FilmAction{1.0, 0.0, 0.0}) - f0;
-    dForce.col(2) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 1.0, 0.0}) - f0;
-    dForce.col(4) = dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 1.0}) - f0;
+    const Eigen::Vector2d f0 = step_.dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 0.0});
+    dForce.col(0) = step_.dyn_.force(ctx.crank, ctx.gas, FilmAction{1.0, 0.0, 0.0}) - f0;
+    dForce.col(2) = step_.dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 1.0, 0.0}) - f0;
+    dForce.col(4) = step_.dyn_.force(ctx.crank, ctx.gas, FilmAction{0.0, 0.0, 1.0}) - f0;
     return dForce;
 }
 
-void StepSolver::linearizeCoupled(const StepContext& ctx, const Eigen::Vector2d& x, const StepEvaluation& ev) {
+void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::Vector2d& x, const StepEvaluation& ev) {
     // Each contact's load change with y; the motion rows through the film action (f is affine in
     // (F_x, F_z, M_y)), the modal rows as the contacts' modal loads (the bodies' response is applied
     // when the Jacobian is formed: it depends on the step size with bodies.response: dynamic).
-    CoupledJacobianParts& P = *newtonParts_;
+    CoupledJacobianParts& P = parts_;
     Eigen::MatrixXd loadH, loadRate;
     ContactJacobian J;
-    for (std::size_t c = 0; c < contacts_.size(); ++c) {
-        contacts_[c]->linearize(ctx.step, ctx.now->films[c], x, ev.films[c], J, work_);
+    for (std::size_t c = 0; c < step_.contacts_.size(); ++c) {
+        step_.contacts_[c]->linearize(ctx.step, ctx.now->films[c], x, ev.films[c], J, step_.work_);
         if (c == 0) {
             loadH = J.loadH;
             loadRate = J.loadRate;
@@ -71,17 +72,17 @@ void StepSolver::linearizeCoupled(const StepContext& ctx, const Eigen::Vector2d&
     const fem::Stopwatch t0;
     const Eigen::Matrix<double, 2, 6> dForce = actionGradient(ctx);  // ∂f/∂(F, M)
     P.motionH = -dForce * loadH;
-    P.motionRate = case_.coupling.elasticSqueeze ? Eigen::MatrixXd(-dForce * loadRate) : Eigen::MatrixXd(2, 0);
+    P.motionRate = step_.case_.coupling.elasticSqueeze ? Eigen::MatrixXd(-dForce * loadRate) : Eigen::MatrixXd(2, 0);
     P.valid = true;
-    work_.modal += t0.seconds();
+    step_.work_.modal += t0.seconds();
 }
 
-Eigen::MatrixXd StepSolver::coupledJacobian(const StepContext& ctx) {
+Eigen::MatrixXd CoupledNewtonScheme::coupledJacobian(const StepContext& ctx) {
     const fem::Stopwatch t0;
-    const CoupledJacobianParts& P = *newtonParts_;
+    const CoupledJacobianParts& P = parts_;
     const int m = mp_ + ml_, k = 2 + m;
     const double rate = ctx.step.a0 / ctx.step.dt;
-    const bool elasticRate = case_.coupling.elasticSqueeze;
+    const bool elasticRate = step_.case_.coupling.elasticSqueeze;
     // The modal columns; the (e, β) columns are formCoupledJacobian's.
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, k);
     J.topRightCorner(2, m) = elasticRate ? Eigen::MatrixXd(P.motionH + rate * P.motionRate) : P.motionH;
@@ -102,14 +103,14 @@ Eigen::MatrixXd StepSolver::coupledJacobian(const StepContext& ctx) {
             J.block(row, 2, rows, m) = -Q;
         }
     };
-    if (pistonBody_) respond(*pistonBody_, pistonDynamics_.get(), 2, mp_);
-    if (linerBody_) respond(*linerBody_, linerDynamics_.get(), 2 + mp_, ml_);
+    if (step_.pistonBody_) respond(*step_.pistonBody_, step_.pistonDynamics_.get(), 2, mp_);
+    if (step_.linerBody_) respond(*step_.linerBody_, step_.linerDynamics_.get(), 2 + mp_, ml_);
     J.bottomRightCorner(m, m).diagonal().array() += 1.0;
-    work_.modal += t0.seconds();
+    step_.work_.modal += t0.seconds();
     return J;
 }
 
-bool StepSolver::formCoupledJacobian(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+bool CoupledNewtonScheme::formCoupledJacobian(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
                                            const StepEvaluation& ev, const Eigen::Vector2d& tol, int& filmSolves) {
     Eigen::MatrixXd& J = newtonJacobian_;
     J = coupledJacobian(ctx);
@@ -118,27 +119,27 @@ bool StepSolver::formCoupledJacobian(const StepContext& ctx, const Eigen::Vector
     // at high sliding and squeeze speeds enough to stall Newton (docs/coupling.md §1).
     const Eigen::Vector2d delta = 1e-5 * tol;  // of the clearance (tilt: of the clearance over the reach)
     std::array<StepEvaluation, 2> moved;
-    if (!perturbedMotion(ctx, x, y, delta, true, moved, filmSolves)) return false;
+    if (!step_.perturbedMotion(ctx, x, y, delta, true, moved, filmSolves)) return false;
     for (int i = 0; i < 2; ++i) {
         J.block<2, 1>(0, i) = (moved[i].residual - ev.residual) / delta[i];
         J.col(i).tail(mp_ + ml_) = (ev.Hy - moved[i].Hy) / delta[i];
     }
     newtonInverse_ = J.partialPivLu().inverse();
     // Unknowns in units of the film-thickness change they cause (Broyden norm, merit, damping).
-    unknownScale_ = newtonParts_->filmChangePerUnknown;
+    unknownScale_ = parts_.filmChangePerUnknown;
     for (Eigen::Index j = 0; j < unknownScale_.size(); ++j)
         unknownScale_[j] = unknownScale_[j] > 0.0 ? unknownScale_[j] : 1.0;
     // Without the elastic rate the quasi-static modal rows are algebraic: where the film's
     // stiffness on a combination of modes exceeds the structure's (det(I − ∂H/∂y) < 0), the skirt's
     // equilibrium in the film has folded away (docs/coupling.md §3); noted for the diagnosis.
-    if (!case_.coupling.elasticSqueeze && !pistonDynamics_ && !linerDynamics_ && mp_ + ml_ > 0) {
+    if (!step_.case_.coupling.elasticSqueeze && !step_.pistonDynamics_ && !step_.linerDynamics_ && mp_ + ml_ > 0) {
         const int m = mp_ + ml_;
-        if (Eigen::MatrixXd(J.bottomRightCorner(m, m)).partialPivLu().determinant() < 0.0) ++foldedJacobians_;
+        if (Eigen::MatrixXd(J.bottomRightCorner(m, m)).partialPivLu().determinant() < 0.0) ++step_.foldedJacobians_;
     }
     return true;
 }
 
-Eigen::VectorXd StepSolver::residualScale(const StepEvaluation& ev, double forceFloor, double reach,
+Eigen::VectorXd CoupledNewtonScheme::residualScale(const StepEvaluation& ev, double forceFloor, double reach,
                                                 double couplingTol) const {
     const int k = 2 + mp_ + ml_;
     Eigen::VectorXd r = Eigen::VectorXd::Ones(k);
@@ -151,13 +152,13 @@ Eigen::VectorXd StepSolver::residualScale(const StepEvaluation& ev, double force
     return r;
 }
 
-double StepSolver::coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) {
+double CoupledNewtonScheme::coupledMerit(const Eigen::VectorXd& F, const Eigen::VectorXd& residualScale) {
     if (!residualScale.allFinite()) return std::numeric_limits<double>::infinity();
     return 0.5 * F.cwiseQuotient(residualScale).squaredNorm();
 }
 
-Eigen::VectorXd StepSolver::levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& rScale) const {
-    const Eigen::VectorXd dzScale = case_.piston.clearance * unknownScale_.cwiseInverse();
+Eigen::VectorXd CoupledNewtonScheme::levenbergMarquardtStep(const Eigen::VectorXd& F, const Eigen::VectorXd& rScale) const {
+    const Eigen::VectorXd dzScale = step_.case_.piston.clearance * unknownScale_.cwiseInverse();
     const Eigen::MatrixXd Js = rScale.cwiseInverse().asDiagonal() * newtonJacobian_ * dzScale.asDiagonal();
     Eigen::MatrixXd N = Js.transpose() * Js;
     N.diagonal().array() += 1.0;
@@ -167,7 +168,7 @@ Eigen::VectorXd StepSolver::levenbergMarquardtStep(const Eigen::VectorXd& F, con
 // Good Broyden update of the kept inverse Jacobian H for the update s and the residual change
 // dF it caused, in the norm of the film-thickness change of s (Sherman–Morrison):
 //   J₊ = J + (dF − J s) wᵀ/(wᵀ s),  w = D⁻² s  ⇔  H₊ = H + (s − H dF)(wᵀ H)/(wᵀ H dF).
-void StepSolver::broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF) {
+void CoupledNewtonScheme::broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF) {
     const Eigen::VectorXd w = s.cwiseProduct(unknownScale_).cwiseProduct(unknownScale_);
     const Eigen::VectorXd HdF = newtonInverse_ * dF;
     const double denom = w.dot(HdF);

@@ -1,73 +1,14 @@
 #include "cosim/coupling/CouplingAccelerator.hpp"
 
-#include <Eigen/QR>
-
-#include <cmath>
+#include "cosim/coupling/AitkenAccelerator.hpp"
+#include "cosim/coupling/IqnIlsAccelerator.hpp"
 
 namespace flexehd::cosim {
 
-CouplingAccelerator::CouplingAccelerator(CouplingAcceleration method, double initialRelaxation, int maxColumns)
-    : method_(method), omega0_(initialRelaxation), omega_(initialRelaxation), maxColumns_(maxColumns) {}
-
-void CouplingAccelerator::reset() {
-    first_ = true;
-    omega_ = omega0_;
-    V_.clear();
-    W_.clear();
-}
-
-Eigen::VectorXd CouplingAccelerator::next(const Eigen::VectorXd& y, const Eigen::VectorXd& Hy) {
-    const Eigen::VectorXd r = Hy - y;
-    if (first_) {
-        first_ = false;
-        lastR_ = r;
-        lastH_ = Hy;
-        return y + omega0_ * r;
-    }
-    const Eigen::VectorXd dr = r - lastR_;
-    if (method_ == CouplingAcceleration::Aitken) {
-        const double d = dr.squaredNorm();
-        if (d > 0.0) omega_ = -omega_ * lastR_.dot(dr) / d;
-        lastR_ = r;
-        lastH_ = Hy;
-        return y + omega_ * r;
-    }
-    // IQN-ILS: newest column first, at most maxColumns_.
-    V_.insert(V_.begin(), dr);
-    W_.insert(W_.begin(), Hy - lastH_);
-    if (int(V_.size()) > maxColumns_) {
-        V_.pop_back();
-        W_.pop_back();
-    }
-    lastR_ = r;
-    lastH_ = Hy;
-    for (;;) {
-        const Eigen::Index n = Eigen::Index(V_.size());
-        Eigen::MatrixXd V(r.size(), n);
-        for (Eigen::Index i = 0; i < n; ++i) V.col(i) = V_[std::size_t(i)];
-        Eigen::HouseholderQR<Eigen::MatrixXd> qr(V);
-        const Eigen::MatrixXd R = qr.matrixQR().topRows(n).triangularView<Eigen::Upper>();
-        // Filter: drop the oldest column while a diagonal of R is tiny relative to the largest.
-        double rmax = 0.0;
-        for (Eigen::Index i = 0; i < n; ++i) rmax = std::max(rmax, std::abs(R(i, i)));
-        bool dependent = false;
-        for (Eigen::Index i = 0; i < n; ++i)
-            if (!(std::abs(R(i, i)) > 1e-10 * rmax)) dependent = true;
-        if (dependent && n > 1) {
-            V_.pop_back();
-            W_.pop_back();
-            continue;
-        }
-        if (dependent) {  // a single vanishing column: no model, relaxed step
-            V_.clear();
-            W_.clear();
-            return y + omega0_ * r;
-        }
-        const Eigen::VectorXd c = qr.solve(Eigen::VectorXd(-r));
-        Eigen::VectorXd out = Hy;
-        for (Eigen::Index i = 0; i < n; ++i) out += c[i] * W_[std::size_t(i)];
-        return out;
-    }
+std::unique_ptr<CouplingAccelerator> makeCouplingAccelerator(CouplingAcceleration method, double initialRelaxation,
+                                                             int maxColumns) {
+    if (method == CouplingAcceleration::Aitken) return std::make_unique<AitkenAccelerator>(initialRelaxation);
+    return std::make_unique<IqnIlsAccelerator>(initialRelaxation, maxColumns);
 }
 
 }  // namespace flexehd::cosim

@@ -1,39 +1,32 @@
 #pragma once
 // CouplingAccelerator: convergence acceleration of the fixed point y = H(y) between the film and
-// the elastic bodies, with y the modal coordinates of the flexible bodies (docs/coupling.md).
-//
-//  * IQN-ILS (interface quasi-Newton, inverse Jacobian from a least-squares model; Degroote,
-//    Bathe & Vierendeels 2009): with residuals r_k = H(y_k) − y_k and the differences
-//    V = [Δr_i], W = [ΔH_i] of the iterations so far, solve min ‖V c + r_k‖ and set
-//    y_{k+1} = H(y_k) + W c. The first iteration is a relaxed step y + ω₀ r. Columns that make
-//    V numerically rank-deficient (QR filter) are dropped, oldest first.
-//  * Aitken Δ² dynamic relaxation (Irons & Tuck 1969; Küttler & Wall 2008):
-//    ω_k = −ω_{k−1} r_{k−1}ᵀ(r_k − r_{k−1}) / ‖r_k − r_{k−1}‖², y_{k+1} = y_k + ω_k r_k.
+// the elastic bodies, with y the modal coordinates of the flexible bodies (docs/coupling.md §1,
+// "Otherwise"). One interface, one method per class: IqnIlsAccelerator (interface quasi-Newton,
+// Degroote, Bathe & Vierendeels 2009) and AitkenAccelerator (Aitken Δ² dynamic relaxation,
+// Irons & Tuck 1969; Küttler & Wall 2008), made by makeCouplingAccelerator from
+// coupling.acceleration.
 
 #include "cosim/case/EngineCase.hpp"
 
 #include <Eigen/Core>
 
-#include <vector>
+#include <memory>
 
 namespace flexehd::cosim {
 
 class CouplingAccelerator {
 public:
-    CouplingAccelerator(CouplingAcceleration method, double initialRelaxation = 0.5, int maxColumns = 20);
+    virtual ~CouplingAccelerator() = default;
 
     /// Forgets the iteration history (new time step).
-    void reset();
+    virtual void reset() = 0;
     /// Next iterate from the current one y and its image Hy = H(y).
-    Eigen::VectorXd next(const Eigen::VectorXd& y, const Eigen::VectorXd& Hy);
-
-private:
-    CouplingAcceleration method_;
-    double omega0_, omega_;
-    int maxColumns_;
-    bool first_ = true;
-    Eigen::VectorXd lastR_, lastH_;
-    std::vector<Eigen::VectorXd> V_, W_;
+    virtual Eigen::VectorXd next(const Eigen::VectorXd& y, const Eigen::VectorXd& Hy) = 0;
 };
+
+/// The accelerator of coupling.acceleration: ω₀ the relaxation of the first iteration (and
+/// Aitken's initial ω), maxColumns the most IQN-ILS difference columns kept.
+std::unique_ptr<CouplingAccelerator> makeCouplingAccelerator(CouplingAcceleration method,
+                                                             double initialRelaxation = 0.5, int maxColumns = 20);
 
 }  // namespace flexehd::cosim

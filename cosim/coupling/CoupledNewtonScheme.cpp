@@ -1,0 +1,156 @@
+// CoupledNewtonScheme: a pass of the coupled Newton method (docs/coupling.md §1) — the line
+// search, the Jacobian kept, re-formed or Broyden-updated, the damped update of (e, β, y) and the
+// test of convergence to the resolution of the unknowns; the Jacobian is CoupledNewton.cpp's.
+#include "cosim/coupling/CoupledNewtonScheme.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "cosim/coupling/StepSolver.hpp"
+
+namespace flexehd::cosim {
+
+CoupledNewtonScheme::CoupledNewtonScheme(StepSolver& step) : step_(step), mp_(step.mp_), ml_(step.ml_) {}
+
+void CoupledNewtonScheme::beginStep(const Eigen::Vector2d& x, const Eigen::VectorXd& y) {
+    iterate_ = NewtonIterate{};
+    iterate_.acceptedX = x;
+    iterate_.acceptedY = y;
+}
+
+CouplingScheme::PassOutcome CoupledNewtonScheme::pass(const StepContext& ctx, const StepTolerances& tol, int /*pass*/,
+                                                      const StepEvaluation& ev, double couplingRes, Eigen::Vector2d& x,
+                                                      Eigen::VectorXd& y, int& iterations, Eigen::Vector2d& dx,
+                                                      bool& resolved, std::string& why) {
+    dz_.resize(0);
+    resolved = false;
+    const PassOutcome outcome =
+        coupledNewtonPass(ctx, tol, ev, couplingRes, iterate_, x, y, iterations, dz_, resolved, why);
+    if (outcome == PassOutcome::Update) dx = dz_.head<2>();
+    return outcome;
+}
+
+void CoupledNewtonScheme::update(const StepEvaluation& /*ev*/, const Eigen::Vector2d& dx, Eigen::Vector2d& x,
+                                 Eigen::VectorXd& y) {
+    x += dx;
+    y += dz_.tail(mp_ + ml_);
+}
+
+CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepContext& ctx, const StepTolerances& tol,
+                                                                   const StepEvaluation& ev, double couplingRes,
+                                                                   NewtonIterate& it, Eigen::Vector2d& x,
+                                                                   Eigen::VectorXd& y, int& iterations,
+                                                                   Eigen::VectorXd& dz, bool& resolved,
+                                                                   std::string& why) {
+    const double forceFloor = tol.forceFloor, reach = tol.reach, couplingTol = tol.coupling;
+    // The residual in units of its tolerances (≤ 1: converged).
+    const double measure = std::max({couplingRes / couplingTol,
+                                     std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
+                                     std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach))});
+    Eigen::VectorXd F(2 + mp_ + ml_);
+    F.head<2>() = ev.residual;
+    F.tail(mp_ + ml_) = y - ev.Hy;
+    // Line search: a pass whose merit (coupledMerit) is worse than at the last accepted
+    // iterate goes back there — to linearise anew when the Jacobian was a kept one, else to
+    // halve the update (at most 5 times; the film and contact laws are strongly nonlinear
+    // where the cavitated or contact set changes).
+    Eigen::VectorXd rScale = residualScale(ev, forceFloor, reach, couplingTol);
+    if (it.acceptedMerit < std::numeric_limits<double>::infinity() && coupledMerit(F, rScale) > it.acceptedMerit) {
+        if (!it.freshJacobian && !it.revisit) {
+            // The kept Jacobian led astray: back to the accepted iterate, linearised anew.
+            x = it.acceptedX;
+            y = it.acceptedY;
+            parts_.valid = false;
+            it.revisit = true;
+            return PassOutcome::Retry;
+        }
+        if (it.backtracks < 5) {
+            ++it.backtracks;
+            x = it.acceptedX + 0.5 * (x - it.acceptedX);
+            y = it.acceptedY + 0.5 * (y - it.acceptedY);
+            return PassOutcome::Retry;
+        }
+    }
+    it.revisit = false;
+    const double rate = ctx.step.a0 / ctx.step.dt;
+    // A new linearisation when a pass did not halve the measure (or had to backtrack with a
+    // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
+    // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
+    if (it.backtracks > 0 && it.freshJacobian) it.regularize = true;  // see below
+    const bool relinearize = !parts_.valid || measure > 0.5 * it.acceptedMeasure || it.backtracks > 0;
+    if (!parts_.valid) it.acceptedMeasure = std::numeric_limits<double>::infinity();
+    if (relinearize) {
+        try {
+            linearizeCoupled(ctx, x, ev);
+        } catch (const std::runtime_error& e) {
+            parts_.valid = false;
+            why = std::string("the film's linearisation for the coupled Newton step failed: ") + e.what();
+            return PassOutcome::Failed;
+        }
+        ++step_.work_.jacobians;
+    }
+    if (relinearize || rate != newtonRate_) {
+        if (!formCoupledJacobian(ctx, x, y, ev, tol.motion, iterations)) {
+            why = "a film solve of the Jacobian's difference columns failed";
+            return PassOutcome::Failed;
+        }
+        newtonRate_ = rate;
+    } else if (it.acceptedF.size()) {
+        Eigen::VectorXd step(2 + mp_ + ml_);
+        step.head<2>() = x - it.acceptedX;
+        step.tail(mp_ + ml_) = y - it.acceptedY;
+        broydenUpdate(step, F - it.acceptedF);
+    }
+    it.freshJacobian = relinearize;
+    it.backtracks = 0;
+    rScale = residualScale(ev, forceFloor, reach, couplingTol);  // the Jacobian's unknown scales
+    it.acceptedMeasure = measure;
+    it.acceptedMerit = coupledMerit(F, rScale);
+    it.acceptedX = x;
+    it.acceptedY = y;
+    it.acceptedF = F;
+    // After a failed line search with a fresh Jacobian the step is nearly singular: some
+    // combination of motion and modes changes the residual by less than its tolerance per
+    // clearance of film change (a soft elastic mode against a film of nearly equal and
+    // opposite stiffness, quasi-static). Then the Levenberg–Marquardt step in units of the
+    // tolerances (residual) and of the clearance (film-thickness change of each unknown),
+    // dz = −D (JsᵀJs + I)⁻¹ Jsᵀ Fs, leaves such directions alone.
+    dz = -newtonInverse_ * F;
+    resolved = relinearize && resolvedToTheUnknownsResolution(tol, ev, couplingRes, dz);
+    if (it.regularize) dz = levenbergMarquardtStep(F, rScale);
+    if (!dz.allFinite()) {
+        why = "the Newton update of the coupled step is not finite";
+        return PassOutcome::Failed;
+    }
+    // Damped step: no update moves the film thickness anywhere by more than a quarter of the
+    // clearance (the film and contact laws are far from linear over such a distance).
+    const double largest = dz.cwiseAbs().dot(unknownScale_);  // ≥ max |Δh|
+    if (largest > 0.25 * step_.case_.piston.clearance) dz *= 0.25 * step_.case_.piston.clearance / largest;
+    return PassOutcome::Update;
+}
+
+bool CoupledNewtonScheme::resolvedToTheUnknownsResolution(const StepTolerances& tol, const StepEvaluation& ev,
+                                                          double couplingRes, const Eigen::VectorXd& dz) const {
+    // Where the film is thin and the step short, the squeeze film makes the motion so stiff that
+    // a change of e, β by 1e-5 c_r (the resolution the motion test asks of them) changes its
+    // residual by more than the tolerance; then, with the modal equations met, a fresh
+    // Jacobian's full Newton update below that resolution and each motion residual within 10× its
+    // tolerance, or within the change a step of e, β by their resolution makes of it (the fresh
+    // Jacobian's motion rows), end the iteration (docs/coupling.md §1).
+    const Eigen::Vector2d tolerance(1e-4 * (ev.scale[0] + tol.forceFloor),
+                                    1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach));
+    const Eigen::Vector2d resolution = 1e-5 * tol.motion;
+    bool motionResolved = true;
+    for (int i = 0; i < 2; ++i) {
+        const double resolvable =
+            std::abs(newtonJacobian_(i, 0)) * resolution[0] + std::abs(newtonJacobian_(i, 1)) * resolution[1];
+        motionResolved = motionResolved && std::abs(ev.residual[i]) <= std::max(10.0 * tolerance[i], resolvable);
+    }
+    return couplingRes <= tol.coupling && motionResolved &&
+           dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * step_.case_.piston.clearance &&
+           std::abs(dz[0]) <= resolution[0] && std::abs(dz[1]) <= resolution[1];
+}
+
+}  // namespace flexehd::cosim
