@@ -116,17 +116,19 @@ public:
     /// The largest film-thickness change (m) the change dy of the modal coordinates makes.
     virtual double filmChange(const ContactStep& step, const Eigen::VectorXd& dy, WorkTally& work) const = 0;
     /// The largest film-thickness change per unit of each modal coordinate (m) at a typical
-    /// position (the units of the partitioned coupling's acceleration).
-    virtual Eigen::VectorXd modalFilmChangeScale() const = 0;
+    /// position (the units of the partitioned coupling's acceleration); empty (the default) for a
+    /// contact the modes do not move.
+    virtual Eigen::VectorXd modalFilmChangeScale() const { return {}; }
     /// coupling.method newton: the loads' change with y at the iterate of the step from `now`.
     virtual void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x,
                            const ContactIterate& it,
                            ContactJacobian& J, WorkTally& work) = 0;
     /// The state kept from an accepted iterate of the step from `now`.
     virtual ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const = 0;
-    /// The resultant mapped onto the flexible piston against the film's normal force:
-    /// worstDiff = max |mapped − film| (N), largestForce = max |film| (N) over the calls.
-    virtual void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const = 0;
+    /// A contact with a modal load on the flexible piston: its mapped resultant against its film's
+    /// normal force, worstDiff = max |mapped − film| (N), largestForce = max |film| (N) over the
+    /// calls (RunStatistics::worstMappingError); nothing to check by default.
+    virtual void checkLoadMapping(const ContactIterate& /*it*/, double& /*worstDiff*/, double& /*largestForce*/) const {}
 
     /// The columns this contact adds to history.csv after the master's, with their summary.json
     /// figures (ContactColumns.hpp); none by default. Fixed for the contact's life.

@@ -24,9 +24,10 @@ void PartitionedScheme::contactsChanged() {
     const int m = step_.mp_ + step_.ml_;
     partitionedScale_.resize(2 + m);
     partitionedScale_.head<2>() << 1.0, reach;
-    partitionedScale_.tail(m) = contacts.front()->modalFilmChangeScale();
-    for (std::size_t k = 1; k < contacts.size(); ++k)
-        partitionedScale_.tail(m) = partitionedScale_.tail(m).cwiseMax(contacts[k]->modalFilmChangeScale());
+    partitionedScale_.tail(m).setZero();
+    for (const auto& contact : contacts)
+        if (const Eigen::VectorXd s = contact->modalFilmChangeScale(); s.size() == m)  // empty: no modal action
+            partitionedScale_.tail(m) = partitionedScale_.tail(m).cwiseMax(s);
     for (Eigen::Index j = 0; j < partitionedScale_.size(); ++j)
         partitionedScale_[j] = (partitionedScale_[j] > 0.0 ? partitionedScale_[j] : 1.0) / c.piston.clearance;
 }

@@ -4,6 +4,7 @@
 #include "cosim/coupling/RunProgress.hpp"
 
 #include "cosim/clearance/ClearanceTerms.hpp"
+#include "cosim/coupling/StepSizeControl.hpp"
 #include "cosim/coupling/StepSolver.hpp"
 #include "lube/FilmIntegrals.hpp"
 #include "cosim/mapping/FlexibleBodyLoader.hpp"
@@ -310,34 +311,6 @@ StepState PistonSimulation::initialState(const SimulationCallbacks& cb) const {
     return s;
 }
 
-double PistonSimulation::plannedStep(double crankDeg, double dtDeg, double cycleStart, double cycleEnd,
-                                     bool& atSnapshot) const {
-    const TimeSpec& T = case_.time;
-    const double every = case_.output.vtkEveryDeg;
-    double step = std::min(dtDeg, cycleEnd - crankDeg);
-    atSnapshot = false;
-    if (every > 0.0) {
-        // The next snapshot angle; those closer than time.min_step_deg to the present state
-        // are skipped (landing on them would need a step below the smallest allowed).
-        double next = cycleStart + every * (std::floor((crankDeg - cycleStart) / every + 1e-9) + 1.0);
-        if (next - crankDeg < T.minStepDeg) next += every * std::ceil((T.minStepDeg - (next - crankDeg)) / every);
-        if (next - crankDeg <= step + 1e-12) {
-            step = next - crankDeg;
-            atSnapshot = true;
-        }
-    }
-    if (std::abs(crankDeg + step - cycleEnd) < 1e-9) atSnapshot = every > 0.0;
-    return step;
-}
-
-double PistonSimulation::localErrorRatio(const StepState& s, const StepState& n, double stepDeg) const {
-    // The predictor–corrector difference against time.lateral_tolerance and tilt_tolerance.
-    const double dt = stepDeg * kin_.secondsPerDegree();
-    const Eigen::Vector2d pred = s.x + dt * s.v + 0.5 * dt * dt * s.a;
-    const Eigen::Vector2d err = 0.5 * (n.x - pred).cwiseAbs();
-    return std::max(err[0] / case_.time.lateralTolerance, err[1] / case_.time.tiltTolerance);
-}
-
 std::string PistonSimulation::stepSizeExhausted(const StepState& s, int cycle, bool converged, double ratio,
                                                 const std::string& failure) const {
     // A folded quasi-static equilibrium is no matter of step size or iterations.
@@ -424,8 +397,8 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     setUpLinerOil();
     StepState s = initialState(cb);
     StepState prev = s;
-    double dtDeg = std::min(T.maxStepDeg, 0.1);
     const double every = case_.output.vtkEveryDeg;
+    StepSizeControl control(T, every, kin_.secondsPerDegree());
     std::vector<StepRecord> previousCycle, cycleRecords;
     // Degrees since the start of the cycle of each record (monotonic, unlike the written crank
     // angle when time.start_deg > 0): the abscissa of the periodicity comparison.
@@ -460,16 +433,15 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
         double nextProgress = cycleStart;
         while (s.crankDeg < cycleEnd - 1e-9) {
             bool atSnapshot = false;
-            const double step = plannedStep(s.crankDeg, dtDeg, cycleStart, cycleEnd, atSnapshot);
+            const double step = control.planned(s.crankDeg, cycleStart, cycleEnd, atSnapshot);
             StepState n;
             int iterations = 0;
             std::string failure;
             const bool ok = stepper_->advance(s, prev, step, n, ev, iterations, failure);
-            const double ratio = ok ? localErrorRatio(s, n, step) : 0.0;
+            const double ratio = ok ? control.errorRatio(s, n, step) : 0.0;
             if (!ok || ratio > 1.0) {
                 ++stats_.rejectedSteps;
-                dtDeg = ok ? step * std::max(0.2, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 0.25 * step;
-                if (dtDeg < T.minStepDeg) {
+                if (!control.rejected(step, ok, ratio)) {
                     addWork(counted);
                     throw std::runtime_error(stepSizeExhausted(s, cycle, ok, ratio, failure));
                 }
@@ -492,9 +464,7 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
             cycleSince.push_back(s.crankDeg - cycleStart);
             if (cb.onStep) cb.onStep(rec);
             if (atSnapshot) takeSnapshot(s, ev);
-            // Next step: grow with the error ratio, from the unclipped step size.
-            const double grow = ratio > 0.0 ? std::min(2.0, 0.9 * std::pow(ratio, -1.0 / 3.0)) : 2.0;
-            dtDeg = std::min(T.maxStepDeg, std::max(step, std::min(dtDeg, T.maxStepDeg)) * grow);
+            control.accepted(step, ratio);
             if (cb.progress && s.crankDeg >= nextProgress) {
                 nextProgress += 30.0;
                 cb.progress(progress.stepLine(cycleCrankDeg(s.crankDeg, cycle), (s.crankDeg - cycleStart) / (cycleEnd - cycleStart),

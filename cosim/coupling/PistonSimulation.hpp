@@ -157,10 +157,6 @@ private:
     void advanceLinerOil(const StepState& s, const StepEvaluation& ev, StepState& n) const;
     /// The contacts' own column values of a record.
     void contactRecord(const StepEvaluation& ev, StepRecord& r) const;
-    /// The next step: dtDeg, shortened to land on the next snapshot angle or the cycle's end.
-    double plannedStep(double crankDeg, double dtDeg, double cycleStart, double cycleEnd, bool& atSnapshot) const;
-    /// The local error estimate of the step s → n in units of its tolerance.
-    double localErrorRatio(const StepState& s, const StepState& n, double stepDeg) const;
     /// The diagnosis when the step size falls below time.min_step_deg.
     std::string stepSizeExhausted(const StepState& s, int cycle, bool converged, double ratio,
                                   const std::string& failure) const;

@@ -50,13 +50,11 @@ public:
     }
     void addModalLoad(const ContactStep&, const ContactIterate&, Eigen::VectorXd&, WorkTally&) const override {}
     double filmChange(const ContactStep&, const Eigen::VectorXd&, WorkTally&) const override { return 0.0; }
-    Eigen::VectorXd modalFilmChangeScale() const override { return {}; }
     void linearize(const ContactStep&, const ContactState&, const Eigen::Vector2d&, const ContactIterate&,
                    ContactJacobian&, WorkTally&) override {}
     ContactState accepted(const ContactStep& step, const ContactState&, const ContactIterate&) const override {
         return initialState(step.linerOffset);
     }
-    void checkLoadMapping(const ContactIterate&, double&, double&) const override {}
 
     std::vector<ContactColumn> columns() const override {
         return {{"band_friction_force_n", {}},

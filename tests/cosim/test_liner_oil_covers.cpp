@@ -56,7 +56,6 @@ public:
     }
     void addModalLoad(const ContactStep&, const ContactIterate&, Eigen::VectorXd&, WorkTally&) const override {}
     double filmChange(const ContactStep&, const Eigen::VectorXd&, WorkTally&) const override { return 0.0; }
-    Eigen::VectorXd modalFilmChangeScale() const override { return {}; }
     void linearize(const ContactStep&, const ContactState&, const Eigen::Vector2d&, const ContactIterate&,
                    ContactJacobian&, WorkTally&) override {}
     ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const override {
@@ -67,7 +66,6 @@ public:
                 (q > 0.0 ? s.oilBalance.edgeIn : s.oilBalance.edgeOut) += std::abs(q) * step.dt;
         return s;
     }
-    void checkLoadMapping(const ContactIterate&, double&, double&) const override {}
 
     std::vector<ContactColumn> columns() const override { return {{"band_oil_m3", {}}}; }
     void columnValues(const ContactIterate& it, std::vector<double>& values) const override {
