@@ -136,6 +136,9 @@ public:
     /// The values of columns() at an accepted iterate, appended to `values` in their order.
     virtual void columnValues(const ContactIterate& /*it*/, std::vector<double>& /*values*/) const {}
 
+    /// Its film conserves oil (a mass-conserving film): the run then writes the oil columns and
+    /// balances the oil (docs/coupling.md §6); false by default.
+    virtual bool carriesOil() const { return false; }
     /// A contact on the liner's oil layer (docs/coupling.md §6, "The liner's oil layer and its
     /// covers"): what it needs of the master's layer; none (the default) for a contact that
     /// neither reads nor writes it.

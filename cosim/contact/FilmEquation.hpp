@@ -39,6 +39,8 @@ public:
     /// squeeze term (coupling.elastic_squeeze; zero where the film's content term is its own).
     virtual Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const = 0;
     virtual const lube::Lubricant& lubricant() const = 0;
+    /// The equation conserves the film's oil (its iterates carry the film fraction and edge flows).
+    virtual bool conservesOil() const { return false; }
     /// A film fed by the liner's oil layer: what it needs of the layer (FilmContact::linerFootprint);
     /// none by default.
     virtual std::optional<LinerFootprint> linerFootprint() const { return std::nullopt; }

@@ -36,6 +36,7 @@ public:
     /// Zero: the content term V (φh − φₙhₙ)/Δt is in h, whole (pressureChange has it).
     Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const override;
     const lube::Lubricant& lubricant() const override { return lubricant_; }
+    bool conservesOil() const override { return true; }
     std::optional<LinerFootprint> linerFootprint() const override;
     void exchangeOil(const ContactState& now, const ContactState& next, const ContactIterate& it,
                      LinerOilExchange& ex) const override;

@@ -53,6 +53,7 @@ public:
                    ContactJacobian& J, WorkTally& work) override;
     ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const override;
     void checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const override;
+    bool carriesOil() const override { return equation_->conservesOil(); }
     /// The mass-conserving film on a liner oil layer: the film equation's footprint; the skirt
     /// covers the liner between its grid's edge rows.
     std::optional<LinerFootprint> linerFootprint() const override { return equation_->linerFootprint(); }

@@ -92,6 +92,10 @@ double PistonSimulation::linerOffset(double crankDeg) const {
     return -case_.engine.pinTdcDepth - (kin_.tdcPosition() - kin_.at(crankDeg).position);
 }
 
+bool PistonSimulation::carriesOil() const {
+    return std::any_of(contacts_.begin(), contacts_.end(), [](const auto& c) { return c->carriesOil(); });
+}
+
 std::vector<ContactColumn> PistonSimulation::contactColumns() const {
     std::vector<ContactColumn> all;
     for (const auto& contact : contacts_)
@@ -181,7 +185,7 @@ StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev
             if (g.kind(k) != lube::NodeKind::Void)
                 r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(f.hTotal[k] - f.hRigid[k]));
     }
-    if (f.fraction.size()) oilRecord(s, ev, r);
+    if (carriesOil()) oilRecord(s, ev, r);
     contactRecord(ev, r);
     r.couplingIterations = iterations;
     r.stepDeg = stepDeg;
@@ -224,7 +228,7 @@ void PistonSimulation::cyclePeriodicity(int cycleNumber, const std::vector<StepR
                                         const std::vector<double>& since, const std::vector<StepRecord>& previous,
                                         const std::vector<double>& previousSince) {
     const TimeSpec& T = case_.time;
-    if (case_.lubricant.cavitation == CavitationModel::MassConserving) cycleOil(cycle);
+    if (carriesOil()) cycleOil(cycle);
     for (RunObserver* o : observers_) o->cycleEnded(cycleNumber);
     if (previous.empty()) return;  // this cycle vs the previous one
     stats_.periodicityError = periodicityError(cycle, since, previous, previousSince);

@@ -124,6 +124,9 @@ public:
     const FlexibleSurface* liner() const { return skirt_->liner(); }
     /// Bore distortion and thermal terms of the film thickness (null when the case has none).
     const ClearanceTerms* clearance() const { return skirt_->clearance(); }
+    /// A contact's film conserves oil: the records carry the oil columns and the cycle's oil
+    /// balance (docs/coupling.md §6).
+    bool carriesOil() const;
     /// The contacts' own history.csv columns and their summary figures, in contact order
     /// (StepRecord::contactValues holds their values).
     std::vector<ContactColumn> contactColumns() const;

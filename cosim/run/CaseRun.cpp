@@ -153,7 +153,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     reportBodies(c, sim, log);
 
     double outputInRun = 0.0;  // output inside the step loop
-    HistoryWriter history(dir + "/history.csv", c.lubricant.cavitation == CavitationModel::MassConserving,
+    HistoryWriter history(dir + "/history.csv", sim.carriesOil(),
                           columnNames(sim.contactColumns()));
     FieldSeriesWriter fields(dir);
     SimulationCallbacks cb;
