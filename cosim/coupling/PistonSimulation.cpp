@@ -395,100 +395,147 @@ double PistonSimulation::periodicityError(const std::vector<StepRecord>& cycle, 
     return err;
 }
 
-std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
-    const fem::Stopwatch tRun;
-    const TimeSpec& T = case_.time;
-    setUpLinerOil();
-    StepState s = initialState(cb);
-    StepState prev = s;
-    const double every = case_.output.vtkEveryDeg;
-    StepSizeControl control(T, every, kin_.secondsPerDegree());
-    std::vector<StepRecord> previousCycle, cycleRecords;
-    // Degrees since the start of the cycle of each record (monotonic, unlike the written crank
-    // angle when time.start_deg > 0): the abscissa of the periodicity comparison.
-    std::vector<double> previousSince, cycleSince;
+// The cycle loop's state over a run: the accepted states, the current cycle's span and records
+// against the previous cycle's, the step control and the counters of the run's statistics.
+struct PistonSimulation::RunLoop {
+    RunLoop(const SimulationCallbacks& callbacks, double span, const TimeSpec& T, double every, double secondsPerDegree)
+        : cb(callbacks), spanDeg(span), control(T, every, secondsPerDegree), progress(T.maxCycles, T.periodicityTolerance) {}
+
+    const fem::Stopwatch clock;  // since the run started
+    const SimulationCallbacks& cb;
+    const double spanDeg;
+    StepSizeControl control;
+    RunProgress progress;
+    StepState s, prev;
     StepEvaluation ev, lastEv;
     bool haveLast = false;
-    stats_ = RunStatistics{.timings = stats_.timings};
-    stats_.minStepDeg = T.maxStepDeg;
+    // The cycle: its number, crank-angle span, snapshots taken and the next progress line's angle.
+    int cycle = 0;
+    double cycleStart = 0.0, cycleEnd = 0.0, nextProgress = 0.0;
+    int snapshots = 0;
+    std::vector<StepRecord> records, previous;
+    // Degrees since the start of the cycle of each record (monotonic, unlike the written crank
+    // angle when time.start_deg > 0): the abscissa of the periodicity comparison.
+    std::vector<double> since, previousSince;
     double worstMappingDiff = 0.0, largestFilmForce = 0.0;
-    const double filmT0 = stats_.timings.film, structT0 = stats_.timings.structure;
-    WorkTally counted = work_;  // the work already in stats_
-    RunProgress progress(T.maxCycles, T.periodicityTolerance);
-    for (int cycle = 1; cycle <= T.maxCycles; ++cycle) {
-        const double cycleStart = T.startDeg + 720.0 * (cycle - 1);
-        const double cycleEnd = spanDeg > 0.0 ? std::min(cycleStart + 720.0, T.startDeg + spanDeg) : cycleStart + 720.0;
-        cycleRecords.clear();
-        cycleSince.clear();
-        progress.startCycle(cycle, tRun.seconds());
-        int snapshots = 0;
-        auto takeSnapshot = [&](const StepState& at, const StepEvaluation& e) {
-            ++snapshots;
-            if (cb.onSnapshot) cb.onSnapshot(snapshot(at, e, cycle));
-        };
-        if (haveLast) {
-            // The boundary point opens the new cycle's records too (its metrics and its 0° snapshot);
-            // it is the last cycle's final step, written to the history once, there.
-            StepRecord r = record(s, lastEv, cycle, 0.0, 0);
-            cycleRecords.push_back(r);
-            cycleSince.push_back(s.crankDeg - cycleStart);
-            if (every > 0.0) takeSnapshot(s, lastEv);
-        }
-        double nextProgress = cycleStart;
-        while (s.crankDeg < cycleEnd - 1e-9) {
-            bool atSnapshot = false;
-            const double step = control.planned(s.crankDeg, cycleStart, cycleEnd, atSnapshot);
-            StepState n;
-            int iterations = 0;
-            std::string failure;
-            const bool ok = stepper_->advance(s, prev, step, n, ev, iterations, failure);
-            const double ratio = ok ? control.errorRatio(s, n, step) : 0.0;
-            if (!ok || ratio > 1.0) {
-                ++stats_.rejectedSteps;
-                if (!control.rejected(step, ok, ratio)) {
-                    addWork(counted);
-                    throw std::runtime_error(stepSizeExhausted(s, cycle, ok, ratio, failure));
-                }
-                continue;
-            }
-            addWork(counted);
-            requireBoundedMotion(n, cycle);
-            advanceLinerOil(s, ev, n);
-            ++stats_.steps;
-            stepper_->stepAccepted();
-            stats_.maxIterations = std::max(stats_.maxIterations, iterations);
-            stats_.minStepDeg = std::min(stats_.minStepDeg, step);
-            prev = std::move(s);
-            s = std::move(n);
-            afterAccepted(s, ev, cycle, step, worstMappingDiff, largestFilmForce);
-            lastEv = ev;
-            haveLast = true;
-            StepRecord rec = record(s, ev, cycle, step, iterations);
-            cycleRecords.push_back(rec);
-            cycleSince.push_back(s.crankDeg - cycleStart);
-            if (cb.onStep) cb.onStep(rec);
-            if (atSnapshot) takeSnapshot(s, ev);
-            control.accepted(step, ratio);
-            if (cb.progress && s.crankDeg >= nextProgress) {
-                nextProgress += 30.0;
-                cb.progress(progress.stepLine(cycleCrankDeg(s.crankDeg, cycle), (s.crankDeg - cycleStart) / (cycleEnd - cycleStart),
-                                              tRun.seconds(), s.x[0], s.x[1], iterations, step));
-            }
-        }
-        stats_.cycles = cycle;
-        cyclePeriodicity(cycle, cycleRecords, cycleSince, previousCycle, previousSince);
-        if (cb.progress)
-            cb.progress(progress.cycleDoneLine(tRun.seconds(), previousCycle.empty() ? std::nullopt
-                                                                                   : std::optional(stats_.periodicityError)));
-        const bool last = stats_.periodic || cycle == T.maxCycles || (spanDeg > 0.0 && cycleEnd >= T.startDeg + spanDeg - 1e-9);
-        if (cb.onCycleEnd) cb.onCycleEnd(cycle, snapshots, last);
-        if (last) break;
-        previousCycle = cycleRecords;
-        previousSince = cycleSince;
+    WorkTally counted;  // the work already in stats_
+    double filmT0 = 0.0, structT0 = 0.0;
+};
+
+std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
+    RunLoop loop(cb, spanDeg, case_.time, case_.output.vtkEveryDeg, kin_.secondsPerDegree());
+    startRun(loop);
+    for (loop.cycle = 1; loop.cycle <= case_.time.maxCycles; ++loop.cycle) {
+        openCycle(loop);
+        while (loop.s.crankDeg < loop.cycleEnd - 1e-9) tryStep(loop);
+        if (closeCycle(loop)) break;
     }
-    addWork(counted);
-    stats_.timings.dynamics = tRun.seconds() - (stats_.timings.film - filmT0) - (stats_.timings.structure - structT0);
-    return cycleRecords;
+    addWork(loop.counted);
+    stats_.timings.dynamics =
+        loop.clock.seconds() - (stats_.timings.film - loop.filmT0) - (stats_.timings.structure - loop.structT0);
+    return loop.records;
+}
+
+void PistonSimulation::startRun(RunLoop& loop) {
+    setUpLinerOil();
+    loop.s = initialState(loop.cb);
+    loop.prev = loop.s;
+    stats_ = RunStatistics{.timings = stats_.timings};
+    stats_.minStepDeg = case_.time.maxStepDeg;
+    loop.filmT0 = stats_.timings.film;
+    loop.structT0 = stats_.timings.structure;
+    loop.counted = work_;
+}
+
+void PistonSimulation::takeSnapshot(RunLoop& loop, const StepEvaluation& ev) {
+    ++loop.snapshots;
+    if (loop.cb.onSnapshot) loop.cb.onSnapshot(snapshot(loop.s, ev, loop.cycle));
+}
+
+void PistonSimulation::openCycle(RunLoop& loop) {
+    const TimeSpec& T = case_.time;
+    loop.cycleStart = T.startDeg + 720.0 * (loop.cycle - 1);
+    loop.cycleEnd = loop.spanDeg > 0.0 ? std::min(loop.cycleStart + 720.0, T.startDeg + loop.spanDeg)
+                                       : loop.cycleStart + 720.0;
+    loop.records.clear();
+    loop.since.clear();
+    loop.progress.startCycle(loop.cycle, loop.clock.seconds());
+    loop.snapshots = 0;
+    if (loop.haveLast) {
+        // The boundary point opens the new cycle's records too (its metrics and its 0° snapshot);
+        // it is the last cycle's final step, written to the history once, there.
+        loop.records.push_back(record(loop.s, loop.lastEv, loop.cycle, 0.0, 0));
+        loop.since.push_back(loop.s.crankDeg - loop.cycleStart);
+        if (case_.output.vtkEveryDeg > 0.0) takeSnapshot(loop, loop.lastEv);
+    }
+    loop.nextProgress = loop.cycleStart;
+}
+
+void PistonSimulation::tryStep(RunLoop& loop) {
+    bool atSnapshot = false;
+    const double step = loop.control.planned(loop.s.crankDeg, loop.cycleStart, loop.cycleEnd, atSnapshot);
+    StepState n;
+    int iterations = 0;
+    std::string failure;
+    const bool ok = stepper_->advance(loop.s, loop.prev, step, n, loop.ev, iterations, failure);
+    const double ratio = ok ? loop.control.errorRatio(loop.s, n, step) : 0.0;
+    if (!ok || ratio > 1.0) {
+        ++stats_.rejectedSteps;
+        if (!loop.control.rejected(step, ok, ratio)) {
+            addWork(loop.counted);
+            throw std::runtime_error(stepSizeExhausted(loop.s, loop.cycle, ok, ratio, failure));
+        }
+        return;
+    }
+    acceptStep(loop, std::move(n), step, iterations, atSnapshot);
+    loop.control.accepted(step, ratio);
+    progressLine(loop, iterations, step);
+}
+
+void PistonSimulation::acceptStep(RunLoop& loop, StepState n, double step, int iterations, bool atSnapshot) {
+    addWork(loop.counted);
+    requireBoundedMotion(n, loop.cycle);
+    advanceLinerOil(loop.s, loop.ev, n);
+    ++stats_.steps;
+    stepper_->stepAccepted();
+    stats_.maxIterations = std::max(stats_.maxIterations, iterations);
+    stats_.minStepDeg = std::min(stats_.minStepDeg, step);
+    loop.prev = std::move(loop.s);
+    loop.s = std::move(n);
+    afterAccepted(loop.s, loop.ev, loop.cycle, step, loop.worstMappingDiff, loop.largestFilmForce);
+    loop.lastEv = loop.ev;
+    loop.haveLast = true;
+    StepRecord rec = record(loop.s, loop.ev, loop.cycle, step, iterations);
+    loop.records.push_back(rec);
+    loop.since.push_back(loop.s.crankDeg - loop.cycleStart);
+    if (loop.cb.onStep) loop.cb.onStep(rec);
+    if (atSnapshot) takeSnapshot(loop, loop.ev);
+}
+
+void PistonSimulation::progressLine(RunLoop& loop, int iterations, double step) const {
+    const StepState& s = loop.s;
+    if (!loop.cb.progress || s.crankDeg < loop.nextProgress) return;
+    loop.nextProgress += 30.0;
+    loop.cb.progress(loop.progress.stepLine(cycleCrankDeg(s.crankDeg, loop.cycle),
+                                            (s.crankDeg - loop.cycleStart) / (loop.cycleEnd - loop.cycleStart),
+                                            loop.clock.seconds(), s.x[0], s.x[1], iterations, step));
+}
+
+bool PistonSimulation::closeCycle(RunLoop& loop) {
+    const TimeSpec& T = case_.time;
+    stats_.cycles = loop.cycle;
+    cyclePeriodicity(loop.cycle, loop.records, loop.since, loop.previous, loop.previousSince);
+    if (loop.cb.progress)
+        loop.cb.progress(loop.progress.cycleDoneLine(
+            loop.clock.seconds(), loop.previous.empty() ? std::nullopt : std::optional(stats_.periodicityError)));
+    const bool last = stats_.periodic || loop.cycle == T.maxCycles ||
+                      (loop.spanDeg > 0.0 && loop.cycleEnd >= T.startDeg + loop.spanDeg - 1e-9);
+    if (loop.cb.onCycleEnd) loop.cb.onCycleEnd(loop.cycle, loop.snapshots, last);
+    if (!last) {
+        loop.previous = loop.records;
+        loop.previousSince = loop.since;
+    }
+    return last;
 }
 
 }  // namespace flexehd::cosim

@@ -137,8 +137,17 @@ public:
     ClearanceRange centredClearance(double crankDeg) const;
 
 private:
+    struct RunLoop;
+    // The stages of run: the start, a cycle's opening, one step's attempt and its acceptance, the
+    // progress line, the cycle's close (true: the run's last).
+    void startRun(RunLoop& loop);
+    void openCycle(RunLoop& loop);
+    void tryStep(RunLoop& loop);
+    void acceptStep(RunLoop& loop, StepState n, double step, int iterations, bool atSnapshot);
+    void takeSnapshot(RunLoop& loop, const StepEvaluation& ev);
+    void progressLine(RunLoop& loop, int iterations, double step) const;
+    bool closeCycle(RunLoop& loop);
     StepRecord record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, int iterations) const;
-    // The stages of run (PistonSimulation.cpp).
     StepState initialState(const SimulationCallbacks& cb) const;
     /// After an accepted step: the load-mapping check and the observers.
     void afterAccepted(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, double& worstDiff,
