@@ -229,7 +229,6 @@ void PistonSimulation::cyclePeriodicity(int cycleNumber, const std::vector<StepR
                                         const std::vector<double>& previousSince) {
     const TimeSpec& T = case_.time;
     if (carriesOil()) cycleOil(cycle);
-    for (RunObserver* o : observers_) o->cycleEnded(cycleNumber);
     if (previous.empty()) return;  // this cycle vs the previous one
     stats_.periodicityError = periodicityError(cycle, since, previous, previousSince);
     stats_.periodic = stats_.periodicityError <= T.periodicityTolerance &&
@@ -422,7 +421,43 @@ struct PistonSimulation::RunLoop {
     double filmT0 = 0.0, structT0 = 0.0;
 };
 
+namespace {
+
+// The callbacks of a run as its last observer.
+class CallbackObserver final : public RunObserver {
+public:
+    explicit CallbackObserver(const SimulationCallbacks& cb) : cb_(cb) {}
+    void recorded(const StepRecord& row) override {
+        if (cb_.onStep) cb_.onStep(row);
+    }
+    void snapshotTaken(const Snapshot& s) override {
+        if (cb_.onSnapshot) cb_.onSnapshot(s);
+    }
+    void cycleEnded(const CycleEnd& e) override {
+        if (cb_.onCycleEnd) cb_.onCycleEnd(e.cycle, e.snapshots, e.last);
+    }
+
+private:
+    const SimulationCallbacks& cb_;
+};
+
+// Keeps an observer in a list while it lives.
+class ObserverDuringRun {
+public:
+    ObserverDuringRun(std::vector<RunObserver*>& list, RunObserver& o) : list_(list) { list_.push_back(&o); }
+    ~ObserverDuringRun() { list_.pop_back(); }
+    ObserverDuringRun(const ObserverDuringRun&) = delete;
+    ObserverDuringRun& operator=(const ObserverDuringRun&) = delete;
+
+private:
+    std::vector<RunObserver*>& list_;
+};
+
+}  // namespace
+
 std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
+    CallbackObserver callbacks(cb);
+    const ObserverDuringRun during(observers_, callbacks);
     RunLoop loop(cb, spanDeg, case_.time, case_.output.vtkEveryDeg, kin_.secondsPerDegree());
     startRun(loop);
     for (loop.cycle = 1; loop.cycle <= case_.time.maxCycles; ++loop.cycle) {
@@ -449,7 +484,8 @@ void PistonSimulation::startRun(RunLoop& loop) {
 
 void PistonSimulation::takeSnapshot(RunLoop& loop, const StepEvaluation& ev) {
     ++loop.snapshots;
-    if (loop.cb.onSnapshot) loop.cb.onSnapshot(snapshot(loop.s, ev, loop.cycle));
+    const Snapshot taken = snapshot(loop.s, ev, loop.cycle);
+    for (RunObserver* o : observers_) o->snapshotTaken(taken);
 }
 
 void PistonSimulation::openCycle(RunLoop& loop) {
@@ -508,7 +544,7 @@ void PistonSimulation::acceptStep(RunLoop& loop, StepState n, double step, int i
     StepRecord rec = record(loop.s, loop.ev, loop.cycle, step, iterations);
     loop.records.push_back(rec);
     loop.since.push_back(loop.s.crankDeg - loop.cycleStart);
-    if (loop.cb.onStep) loop.cb.onStep(rec);
+    for (RunObserver* o : observers_) o->recorded(rec);
     if (atSnapshot) takeSnapshot(loop, loop.ev);
 }
 
@@ -530,7 +566,7 @@ bool PistonSimulation::closeCycle(RunLoop& loop) {
             loop.clock.seconds(), loop.previous.empty() ? std::nullopt : std::optional(stats_.periodicityError)));
     const bool last = stats_.periodic || loop.cycle == T.maxCycles ||
                       (loop.spanDeg > 0.0 && loop.cycleEnd >= T.startDeg + loop.spanDeg - 1e-9);
-    if (loop.cb.onCycleEnd) loop.cb.onCycleEnd(loop.cycle, loop.snapshots, last);
+    for (RunObserver* o : observers_) o->cycleEnded({loop.cycle, loop.snapshots, last});
     if (!last) {
         loop.previous = loop.records;
         loop.previousSince = loop.since;

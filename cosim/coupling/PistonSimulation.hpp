@@ -19,6 +19,7 @@
 #include "cosim/contact/FilmContact.hpp"
 #include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/RunObserver.hpp"
+#include "cosim/coupling/Snapshot.hpp"
 #include "cosim/coupling/StepRecord.hpp"
 #include "cosim/engine/CrankKinematics.hpp"
 #include "cosim/engine/CylinderPressure.hpp"
@@ -40,24 +41,6 @@ namespace flexehd::cosim {
 class StepSolver;
 struct StepState;
 struct StepEvaluation;
-
-/// Film and body state at one written crank angle (the VTK snapshots).
-struct Snapshot {
-    int cycle = 0;
-    double crankDeg = 0.0;       ///< °, the crank angle 0–720 (0 = gas-exchange TDC), as in StepRecord
-    double continuousDeg = 0.0;  ///< °, the continuous crank angle: time.start_deg + degrees turned
-    double pinHeight = 0.0;      ///< m, cylinder-frame z of the pin axis (crank axis at 0)
-    double linerOffset = 0.0;    ///< m, liner-frame z of the piston frame's origin
-    double lateral = 0.0, tilt = 0.0;
-    Eigen::VectorXd pressure, filmThickness, contactPressure, shearStress, cavitation;
-    Eigen::VectorXd filmFraction;  ///< mass-conserving film: φ per node (empty with the Reynolds condition)
-    /// Mass-conserving film on a liner oil layer (lubricant.supply: liner_layer): the layer outside
-    /// the skirt per cell and grid column (m, volume per liner area; cell-major, index c × nθ + j;
-    /// empty otherwise) at the liner-frame z of the cells' centres (m).
-    Eigen::VectorXd linerOil;
-    std::vector<double> linerOilZ;
-    Eigen::VectorXd pistonModal, linerModal;  ///< modal coordinates (empty for rigid bodies)
-};
 
 struct Timings {
     double setup = 0.0;      ///< s: bodies, mappings, compliance
@@ -106,8 +89,8 @@ public:
     /// A further film contact of the piston, beside the skirt's (before run). Its modal loads and
     /// film changes use the same coordinates as the skirt's: the piston's, then the liner's.
     void addContact(std::unique_ptr<FilmContact> contact);
-    /// An observer of the run's accepted steps and cycle ends (before run; not owned, it must
-    /// outlive the run).
+    /// An observer of the run's accepted steps, history rows, snapshots and cycle ends (before run;
+    /// not owned, it must outlive the run). The callbacks given to run are its last observer.
     void addObserver(RunObserver& observer) { observers_.push_back(&observer); }
 
     /// Runs the cycles; records of the final cycle are returned. Throws std::runtime_error with a
@@ -152,8 +135,8 @@ private:
     /// After an accepted step: the load-mapping check and the observers.
     void afterAccepted(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg, double& worstDiff,
                        double& largestForce);
-    /// The cycle's end: the observers, and its periodicity against the previous one (motion, and
-    /// the oil of a mass-conserving film) into stats_.
+    /// The cycle's periodicity against the previous one (motion, and the oil of a mass-conserving
+    /// film) into stats_.
     void cyclePeriodicity(int cycleNumber, const std::vector<StepRecord>& cycle, const std::vector<double>& since,
                           const std::vector<StepRecord>& previous, const std::vector<double>& previousSince);
     /// The last cycle's oil figures into stats_ (mass-conserving film).

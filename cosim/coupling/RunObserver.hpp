@@ -1,8 +1,10 @@
 #pragma once
 // RunObserver: what follows a run from outside the master (docs/coupling.md §1, "Observers"):
-// every accepted step with every contact's film, and the end of each cycle. Results that are not
-// the master's business — the wear maps, say — subscribe with PistonSimulation::addObserver
-// instead of being built into the cycle loop.
+// every accepted step with every contact's film, its history row, every snapshot, and the end of
+// each cycle. The results — history.csv, the VTK series, the wear maps — subscribe with
+// PistonSimulation::addObserver instead of being built into the cycle loop.
+#include "cosim/coupling/Snapshot.hpp"
+#include "cosim/coupling/StepRecord.hpp"
 #include "cosim/coupling/StepState.hpp"
 
 namespace flexehd::cosim {
@@ -16,13 +18,25 @@ struct AcceptedStep {
     double seconds = 0.0;              ///< s, the same step
 };
 
+/// The end of a cycle as the observers see it.
+struct CycleEnd {
+    int cycle = 0;      ///< 1-based
+    int snapshots = 0;  ///< the snapshots it took
+    bool last = false;  ///< the run's last cycle (periodic, the cycle limit or the run's span)
+};
+
 class RunObserver {
 public:
     virtual ~RunObserver() = default;
     /// After each accepted step, in order.
     virtual void stepAccepted(const AcceptedStep& /*step*/) {}
-    /// After the last step of each cycle (also a cycle cut short by the run's span).
-    virtual void cycleEnded(int /*cycle*/) {}
+    /// The history row of each accepted step, after stepAccepted.
+    virtual void recorded(const StepRecord& /*row*/) {}
+    /// Each snapshot as it is taken (every output.vtk_every_deg of every cycle).
+    virtual void snapshotTaken(const Snapshot& /*snapshot*/) {}
+    /// After the last step of each cycle (also a cycle cut short by the run's span), once its
+    /// periodicity is known.
+    virtual void cycleEnded(const CycleEnd& /*end*/) {}
 };
 
 }  // namespace flexehd::cosim

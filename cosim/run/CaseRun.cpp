@@ -130,6 +130,45 @@ void writeSummary(const std::string& dir, const nlohmann::json& doc) {
     fem::writeTextAtomically(dir + "/summary.json", doc.dump(2) + "\n");
 }
 
+// The run's files as an observer of it: history.csv row by row, the VTK series snapshot by
+// snapshot, each cycle's series committed at its end; the seconds they take inside the run.
+class RunFiles final : public RunObserver {
+public:
+    RunFiles(const EngineCase& c, const PistonSimulation& sim, HistoryWriter& history, FieldSeriesWriter& fields,
+             const RunLog& log)
+        : c_(c), sim_(sim), history_(history), fields_(fields), log_(log) {}
+
+    void recorded(const StepRecord& row) override {
+        const fem::Stopwatch w;
+        history_.append(row);
+        seconds_ += w.seconds();
+    }
+    void snapshotTaken(const Snapshot& s) override {
+        const fem::Stopwatch w;
+        writeSnapshot(fields_, c_, sim_, s);
+        seconds_ += w.seconds();
+    }
+    void cycleEnded(const CycleEnd& e) override {
+        if (e.snapshots == 0) return;
+        const fem::Stopwatch w;
+        fields_.commit();  // the collections list this cycle from now on
+        seconds_ += w.seconds();
+        if (e.last)
+            say(log_.info, fmt::format("VTK series: the {} snapshots of cycle {} in {}/film.pvd", e.snapshots, e.cycle,
+                                       c_.output.directory));
+    }
+    /// Seconds spent writing inside the run.
+    double seconds() const { return seconds_; }
+
+private:
+    const EngineCase& c_;
+    const PistonSimulation& sim_;
+    HistoryWriter& history_;
+    FieldSeriesWriter& fields_;
+    const RunLog& log_;
+    double seconds_ = 0.0;
+};
+
 // The names of the contacts' own history columns.
 std::vector<std::string> columnNames(const std::vector<ContactColumn>& columns) {
     std::vector<std::string> names;
@@ -152,29 +191,11 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     if (SkirtWear::wanted(c)) sim.addObserver(wear.emplace(c, sim));
     reportBodies(c, sim, log);
 
-    double outputInRun = 0.0;  // output inside the step loop
-    HistoryWriter history(dir + "/history.csv", sim.carriesOil(),
-                          columnNames(sim.contactColumns()));
+    HistoryWriter history(dir + "/history.csv", sim.carriesOil(), columnNames(sim.contactColumns()));
     FieldSeriesWriter fields(dir);
+    RunFiles files(c, sim, history, fields, log);
+    sim.addObserver(files);
     SimulationCallbacks cb;
-    cb.onStep = [&](const StepRecord& r) {
-        const fem::Stopwatch w;
-        history.append(r);
-        outputInRun += w.seconds();
-    };
-    cb.onSnapshot = [&](const Snapshot& s) {
-        const fem::Stopwatch w;
-        writeSnapshot(fields, c, sim, s);
-        outputInRun += w.seconds();
-    };
-    cb.onCycleEnd = [&](int cycle, int snapshots, bool last) {
-        if (snapshots == 0) return;
-        const fem::Stopwatch w;
-        fields.commit();  // the collections list this cycle from now on
-        outputInRun += w.seconds();
-        if (last)
-            say(log.info, fmt::format("VTK series: the {} snapshots of cycle {} in {}/film.pvd", snapshots, cycle, dir));
-    };
     cb.progress = log.info;
     const double outputSeconds = c.output.modeShapes ? writeBodyModes(dir, sim, log) : 0.0;
 
@@ -191,7 +212,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     if (wear && wear->finished()) writeWearMaps(dir, sim.film().grid(), wear->maps());  // the last whole cycle's
     CaseRunResult result;
     result.summary =
-        runSummary({c, sim, cycle, status, message, outputSeconds, outputInRun, total.seconds(), wear ? &*wear : nullptr});
+        runSummary({c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(), wear ? &*wear : nullptr});
     writeSummary(dir, result.summary);
     if (status != "ok") throw std::runtime_error(message + " (partial results in " + dir + ")");
     result.cycles = sim.statistics().cycles;

@@ -39,7 +39,7 @@ void SkirtWear::stepAccepted(const AcceptedStep& step) {
     wear_.add(step.evaluation.films.front().pc, sim_.kinematics().at(deg).velocity, sim_.linerOffset(deg), step.seconds);
 }
 
-void SkirtWear::cycleEnded(int /*cycle*/) {
+void SkirtWear::cycleEnded(const CycleEnd& /*end*/) {
     // The largest mean rates of the cycle's maps and where they are (docs/coupling.md §7).
     wear_.finishCycle();
     const lube::FilmGrid& g = sim_.film().grid();

@@ -27,7 +27,7 @@ public:
     static bool wanted(const EngineCase& c);
 
     void stepAccepted(const AcceptedStep& step) override;
-    void cycleEnded(int cycle) override;
+    void cycleEnded(const CycleEnd& end) override;
 
     const ArchardWear& maps() const { return wear_; }
     /// The last finished cycle's maxima (finished() false: none yet).
