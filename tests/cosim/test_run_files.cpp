@@ -1,0 +1,171 @@
+// What a mass-conserving run with wear maps writes, read back from its files (docs/results-format.md):
+// history.csv's oil columns, film.pvd's film fraction, summary.json's oil and wear figures and the
+// wear maps. Each file is held against another: the films' oil of every step against the flows
+// through their edges and sides (the oil's conservation, docs/coupling.md §6), the summary's oil
+// figures against the history's rows, the wear maxima and where they lie against the maps.
+#include "cosim/run/CaseRun.hpp"
+#include "cosim/results/HistoryWriter.hpp"
+#include "cosim/contact/MassConservingFilm.hpp"
+#include "SmallEngineCase.hpp"
+#include "../TestScratch.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStructuredGrid.h>
+#include <vtkXMLStructuredGridReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace flexehd;
+using namespace flexehd::cosim;
+namespace fs = std::filesystem;
+
+namespace {
+
+vtkSmartPointer<vtkStructuredGrid> readVts(const fs::path& p) {
+    vtkNew<vtkXMLStructuredGridReader> reader;
+    reader->SetFileName(p.c_str());
+    reader->Update();
+    return vtkSmartPointer<vtkStructuredGrid>(reader->GetOutput());
+}
+
+std::vector<std::string> pvdFiles(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    const std::regex entry("file=\"([^\"]*)\"");
+    std::vector<std::string> files;
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), entry); it != std::sregex_iterator(); ++it)
+        files.push_back((*it)[1]);
+    return files;
+}
+
+// The largest value of a map's array, its point's z and its angle from +x towards +y (°, 0–360).
+struct MapMaximum {
+    double value = -1.0, z = 0.0, thetaDeg = 0.0;
+};
+
+MapMaximum mapMaximum(const fs::path& p, const char* array) {
+    const auto grid = readVts(p);
+    vtkDataArray* a = grid->GetPointData()->GetArray(array);
+    EXPECT_NE(a, nullptr) << p << " has no " << array;
+    MapMaximum m;
+    if (!a) return m;
+    for (vtkIdType k = 0; k < a->GetNumberOfTuples(); ++k) {
+        const double v = a->GetTuple1(k);
+        EXPECT_TRUE(std::isfinite(v));
+        if (v > m.value) {
+            double x[3];
+            grid->GetPoint(k, x);
+            m = {v, x[2], std::fmod(std::atan2(x[1], x[0]) * 180.0 / std::numbers::pi + 360.0, 360.0)};
+        }
+    }
+    return m;
+}
+
+double angleApart(double a, double b) {
+    const double d = std::fmod(std::abs(a - b), 360.0);
+    return std::min(d, 360.0 - d);
+}
+
+}  // namespace
+
+TEST(RunFiles, AStarvedRunWithWearReadsBackConsistentlyFromItsFiles) {
+    const fs::path dir = test::scratchDir();
+    EngineCase c = test::smallCase();
+    c.lubricant.cavitation = CavitationModel::MassConserving;
+    c.lubricant.supply.model = OilSupplyModel::LinerLayer;
+    c.lubricant.supply.layer = {{0.0, 1e-6}};  // thin: the skirt touches the liner, so it wears
+    c.contact.pistonWearCoefficient = 1e-16;
+    c.contact.linerWearCoefficient = 2e-16;
+    c.output.directory = (dir / "out").string();
+    c.output.vtkEveryDeg = 90.0;
+    runCase(c, {});
+    const fs::path out = dir / "out";
+
+    // history.csv: every step's films' oil changes by the flows through their edges and sides
+    // (backward Euler of the content, to the film solver's tolerance of the step's flow and the
+    // 9 printed digits). The step's length is read from step_deg (time_s's digits resolve only
+    // 1e-9 of the time since the start, 1e-5 of a step).
+    const std::vector<StepRecord> r = HistoryWriter::read((out / "history.csv").string());
+    ASSERT_GT(r.size(), 100u);
+    const double secondsPerDegree = 1.0 / (6.0 * c.engine.speedRpm);
+    double worst = 0.0, leaked = 0.0;
+    for (std::size_t i = 1; i < r.size(); ++i) {
+        const double dt = r[i].stepDeg * secondsPerDegree;
+        const double flow = dt * (r[i].oilIn + r[i].oilOut);
+        const double change = r[i].filmOil - r[i - 1].filmOil;
+        const double net = dt * (r[i].oilIn - r[i].oilOut - r[i].sideLeakage);
+        worst = std::max(worst, std::abs(change - net) / (10.0 * MassConservingFilm::kTolerance * flow +
+                                                          2e-9 * std::max(r[i].filmOil, r[i - 1].filmOil)));
+        leaked += (r[i].time - r[i - 1].time) * r[i].sideLeakage;  // as the summary sums it
+        EXPECT_GE(r[i].wettedShare, 0.0);
+        EXPECT_LE(r[i].wettedShare, 1.0);
+        EXPECT_GT(r[i].linerOil, 0.0);
+    }
+    EXPECT_LT(worst, 1.0);
+
+    // summary.json: the oil figures are the history's last cycle's.
+    std::ifstream s(out / "summary.json");
+    const nlohmann::json d = nlohmann::json::parse(s);
+    const nlohmann::json& oil = d.at("oil");
+    const StepRecord &a = r.front(), &b = r.back();
+    EXPECT_NEAR(oil.at("film_volume_m3").get<double>(), b.filmOil, 1e-8 * b.filmOil);
+    EXPECT_NEAR(oil.at("liner_volume_m3").get<double>(), b.linerOil, 1e-8 * b.linerOil);
+    EXPECT_NEAR(oil.at("replenished_per_cycle_m3").get<double>(), b.replenishedOil - a.replenishedOil,
+                1e-8 * std::abs(b.replenishedOil) + 1e-20);
+    EXPECT_NEAR(oil.at("side_leakage_per_cycle_m3").get<double>(), leaked, 1e-6 * std::abs(leaked) + 1e-20);
+    const double start = a.linerOil + a.filmOil, end = b.linerOil + b.filmOil;
+    EXPECT_NEAR(oil.at("periodicity_error").get<double>(), std::abs(end - start) / end, 1e-6);
+
+    // film.pvd: every snapshot has the film fraction in [0, 1], and the cavitation fraction is its
+    // complement wherever the film is cavitated.
+    const std::vector<std::string> snaps = pvdFiles(out / "film.pvd");
+    ASSERT_GE(snaps.size(), 4u);
+    int cavitated = 0;
+    for (const std::string& f : snaps) {
+        const auto grid = readVts(out / f);
+        vtkDataArray* phi = grid->GetPointData()->GetArray("film_fraction");
+        vtkDataArray* cav = grid->GetPointData()->GetArray("cavitation_fraction");
+        ASSERT_NE(phi, nullptr) << f;
+        ASSERT_NE(cav, nullptr) << f;
+        ASSERT_EQ(phi->GetNumberOfTuples(), cav->GetNumberOfTuples());
+        for (vtkIdType k = 0; k < phi->GetNumberOfTuples(); ++k) {
+            const double p = phi->GetTuple1(k), q = cav->GetTuple1(k);
+            EXPECT_GE(p, 0.0);
+            EXPECT_LE(p, 1.0);
+            if (q > 0.0) {
+                ++cavitated;
+                EXPECT_NEAR(p + q, 1.0, 1e-6) << f << " point " << k;
+            }
+        }
+    }
+    EXPECT_GT(cavitated, 0);
+
+    // The wear maps: the summary's largest rates and where they lie are the maps'.
+    const nlohmann::json& wear = d.at("wear");
+    const MapMaximum piston = mapMaximum(out / "wear_piston.vts", "wear_rate_m_per_h");
+    const MapMaximum liner = mapMaximum(out / "wear_liner.vts", "wear_rate_m_per_h");
+    ASSERT_GT(piston.value, 0.0);
+    ASSERT_GT(liner.value, 0.0);
+    EXPECT_NEAR(wear.at("piston_rate_max_m_per_h").get<double>(), piston.value, 1e-6 * piston.value);
+    EXPECT_NEAR(wear.at("piston_max_z_m").get<double>(), piston.z, 1e-9);
+    EXPECT_LT(angleApart(wear.at("piston_max_theta_deg").get<double>(), piston.thetaDeg), 1e-4);
+    EXPECT_NEAR(wear.at("liner_rate_max_m_per_h").get<double>(), liner.value, 1e-6 * liner.value);
+    EXPECT_NEAR(wear.at("liner_max_depth_m").get<double>(), -liner.z, 1e-9);
+    EXPECT_LT(angleApart(wear.at("liner_max_theta_deg").get<double>(), liner.thetaDeg), 1e-4);
+}
