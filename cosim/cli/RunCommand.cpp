@@ -45,6 +45,16 @@ void printResult(const cosim::CaseRunResult& r, const std::string& dir) {
                : r.periodic ? " (periodic)"
                             : " (NOT periodic within the tolerance)",
                r.seconds, dir);
+    if (doc.contains("cycle_to_cycle")) {  // not periodic: how much the cycles after the first differ
+        const nlohmann::json& cc = doc["cycle_to_cycle"];
+        const auto& cycles = cc["cycles"];
+        fmt::print("cycles {}-{}: friction {:.1f} +- {:.2g} W (mean +- std), min film {:.2f} .. {:.2f} um, lateral "
+                   "{:+.1f} .. {:+.1f} um (cycle_to_cycle in summary.json)\n",
+                   cycles.front().get<int>(), cycles.back().get<int>(), cc["friction_power_mean_w"]["mean"].get<double>(),
+                   cc["friction_power_mean_w"]["std"].get<double>(), cc["min_film_m"]["min"].get<double>() * 1e6,
+                   cc["min_film_m"]["max"].get<double>() * 1e6, cc["lateral_min_m"]["min"].get<double>() * 1e6,
+                   cc["lateral_max_m"]["max"].get<double>() * 1e6);
+    }
 }
 
 void runCommand(const RunArgs& a) {

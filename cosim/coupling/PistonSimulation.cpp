@@ -566,7 +566,7 @@ bool PistonSimulation::closeCycle(RunLoop& loop) {
             loop.clock.seconds(), loop.previous.empty() ? std::nullopt : std::optional(stats_.periodicityError)));
     const bool last = stats_.periodic || loop.cycle == T.maxCycles ||
                       (loop.spanDeg > 0.0 && loop.cycleEnd >= T.startDeg + loop.spanDeg - 1e-9);
-    for (RunObserver* o : observers_) o->cycleEnded({loop.cycle, loop.snapshots, last});
+    for (RunObserver* o : observers_) o->cycleEnded({loop.cycle, loop.snapshots, last, &loop.records});
     if (!last) {
         loop.previous = loop.records;
         loop.previousSince = loop.since;

@@ -23,6 +23,9 @@ struct CycleEnd {
     int cycle = 0;      ///< 1-based
     int snapshots = 0;  ///< the snapshots it took
     bool last = false;  ///< the run's last cycle (periodic, the cycle limit or the run's span)
+    /// The cycle's history rows as the periodicity and the cycle figures see them: from the
+    /// second cycle on, the first is the previous cycle's last state.
+    const std::vector<StepRecord>* records = nullptr;
 };
 
 class RunObserver {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <numbers>
 #include <optional>
@@ -26,10 +27,37 @@ struct Entry {
     std::function<Json(const Source&)> value;  // null: not written
 };
 
+// The cycle figures: summary.json's key and its value of a cycle's CycleMetrics.
+struct Figure {
+    const char* key;
+    double (*value)(const CycleMetrics&);
+};
+
+const std::vector<Figure>& figures() {
+    static const std::vector<Figure> f{
+        {"friction_power_mean_w", [](const CycleMetrics& m) { return m.frictionPowerMean; }},
+        {"boundary_friction_power_mean_w", [](const CycleMetrics& m) { return m.boundaryFrictionPowerMean; }},
+        {"friction_energy_per_cycle_j", [](const CycleMetrics& m) { return m.frictionEnergy; }},
+        {"fmep_pa", [](const CycleMetrics& m) { return m.fmep; }},
+        {"slap_kinetic_energy_max_j", [](const CycleMetrics& m) { return m.slapEnergyMax; }},
+        {"slap_kinetic_energy_max_crank_deg", [](const CycleMetrics& m) { return m.slapEnergyDeg; }},
+        {"lateral_min_m", [](const CycleMetrics& m) { return m.lateralMin; }},
+        {"lateral_max_m", [](const CycleMetrics& m) { return m.lateralMax; }},
+        {"tilt_min_rad", [](const CycleMetrics& m) { return m.tiltMin; }},
+        {"tilt_max_rad", [](const CycleMetrics& m) { return m.tiltMax; }},
+        {"min_film_m", [](const CycleMetrics& m) { return m.minFilm; }},
+        {"min_film_crank_deg", [](const CycleMetrics& m) { return m.minFilmDeg; }},
+        {"max_pressure_pa", [](const CycleMetrics& m) { return m.maxPressure; }},
+        {"contact_force_max_n", [](const CycleMetrics& m) { return m.contactForceMax; }},
+        {"hard_contact_force_max_n", [](const CycleMetrics& m) { return m.hardContactForceMax; }},
+        {"side_force_max_n", [](const CycleMetrics& m) { return m.sideForceMax; }},
+    };
+    return f;
+}
+
 // A cycle figure: written when the last cycle has two records or more.
-template <class F>
-Entry metric(const char* key, F f) {
-    return {key, [f](const Source& s) { return s.m ? Json(f(*s.m)) : Json(); }};
+Entry metric(const Figure& f) {
+    return {f.key, [v = f.value](const Source& s) { return s.m ? Json(v(*s.m)) : Json(); }};
 }
 
 // The undeformed film with the piston centred (the hot running clearance with a thermal file)
@@ -62,22 +90,9 @@ const std::vector<Entry>& entries() {
         {"bodies.piston", [](const Source& s) { return Json(bodyModel(s.in.c.pistonBody.model)); }},
         {"bodies.liner", [](const Source& s) { return Json(bodyModel(s.in.c.linerBody.model)); }},
         {"cycle", [](const Source& s) { return s.m ? Json(s.in.cycle.back().cycle) : Json(); }},
-        metric("friction_power_mean_w", [](const CycleMetrics& m) { return m.frictionPowerMean; }),
-        metric("boundary_friction_power_mean_w", [](const CycleMetrics& m) { return m.boundaryFrictionPowerMean; }),
-        metric("friction_energy_per_cycle_j", [](const CycleMetrics& m) { return m.frictionEnergy; }),
-        metric("fmep_pa", [](const CycleMetrics& m) { return m.fmep; }),
-        metric("slap_kinetic_energy_max_j", [](const CycleMetrics& m) { return m.slapEnergyMax; }),
-        metric("slap_kinetic_energy_max_crank_deg", [](const CycleMetrics& m) { return m.slapEnergyDeg; }),
-        metric("lateral_min_m", [](const CycleMetrics& m) { return m.lateralMin; }),
-        metric("lateral_max_m", [](const CycleMetrics& m) { return m.lateralMax; }),
-        metric("tilt_min_rad", [](const CycleMetrics& m) { return m.tiltMin; }),
-        metric("tilt_max_rad", [](const CycleMetrics& m) { return m.tiltMax; }),
-        metric("min_film_m", [](const CycleMetrics& m) { return m.minFilm; }),
-        metric("min_film_crank_deg", [](const CycleMetrics& m) { return m.minFilmDeg; }),
-        metric("max_pressure_pa", [](const CycleMetrics& m) { return m.maxPressure; }),
-        metric("contact_force_max_n", [](const CycleMetrics& m) { return m.contactForceMax; }),
-        metric("hard_contact_force_max_n", [](const CycleMetrics& m) { return m.hardContactForceMax; }),
-        metric("side_force_max_n", [](const CycleMetrics& m) { return m.sideForceMax; }),
+    };
+    for (const Figure& f : figures()) t.push_back(metric(f));
+    t.insert(t.end(), {
         {"cycles", [](const Source& s) { return Json(s.st().cycles); }},
         {"periodic", [](const Source& s) { return Json(s.st().periodic); }},
         {"periodicity_error_m", [](const Source& s) { return Json(s.st().periodicityError); }},
@@ -118,7 +133,7 @@ const std::vector<Entry>& entries() {
          [](const Source& s) { return Json(std::max(0.0, s.st().timings.dynamics - s.in.outputInRun)); }},
         {"timings_s.output", [](const Source& s) { return Json(s.in.outputSeconds + s.in.outputInRun); }},
         {"timings_s.total", [](const Source& s) { return Json(s.in.totalSeconds); }},
-    };
+    });
     addCentredClearance(t);
     return t;
     }();
@@ -162,6 +177,32 @@ void addContactFigures(const RunSummaryInput& in, Json& d) {
         }
 }
 
+// A run that did not become periodic: each cycle figure's mean, least, largest value and standard
+// deviation over the cycles after the first (the start's transient), when there are two or more.
+void addCycleToCycle(const RunSummaryInput& in, Json& d) {
+    if (!in.cycles || in.sim.statistics().periodic) return;
+    std::vector<const CycleSeries::Cycle*> used;
+    for (const CycleSeries::Cycle& c : in.cycles->cycles())
+        if (c.number > 1) used.push_back(&c);
+    if (used.size() < 2) return;
+    Json& out = d["cycle_to_cycle"];
+    for (const CycleSeries::Cycle* c : used) out["cycles"].push_back(c->number);
+    const double n = static_cast<double>(used.size());
+    for (const Figure& f : figures()) {
+        double sum = 0.0, least = f.value(used.front()->metrics), largest = least;
+        for (const CycleSeries::Cycle* c : used) {
+            const double v = f.value(c->metrics);
+            sum += v;
+            least = std::min(least, v);
+            largest = std::max(largest, v);
+        }
+        const double mean = sum / n;
+        double squares = 0.0;
+        for (const CycleSeries::Cycle* c : used) squares += (f.value(c->metrics) - mean) * (f.value(c->metrics) - mean);
+        out[f.key] = {{"mean", mean}, {"min", least}, {"max", largest}, {"std", std::sqrt(squares / n)}};
+    }
+}
+
 }  // namespace
 
 nlohmann::json runSummary(const RunSummaryInput& in) {
@@ -178,6 +219,7 @@ nlohmann::json runSummary(const RunSummaryInput& in) {
         if (!v.is_null()) d[pointer(e.key)] = std::move(v);
     }
     addContactFigures(in, d);
+    addCycleToCycle(in, d);
     return d;
 }
 

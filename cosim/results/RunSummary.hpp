@@ -11,6 +11,7 @@
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/coupling/StepRecord.hpp"
+#include "cosim/results/CycleSeries.hpp"
 #include "cosim/wear/SkirtWear.hpp"
 
 namespace flexehd::cosim {
@@ -25,6 +26,9 @@ struct RunSummaryInput {
     double outputInRun = 0.0;              ///< s, output inside the step loop (history, snapshots)
     double totalSeconds = 0.0;             ///< s, the whole run
     const SkirtWear* wear = nullptr;       ///< the wear maps (null: the case asks for none)
+    /// Every completed cycle's figures (null: none kept): cycle_to_cycle of a run that did not
+    /// become periodic.
+    const CycleSeries* cycles = nullptr;
 };
 
 nlohmann::json runSummary(const RunSummaryInput& in);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cosim/coupling/PistonSimulation.hpp"
+#include "cosim/results/CycleSeries.hpp"
 #include "cosim/results/FieldSeriesWriter.hpp"
 #include "cosim/results/HistoryWriter.hpp"
 #include "cosim/results/WearMapWriter.hpp"
@@ -195,6 +196,8 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     FieldSeriesWriter fields(dir);
     RunFiles files(c, sim, history, fields, log);
     sim.addObserver(files);
+    CycleSeries cycleSeries(c, sim.dynamics());
+    sim.addObserver(cycleSeries);
     SimulationCallbacks cb;
     cb.progress = log.info;
     const double outputSeconds = c.output.modeShapes ? writeBodyModes(dir, sim, log) : 0.0;
@@ -212,7 +215,8 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     if (wear && wear->finished()) writeWearMaps(dir, sim.film().grid(), wear->maps());  // the last whole cycle's
     CaseRunResult result;
     result.summary =
-        runSummary({c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(), wear ? &*wear : nullptr});
+        runSummary({c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(),
+                    wear ? &*wear : nullptr, &cycleSeries});
     writeSummary(dir, result.summary);
     if (status != "ok") throw std::runtime_error(message + " (partial results in " + dir + ")");
     result.cycles = sim.statistics().cycles;

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -168,4 +169,54 @@ TEST(RunFiles, AStarvedRunWithWearReadsBackConsistentlyFromItsFiles) {
     EXPECT_NEAR(wear.at("liner_rate_max_m_per_h").get<double>(), liner.value, 1e-6 * liner.value);
     EXPECT_NEAR(wear.at("liner_max_depth_m").get<double>(), -liner.z, 1e-9);
     EXPECT_LT(angleApart(wear.at("liner_max_theta_deg").get<double>(), liner.thetaDeg), 1e-4);
+}
+
+// A run that does not become periodic reports how its cycles after the first differ: each cycle
+// figure's mean, least, largest value and standard deviation. Checked against the cycles' mean
+// friction power and least film thickness recomputed from history.csv (the trapezoidal rule over
+// each cycle's rows, the previous cycle's last row opening it).
+TEST(RunFiles, ANonPeriodicRunReportsItsCyclesMeanAndSpread) {
+    const fs::path dir = test::scratchDir();
+    EngineCase c = test::smallCase();
+    c.time.maxCycles = 3;
+    c.time.periodicityTolerance = 1e-15;  // m: no run meets it
+    c.output.directory = (dir / "out").string();
+    c.output.vtkEveryDeg = 0.0;
+    runCase(c, {});
+    const std::vector<StepRecord> r = HistoryWriter::read((dir / "out" / "history.csv").string());
+    std::ifstream s(dir / "out" / "summary.json");
+    const nlohmann::json d = nlohmann::json::parse(s);
+    ASSERT_FALSE(d.at("periodic").get<bool>());
+    ASSERT_TRUE(d.contains("cycle_to_cycle"));
+    const nlohmann::json& cc = d.at("cycle_to_cycle");
+    EXPECT_EQ(cc.at("cycles"), nlohmann::json::array({2, 3}));
+
+    std::vector<double> power, film;
+    for (int cycle = 2; cycle <= 3; ++cycle) {
+        std::vector<const StepRecord*> rows;
+        for (std::size_t i = 0; i < r.size(); ++i)
+            if (r[i].cycle == cycle) {
+                if (rows.empty()) rows.push_back(&r[i - 1]);  // the previous cycle's last state
+                rows.push_back(&r[i]);
+            }
+        double energy = 0.0, least = rows.front()->minFilm;
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            energy += 0.5 * (rows[i]->dissipatedPower + rows[i - 1]->dissipatedPower) * (rows[i]->time - rows[i - 1]->time);
+            least = std::min(least, rows[i]->minFilm);
+        }
+        power.push_back(energy / (rows.back()->time - rows.front()->time));
+        film.push_back(least);
+    }
+    const double mean = 0.5 * (power[0] + power[1]), spread = 0.5 * std::abs(power[0] - power[1]);
+    const nlohmann::json& p = cc.at("friction_power_mean_w");
+    std::printf("friction power of cycles 2, 3: %.9g, %.9g W; summary mean %.9g std %.3g\n", power[0], power[1],
+                p.at("mean").get<double>(), p.at("std").get<double>());
+    EXPECT_NEAR(p.at("mean").get<double>(), mean, 1e-7 * mean);
+    EXPECT_NEAR(p.at("min").get<double>(), std::min(power[0], power[1]), 1e-7 * mean);
+    EXPECT_NEAR(p.at("max").get<double>(), std::max(power[0], power[1]), 1e-7 * mean);
+    EXPECT_NEAR(p.at("std").get<double>(), spread, 1e-7 * mean);
+    EXPECT_NEAR(cc.at("min_film_m").at("min").get<double>(), std::min(film[0], film[1]), 1e-8 * std::abs(film[0]));
+    EXPECT_NEAR(cc.at("min_film_m").at("max").get<double>(), std::max(film[0], film[1]), 1e-8 * std::abs(film[0]));
+    // The last cycle's figures stay where they were.
+    EXPECT_NEAR(d.at("friction_power_mean_w").get<double>(), power[1], 1e-7 * mean);
 }
