@@ -27,6 +27,7 @@
 #include "cosim/results/HistoryWriter.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "tests/fem/TestData.hpp"
+#include "VtkReadBack.hpp"
 
 namespace flexehd::cosim {
 namespace {
@@ -35,6 +36,10 @@ namespace fs = std::filesystem;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
+using test::PvdEntry;
+using test::readPvd;
+using test::readVts;
+using test::readVtu;
 
 std::string slurp(const fs::path& p) {
     std::ifstream in(p);
@@ -277,20 +282,6 @@ const std::vector<double> kAxial{0.0, 0.004, 0.010, 0.018, 0.030};  // non-unifo
 
 SnapshotTime at(double time) { return {time, std::fmod(time, 720.0), std::isfinite(time) ? 1 + int(time / 720.0) : 1}; }
 
-vtkSmartPointer<vtkStructuredGrid> readVts(const fs::path& p) {
-    vtkNew<vtkXMLStructuredGridReader> reader;
-    reader->SetFileName(p.c_str());
-    reader->Update();
-    return vtkSmartPointer<vtkStructuredGrid>(reader->GetOutput());
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> readVtu(const fs::path& p) {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(p.c_str());
-    reader->Update();
-    return vtkSmartPointer<vtkUnstructuredGrid>(reader->GetOutput());
-}
-
 // Checks point (i, jj) of the .vts against film node (i, jj mod nθ).
 void expectFilmNode(vtkStructuredGrid* vts, const FilmFixture& f, int i, int jj) {
     const lube::FilmGrid& g = f.grid;
@@ -395,20 +386,6 @@ fem::Mesh oneTet() {
     return m;
 }
 
-struct PvdEntry {
-    double time;
-    std::string file;
-};
-
-std::vector<PvdEntry> readPvd(const fs::path& p) {
-    const std::string text = slurp(p);
-    EXPECT_THAT(text, HasSubstr("type=\"Collection\""));
-    const std::regex entry("<DataSet timestep=\"([^\"]*)\"[^>]*file=\"([^\"]*)\"");
-    std::vector<PvdEntry> out;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it)
-        out.push_back({std::stod((*it)[1]), (*it)[2]});
-    return out;
-}
 
 TEST(FieldSeriesWriter, BodiesAndCollectionsListTheSnapshotsInOrder) {
     const auto dir = test::scratchDir();

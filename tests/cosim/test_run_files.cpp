@@ -7,17 +7,15 @@
 #include "cosim/results/HistoryWriter.hpp"
 #include "cosim/contact/MassConservingFilm.hpp"
 #include "SmallEngineCase.hpp"
+#include "VtkReadBack.hpp"
 #include "../TestScratch.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <vtkDataArray.h>
-#include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkSmartPointer.h>
 #include <vtkStructuredGrid.h>
-#include <vtkXMLStructuredGridReader.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,8 +23,6 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,32 +32,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-vtkSmartPointer<vtkStructuredGrid> readVts(const fs::path& p) {
-    vtkNew<vtkXMLStructuredGridReader> reader;
-    reader->SetFileName(p.c_str());
-    reader->Update();
-    return vtkSmartPointer<vtkStructuredGrid>(reader->GetOutput());
-}
-
-std::vector<std::string> pvdFiles(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string s = text.str();
-    const std::regex entry("file=\"([^\"]*)\"");
-    std::vector<std::string> files;
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), entry); it != std::sregex_iterator(); ++it)
-        files.push_back((*it)[1]);
-    return files;
-}
-
 // The largest value of a map's array, its point's z and its angle from +x towards +y (°, 0–360).
 struct MapMaximum {
     double value = -1.0, z = 0.0, thetaDeg = 0.0;
 };
 
 MapMaximum mapMaximum(const fs::path& p, const char* array) {
-    const auto grid = readVts(p);
+    const auto grid = test::readVts(p);
     vtkDataArray* a = grid->GetPointData()->GetArray(array);
     EXPECT_NE(a, nullptr) << p << " has no " << array;
     MapMaximum m;
@@ -135,15 +112,15 @@ TEST(RunFiles, AStarvedRunWithWearReadsBackConsistentlyFromItsFiles) {
 
     // film.pvd: every snapshot has the film fraction in [0, 1], and the cavitation fraction is its
     // complement wherever the film is cavitated.
-    const std::vector<std::string> snaps = pvdFiles(out / "film.pvd");
+    const std::vector<test::PvdEntry> snaps = test::readPvd(out / "film.pvd");
     ASSERT_GE(snaps.size(), 4u);
     int cavitated = 0;
-    for (const std::string& f : snaps) {
-        const auto grid = readVts(out / f);
+    for (const test::PvdEntry& f : snaps) {
+        const auto grid = test::readVts(out / f.file);
         vtkDataArray* phi = grid->GetPointData()->GetArray("film_fraction");
         vtkDataArray* cav = grid->GetPointData()->GetArray("cavitation_fraction");
-        ASSERT_NE(phi, nullptr) << f;
-        ASSERT_NE(cav, nullptr) << f;
+        ASSERT_NE(phi, nullptr) << f.file;
+        ASSERT_NE(cav, nullptr) << f.file;
         ASSERT_EQ(phi->GetNumberOfTuples(), cav->GetNumberOfTuples());
         for (vtkIdType k = 0; k < phi->GetNumberOfTuples(); ++k) {
             const double p = phi->GetTuple1(k), q = cav->GetTuple1(k);
@@ -151,7 +128,7 @@ TEST(RunFiles, AStarvedRunWithWearReadsBackConsistentlyFromItsFiles) {
             EXPECT_LE(p, 1.0);
             if (q > 0.0) {
                 ++cavitated;
-                EXPECT_NEAR(p + q, 1.0, 1e-6) << f << " point " << k;
+                EXPECT_NEAR(p + q, 1.0, 1e-6) << f.file << " point " << k;
             }
         }
     }
