@@ -15,12 +15,14 @@
 
 #include "cosim/contact/ContactColumns.hpp"
 #include "cosim/contact/CouplingNeeds.hpp"
+#include "cosim/contact/FilmFigures.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
 #include "cosim/oil/LinerOil.hpp"
 #include "lube/FilmIntegrals.hpp"
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,6 +58,9 @@ struct ContactState {
     Eigen::VectorXd fraction;  ///< mass-conserving film: film fraction φ per node (empty: Reynolds)
     double linerOffset = 0.0;  ///< m, the step's liner offset
     OilBalance oilBalance;     ///< mass-conserving film: cumulative volumes
+    /// m, smallest unfloored film thickness over the film's nodes (< 0: the surfaces overlap;
+    /// +∞ for a contact that does not say)
+    double minGap = std::numeric_limits<double>::infinity();
 };
 
 /// A contact's film at one iterate (x, y) of a step.
@@ -135,6 +140,17 @@ public:
     virtual std::vector<ContactColumn> columns() const { return {}; }
     /// The values of columns() at an accepted iterate, appended to `values` in their order.
     virtual void columnValues(const ContactIterate& /*it*/, std::vector<double>& /*values*/) const {}
+    /// The run's own film results (FilmFigures.hpp) at an accepted iterate, and its film fields at
+    /// a snapshot (pistonVelocity in m/s, for the shear stress): a contact that reports them (the
+    /// skirt's) fills them and returns true, and the master asks no further contact; one that does
+    /// not (the default) returns false and reports through columns().
+    virtual bool filmFigures(const ContactIterate& /*it*/, FilmFigures& /*figures*/) const { return false; }
+    virtual bool filmFields(const ContactIterate& /*it*/, double /*pistonVelocity*/, FilmFields& /*fields*/) const {
+        return false;
+    }
+    /// Progress lines for the start of a run (e.g. the clearance the film starts from); none by
+    /// default.
+    virtual std::vector<std::string> startReport() const { return {}; }
 
     /// Its film conserves oil (a mass-conserving film): the run then writes the oil columns and
     /// balances the oil (docs/coupling.md §6); false by default.

@@ -10,14 +10,18 @@
 #include "cosim/mapping/FlexibleBodyLoader.hpp"
 #include "fem/Stopwatch.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <string>
+#include <utility>
 #include <cmath>
 #include <limits>
 
 namespace flexehd::cosim {
 
 
-SkirtContact::SkirtContact(const EngineCase& c, std::function<double(double)> linerOffset)
+SkirtContact::SkirtContact(const EngineCase& c, const CaseBodies& bodies, std::function<double(double)> linerOffset)
     : case_(c),
       linerOffset_(std::move(linerOffset)),
       film_(c.engine, c.piston, c.grid) {
@@ -32,16 +36,16 @@ SkirtContact::SkirtContact(const EngineCase& c, std::function<double(double)> li
                                 : lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
                                                                           c.contact.coatingThickness));
     }
-    if (c.pistonBody.model == BodyModel::Flexible) {
-        piston_ = loadFlexibleSurface(c, c.pistonBody, "piston", FlexibleSurface::Side::Piston, film_.grid());
+    if (bodies.piston) {
+        piston_ = facingSurface(c, bodies.piston, c.pistonBody, "piston", FlexibleSurface::Side::Piston, film_.grid());
         mp_ = piston_->modes();
     }
-    if (c.linerBody.model == BodyModel::Flexible) {
+    if (bodies.liner) {
         // The grid slides over the liner between BDC and TDC (plus a margin of two grid rows).
         const double lo = std::min(linerOffset_(180.0), linerOffset_(0.0));
         const double hi = std::max(linerOffset_(180.0), linerOffset_(0.0));
         const double margin = 2.0 * film_.grid().length() / (film_.grid().nAxial() - 1);
-        liner_ = loadFlexibleSurface(c, c.linerBody, "liner", FlexibleSurface::Side::Liner, film_.grid(),
+        liner_ = facingSurface(c, bodies.liner, c.linerBody, "liner", FlexibleSurface::Side::Liner, film_.grid(),
                                      lo + c.piston.skirtBottom - margin, hi + c.piston.skirtTop + margin);
         ml_ = liner_->modes();
     }
@@ -70,6 +74,8 @@ ContactState SkirtContact::initialState(double linerOffset) const {
     s.hRigid = s.h;
     s.hTotal = s.h;  // undeformed bodies at the start
     s.linerOffset = linerOffset;
+    for (int k = 0; k < film_.grid().size(); ++k)
+        if (film_.grid().kind(k) != lube::NodeKind::Void) s.minGap = std::min(s.minGap, s.hTotal[k]);
     equation_->initialize(s);
     return s;
 }
@@ -213,6 +219,7 @@ ContactState SkirtContact::accepted(const ContactStep& step, const ContactState&
     s.hTotal = it.hTotal;
     s.p = it.p;
     s.linerOffset = step.linerOffset;
+    s.minGap = it.minGap;
     equation_->accept(step, now, it, s);
     return s;
 }
@@ -255,6 +262,73 @@ ClearanceRange SkirtContact::centredClearance(double linerOffset) const {
         }
     r.mean /= std::max(n, 1);
     return r;
+}
+
+bool SkirtContact::filmFigures(const ContactIterate& it, FilmFigures& r) const {
+    const lube::FilmLoads& l = it.loads;
+    r.filmForce = l.pressureForce.x() + l.shearForce.x() + l.boundaryFrictionForce.x();
+    r.filmMoment = l.moment.y();
+    r.contactForce = l.contactForce.x();
+    r.hardContactForce = it.hardForce;
+    r.frictionForce = l.frictionForce().z();
+    r.linerHydrodynamicFriction = l.outerShearForce.z();
+    r.linerBoundaryFriction = -l.boundaryFrictionForce.z();
+    r.dissipatedPower = l.dissipatedPower();
+    r.boundaryFrictionPower = l.boundaryFrictionPower;
+    r.minFilm = it.minGap;  // unfloored: < 0 where the surfaces overlap
+    r.maxPressure = it.p.size() ? it.p.maxCoeff() : 0.0;
+    const lube::FilmGrid& g = film_.grid();
+    if (mp_ + ml_ > 0)
+        for (int k = 0; k < g.size(); ++k)
+            if (g.kind(k) != lube::NodeKind::Void)
+                r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(it.hTotal[k] - it.hRigid[k]));
+    if (it.fraction.size()) {  // the mass-conserving film's wetted share
+        double wet = 0.0, area = 0.0;
+        for (int k = 0; k < g.size(); ++k) {
+            if (g.kind(k) != lube::NodeKind::Film) continue;
+            area += g.area(k);
+            if (it.fraction[k] >= 1.0) wet += g.area(k);
+        }
+        r.wettedShare = area > 0.0 ? wet / area : 0.0;
+    }
+    return true;
+}
+
+bool SkirtContact::filmFields(const ContactIterate& it, double pistonVelocity, FilmFields& sn) const {
+    const lube::FilmGrid& g = film_.grid();
+    sn.pressure = it.p;
+    sn.filmThickness = it.hTotal;  // unfloored: < 0 where the surfaces overlap
+    sn.contactPressure = it.pc;
+    sn.cavitation = Eigen::VectorXd::Zero(g.size());
+    sn.shearStress = Eigen::VectorXd::Zero(g.size());
+    const double eta = lubricant().referenceViscosity();
+    for (int k = 0; k < g.size(); ++k) {
+        if (g.kind(k) == lube::NodeKind::Void) continue;
+        if (it.fraction.size())  // mass-conserving: the film fraction's complement
+            sn.cavitation[k] = g.kind(k) == lube::NodeKind::Film ? 1.0 - it.fraction[k] : 0.0;
+        else if (g.kind(k) == lube::NodeKind::Film && it.p[k] <= case_.lubricant.cavitationPressure)
+            sn.cavitation[k] = 1.0;
+        // τ_z on the piston = η (V_liner − V_piston)/h − (h/2) ∂p/∂z (central differences).
+        const int i = g.axialIndex(k), j = g.thetaIndex(k);
+        const int i0 = std::max(0, i - 1), i1 = std::min(g.nAxial() - 1, i + 1);
+        const double dpdz = (it.p[g.index(i1, j)] - it.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
+        // Couette shear on the oil only: φ, or none where the Reynolds condition cavitates.
+        const double phi = it.fraction.size() ? 1.0 - sn.cavitation[k] : (sn.cavitation[k] > 0.0 ? 0.0 : 1.0);
+        sn.shearStress[k] = phi * eta * (-pistonVelocity) / it.h[k] - 0.5 * it.h[k] * dpdz;
+    }
+    sn.filmFraction = it.fraction;
+    return true;
+}
+
+std::vector<std::string> SkirtContact::startReport() const {
+    if (!clearance_) return {};
+    std::string line = "centred clearance (min / mean / max over the skirt):";
+    for (const auto& [name, deg] : {std::pair{"TDC", 0.0}, {"mid-stroke", 90.0}, {"BDC", 180.0}}) {
+        const ClearanceRange r = centredClearance(linerOffset_(deg));
+        line += fmt::format(" {} {:.1f} / {:.1f} / {:.1f} um{}", name, r.min * 1e6, r.mean * 1e6, r.max * 1e6,
+                            deg < 180.0 ? ";" : "");
+    }
+    return {"film thickness: " + clearance_->summary(), line};
 }
 
 }  // namespace flexehd::cosim

@@ -14,6 +14,7 @@
 #include "cosim/contact/FilmContact.hpp"
 #include "cosim/contact/FilmEquation.hpp"
 #include "cosim/engine/SkirtFilm.hpp"
+#include "cosim/mapping/FlexibleBodyLoader.hpp"
 #include "cosim/mapping/FlexibleSurface.hpp"
 #include "lube/ElasticFoundation.hpp"
 #include "lube/GreenwoodTripp.hpp"
@@ -36,10 +37,11 @@ struct ClearanceRange {
 
 class SkirtContact final : public FilmContact {
 public:
-    /// Builds the grid and the film solver, reads the flexible bodies and the clearance files the
-    /// case names. linerOffset(crank angle in degrees): the liner-frame z of the piston frame's
-    /// origin (the range the grid slides over the liner).
-    SkirtContact(const EngineCase& c, std::function<double(double)> linerOffset);
+    /// Builds the grid and the film solver, the flexible bodies' surfaces over the grid (bodies:
+    /// the case's, null when rigid) and reads the clearance files the case names.
+    /// linerOffset(crank angle in degrees): the liner-frame z of the piston frame's origin (the
+    /// range the grid slides over the liner).
+    SkirtContact(const EngineCase& c, const CaseBodies& bodies, std::function<double(double)> linerOffset);
     ~SkirtContact() override;
 
     ContactState initialState(double linerOffset) const override;
@@ -64,6 +66,12 @@ public:
     }
     /// The modal Jacobian: the piston's film-change shapes Ψ (constant on the skirt's grid).
     void prepare(const CouplingNeeds& needs) override;
+    /// The skirt's film is the run's film (history.csv's film columns, film.pvd).
+    bool filmFigures(const ContactIterate& it, FilmFigures& figures) const override;
+    bool filmFields(const ContactIterate& it, double pistonVelocity, FilmFields& fields) const override;
+    /// The clearance terms and the centred clearance at TDC, mid-stroke and BDC (when the case has
+    /// clearance terms).
+    std::vector<std::string> startReport() const override;
 
     const SkirtFilm& film() const { return film_; }
     const lube::FilmGrid& grid() const { return film_.grid(); }

@@ -3,7 +3,7 @@
 #include "cosim/coupling/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
 
-#include "cosim/clearance/ClearanceTerms.hpp"
+#include "cosim/contact/CaseContacts.hpp"
 #include "cosim/coupling/StepSizeControl.hpp"
 #include "cosim/coupling/StepSolver.hpp"
 #include "lube/FilmIntegrals.hpp"
@@ -25,11 +25,10 @@ namespace flexehd::cosim {
 
 namespace {
 
-// The smallest film thickness over the nodes that carry film (m; < 0: the surfaces overlap).
-double minimumGap(const lube::FilmGrid& g, const Eigen::VectorXd& h) {
+// The smallest film thickness over the contacts' films (m; < 0: the surfaces overlap).
+double minimumGap(const StepState& s) {
     double m = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < g.size(); ++k)
-        if (g.kind(k) != lube::NodeKind::Void) m = std::min(m, h[k]);
+    for (const ContactState& f : s.films) m = std::min(m, f.minGap);
     return m;
 }
 
@@ -61,20 +60,15 @@ PistonSimulation::PistonSimulation(const EngineCase& c)
         throw std::invalid_argument(
             "coupling: the elastic deformation rate in the squeeze term needs coupling.method: newton; set "
             "coupling.elastic_squeeze: false for the partitioned iteration (docs/coupling.md section 3)");
-    auto skirt = std::make_unique<SkirtContact>(c, [this](double deg) { return linerOffset(deg); });
-    skirt_ = skirt.get();
-    contacts_.push_back(std::move(skirt));
-    columnCounts_.push_back(skirt_->columns().size());
-    // The bodies the contacts' surfaces share, read with the skirt's.
-    if (skirt_->piston()) {
-        pistonBody_ = skirt_->piston()->flexibleBody();
-        mp_ = pistonBody_->modes();
-    }
-    if (skirt_->liner()) {
-        linerBody_ = skirt_->liner()->flexibleBody();
-        ml_ = linerBody_->modes();
-    }
+    // The bodies, read once and shared by the contacts' surfaces; then the contacts.
+    const CaseBodies bodies = loadCaseBodies(c);
+    pistonBody_ = bodies.piston;
+    linerBody_ = bodies.liner;
+    mp_ = pistonBody_ ? pistonBody_->modes() : 0;
+    ml_ = linerBody_ ? linerBody_->modes() : 0;
     if (mp_ + ml_ > 0) requireFilmMemory(gridKey(c), c.grid.axialNodes, c.grid.circumferentialNodes, mp_ + ml_);
+    contacts_ = caseContacts(c, bodies, [this](double deg) { return linerOffset(deg); });
+    for (const auto& contact : contacts_) columnCounts_.push_back(contact->columns().size());
     stepper_ = std::make_unique<StepSolver>(case_, kin_, dyn_, pressure_, contacts_, pistonBody_, linerBody_,
                                             [this](double deg) { return linerOffset(deg); }, work_);
     stats_.timings.setup = t0.seconds();
@@ -148,10 +142,6 @@ void PistonSimulation::contactRecord(const StepEvaluation& ev, StepRecord& r) co
     }
 }
 
-ClearanceRange PistonSimulation::centredClearance(double crankDeg) const {
-    return skirt_->centredClearance(linerOffset(crankDeg));
-}
-
 StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev, int cycle, double stepDeg,
                                     int iterations) const {
     StepRecord r;
@@ -166,24 +156,8 @@ StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev
     r.lateralVelocity = s.v[0];
     r.tiltRate = s.v[1];
     r.sideForce = dyn_.sideForce(k, gas, ev.action, s.a[1]);
-    // The film columns are the skirt's (the first contact).
-    const ContactIterate& f = ev.films.front();
-    r.filmForce = f.loads.pressureForce.x() + f.loads.shearForce.x() + f.loads.boundaryFrictionForce.x();
-    r.filmMoment = f.loads.moment.y();
-    r.contactForce = f.loads.contactForce.x();
-    r.hardContactForce = f.hardForce;
-    r.frictionForce = f.loads.frictionForce().z();
-    r.linerHydrodynamicFriction = f.loads.outerShearForce.z();
-    r.linerBoundaryFriction = -f.loads.boundaryFrictionForce.z();
-    r.dissipatedPower = f.loads.dissipatedPower();
-    r.boundaryFrictionPower = f.loads.boundaryFrictionPower;
-    r.minFilm = f.minGap;  // unfloored: < 0 where the surfaces overlap
-    r.maxPressure = f.p.size() ? f.p.maxCoeff() : 0.0;
-    if (mp_ + ml_ > 0) {
-        const lube::FilmGrid& g = skirt_->grid();
-        for (int k = 0; k < g.size(); ++k)
-            if (g.kind(k) != lube::NodeKind::Void)
-                r.elasticFilmChange = std::max(r.elasticFilmChange, std::abs(f.hTotal[k] - f.hRigid[k]));
+    // The film's figures: the first contact's that reports them (the skirt's).
+    for (std::size_t c = 0; c < contacts_.size() && !contacts_[c]->filmFigures(ev.films[c], r); ++c) {
     }
     if (carriesOil()) oilRecord(s, ev, r);
     contactRecord(ev, r);
@@ -203,16 +177,6 @@ void PistonSimulation::oilRecord(const StepState& s, const StepEvaluation& ev, S
         r.filmOil += c.oilVolume;
     }
     r.sideLeakage = -sideInflow;
-    // The wetted share is the skirt's film's.
-    const lube::FilmGrid& g = skirt_->grid();
-    const ContactIterate& f = ev.films.front();
-    double wet = 0.0, area = 0.0;
-    for (int k = 0; k < g.size(); ++k) {
-        if (g.kind(k) != lube::NodeKind::Film) continue;
-        area += g.area(k);
-        if (f.fraction[k] >= 1.0) wet += g.area(k);
-    }
-    r.wettedShare = area > 0.0 ? wet / area : 0.0;
     r.linerOil = LinerOil::volume(s.oil);
     r.replenishedOil = s.oil.replenished;
 }
@@ -250,8 +214,6 @@ void PistonSimulation::cycleOil(const std::vector<StepRecord>& cycle) {
 
 Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev, int cycle) const {
     Snapshot sn;
-    const lube::FilmGrid& g = skirt_->grid();
-    const ContactIterate& f = ev.films.front();  // the skirt's
     const CrankState k = kin_.at(s.crankDeg);
     sn.cycle = cycle;
     sn.crankDeg = cycleCrankDeg(s.crankDeg, cycle);
@@ -260,27 +222,8 @@ Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev
     sn.linerOffset = linerOffset(s.crankDeg);
     sn.lateral = s.x[0];
     sn.tilt = s.x[1];
-    sn.pressure = f.p;
-    sn.filmThickness = f.hTotal;  // unfloored: < 0 where the surfaces overlap
-    sn.contactPressure = f.pc;
-    sn.cavitation = Eigen::VectorXd::Zero(g.size());
-    sn.shearStress = Eigen::VectorXd::Zero(g.size());
-    const double eta = skirt_->lubricant().referenceViscosity();
-    for (int k2 = 0; k2 < g.size(); ++k2) {
-        if (g.kind(k2) == lube::NodeKind::Void) continue;
-        if (f.fraction.size())  // mass-conserving: the film fraction's complement
-            sn.cavitation[k2] = g.kind(k2) == lube::NodeKind::Film ? 1.0 - f.fraction[k2] : 0.0;
-        else if (g.kind(k2) == lube::NodeKind::Film && f.p[k2] <= case_.lubricant.cavitationPressure)
-            sn.cavitation[k2] = 1.0;
-        // τ_z on the piston = η (V_liner − V_piston)/h − (h/2) ∂p/∂z (central differences).
-        const int i = g.axialIndex(k2), j = g.thetaIndex(k2);
-        const int i0 = std::max(0, i - 1), i1 = std::min(g.nAxial() - 1, i + 1);
-        const double dpdz = (f.p[g.index(i1, j)] - f.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
-        // Couette shear on the oil only: φ, or none where the Reynolds condition cavitates.
-        const double phi = f.fraction.size() ? 1.0 - sn.cavitation[k2] : (sn.cavitation[k2] > 0.0 ? 0.0 : 1.0);
-        sn.shearStress[k2] = phi * eta * (-k.velocity) / f.h[k2] - 0.5 * f.h[k2] * dpdz;
+    for (std::size_t c = 0; c < contacts_.size() && !contacts_[c]->filmFields(ev.films[c], k.velocity, sn); ++c) {
     }
-    sn.filmFraction = f.fraction;
     if (s.oil.layer) {
         const LinerOilLayer& layer = *s.oil.layer;
         sn.linerOil = layer.meanThickness(s.oil.covers);
@@ -297,18 +240,9 @@ StepState PistonSimulation::initialState(const SimulationCallbacks& cb) const {
     const double offset = linerOffset(s.crankDeg);
     for (const auto& contact : contacts_) s.films.push_back(contact->initialState(offset));
     if (linerOil_) s.oil = linerOil_->initial(coversAt(s));
-    if (const ClearanceTerms* clearance = skirt_->clearance()) {
-        if (cb.progress) {
-            cb.progress("film thickness: " + clearance->summary());
-            std::string line = "centred clearance (min / mean / max over the skirt):";
-            for (const auto& [name, deg] : {std::pair{"TDC", 0.0}, {"mid-stroke", 90.0}, {"BDC", 180.0}}) {
-                const ClearanceRange r = centredClearance(deg);
-                line += fmt::format(" {} {:.1f} / {:.1f} / {:.1f} um{}", name, r.min * 1e6, r.mean * 1e6, r.max * 1e6,
-                                    deg < 180.0 ? ";" : "");
-            }
-            cb.progress(line);
-        }
-    }
+    if (cb.progress)
+        for (const auto& contact : contacts_)
+            for (const std::string& line : contact->startReport()) cb.progress(line);
     s.y = Eigen::VectorXd::Zero(mp_ + ml_);
     if (stepper_->dynamicResponse()) s.w = Eigen::VectorXd::Zero(mp_ + ml_);  // bodies at rest
     return s;
@@ -338,7 +272,7 @@ std::string PistonSimulation::stepSizeExhausted(const StepState& s, int cycle, b
         "StepState: lateral shift {:.3f} um, tilt {:.4f} mrad, minimum film {:.3f} um. {}",
         case_.time.minStepDeg, crankAngle720(s.crankDeg), cycle,
         converged ? fmt::format("local error {:.3g} x the tolerance", ratio) : failure, s.x[0] * 1e6, s.x[1] * 1e3,
-        minimumGap(skirt_->grid(), s.films.front().hTotal) * 1e6, advice);
+        minimumGap(s) * 1e6, advice);
 }
 
 void PistonSimulation::requireBoundedMotion(const StepState& n, int cycle) const {

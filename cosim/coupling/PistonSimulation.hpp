@@ -1,8 +1,8 @@
 #pragma once
 // PistonSimulation: the co-simulation master (docs/coupling.md, docs/dynamics.md). Each time
 // step solves, at the new crank angle, the piston's secondary motion (PistonDynamics, BDF2 in
-// time) together with the films of its contacts (FilmContact: the skirt's, SkirtContact, and any
-// added) and the elastic response of the flexible bodies (FlexibleBody) to their summed load, until
+// time) together with the films of its contacts (FilmContact: the case's, contact/CaseContacts,
+// and any added) and the elastic response of the flexible bodies (FlexibleBody) to their summed load, until
 //   * the Newton update of (e, β) is below 1e-5 of the clearance (the tilt times the skirt's
 //     reach from the pin), and the residual of each equation of motion below 1e-4 of the sum
 //     of its terms' magnitudes plus the reciprocating inertia force m r ω² (times the reach
@@ -17,7 +17,6 @@
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
-#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/RunObserver.hpp"
 #include "cosim/coupling/Snapshot.hpp"
 #include "cosim/coupling/StepRecord.hpp"
@@ -33,6 +32,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -82,12 +82,13 @@ struct SimulationCallbacks {
 
 class PistonSimulation {
 public:
-    /// Builds the grid, solver and the flexible bodies named by the case (reads their files).
+    /// Reads the flexible bodies the case names and builds its film contacts (caseContacts: the
+    /// skirt's first).
     explicit PistonSimulation(const EngineCase& c);
     ~PistonSimulation();
 
-    /// A further film contact of the piston, beside the skirt's (before run). Its modal loads and
-    /// film changes use the same coordinates as the skirt's: the piston's, then the liner's.
+    /// A further film contact of the piston, after the case's (before run). Its modal loads and
+    /// film changes use the same coordinates as theirs: the piston's, then the liner's.
     void addContact(std::unique_ptr<FilmContact> contact);
     /// An observer of the run's accepted steps, history rows, snapshots and cycle ends (before run;
     /// not owned, it must outlive the run). The callbacks given to run are its last observer.
@@ -99,14 +100,21 @@ public:
     std::vector<StepRecord> run(const SimulationCallbacks& callbacks = {}, double spanDeg = 0.0);
 
     const RunStatistics& statistics() const { return stats_; }
-    const SkirtFilm& film() const { return skirt_->film(); }
     const CrankKinematics& kinematics() const { return kin_; }
     const PistonDynamics& dynamics() const { return dyn_; }
-    /// The flexible bodies seen from the skirt's grid (null when rigid).
-    const FlexibleSurface* piston() const { return skirt_->piston(); }
-    const FlexibleSurface* liner() const { return skirt_->liner(); }
-    /// Bore distortion and thermal terms of the film thickness (null when the case has none).
-    const ClearanceTerms* clearance() const { return skirt_->clearance(); }
+    /// The flexible bodies (null when rigid), shared by the contacts' surfaces.
+    const std::shared_ptr<const FlexibleBody>& pistonBody() const { return pistonBody_; }
+    const std::shared_ptr<const FlexibleBody>& linerBody() const { return linerBody_; }
+    /// The film contacts, in the order the step iterates over them (the case's, then the added).
+    const std::vector<std::unique_ptr<FilmContact>>& contacts() const { return contacts_; }
+    /// The first contact of the type C, e.g. contact<SkirtContact>(); throws std::logic_error when
+    /// the run has none.
+    template <class C>
+    const C& contact() const {
+        for (const auto& c : contacts_)
+            if (const auto* found = dynamic_cast<const C*>(c.get())) return *found;
+        throw std::logic_error("the run has no film contact of the kind asked for");
+    }
     /// A contact's film conserves oil: the records carry the oil columns and the cycle's oil
     /// balance (docs/coupling.md §6).
     bool carriesOil() const;
@@ -115,9 +123,6 @@ public:
     std::vector<ContactColumn> contactColumns() const;
     /// Liner-frame z of the piston frame's origin at the crank angle.
     double linerOffset(double crankDeg) const;
-    /// The centred, undeformed film thickness at the crank angle's piston position (see
-    /// ClearanceRange; the liner terms depend on where the piston is in the bore).
-    ClearanceRange centredClearance(double crankDeg) const;
 
 private:
     struct RunLoop;
@@ -169,10 +174,8 @@ private:
     CrankKinematics kin_;
     PistonDynamics dyn_;
     CylinderPressure pressure_;
-    // The film contacts the step iterates over; the skirt's is the first (history.csv's and the
-    // snapshots' film columns are its).
+    // The film contacts the step iterates over: the case's (caseContacts), then the added.
     std::vector<std::unique_ptr<FilmContact>> contacts_;
-    SkirtContact* skirt_ = nullptr;
     std::vector<std::size_t> columnCounts_;  // of each contact's own columns
     // The liner's oil layer (null: no contact runs on one) and the contacts that cover it.
     std::unique_ptr<LinerOil> linerOil_;

@@ -22,14 +22,11 @@ std::vector<std::string> groupsOfDimension(const modal::ReducedBody& b, int dim)
     return names;
 }
 
-}  // namespace
+std::string bodyKey(const std::string& role) { return "bodies." + role; }
 
-std::unique_ptr<FlexibleSurface> loadFlexibleSurface(const EngineCase& c, const BodySpec& spec, const std::string& role,
-                                                     FlexibleSurface::Side side, const lube::FilmGrid& grid,
-                                                     double zMin, double zMax) {
-    const std::string key = "bodies." + role;
+std::shared_ptr<const FlexibleBody> loadFlexibleBody(const EngineCase& c, const BodySpec& spec, const std::string& role) {
     auto fail = [&](const std::string& sub, const std::string& what) {
-        throw std::invalid_argument(fmt::format("{}: {}.{}: {}", c.path, key, sub, what));
+        throw std::invalid_argument(fmt::format("{}: {}.{}: {}", c.path, bodyKey(role), sub, what));
     };
     modal::ReducedBody body;
     try {
@@ -53,11 +50,32 @@ std::unique_ptr<FlexibleSurface> loadFlexibleSurface(const EngineCase& c, const 
             fail("interface", fmt::format("'{}' is not an interface of the reduced body {} (its interfaces: {})", h,
                                           spec.file, listOr(interfaces)));
     try {
-        return std::make_unique<FlexibleSurface>(std::move(body), side, spec.surface, spec.interfaces, grid, zMin, zMax);
+        return std::make_shared<const FlexibleBody>(std::move(body), spec.interfaces);
     } catch (const std::exception& e) {
         fail("surface", fmt::format("the reduced body {} cannot face the film: {}", spec.file, e.what()));
     }
     return nullptr;  // not reached
+}
+
+}  // namespace
+
+CaseBodies loadCaseBodies(const EngineCase& c) {
+    CaseBodies b;
+    if (c.pistonBody.model == BodyModel::Flexible) b.piston = loadFlexibleBody(c, c.pistonBody, "piston");
+    if (c.linerBody.model == BodyModel::Flexible) b.liner = loadFlexibleBody(c, c.linerBody, "liner");
+    return b;
+}
+
+std::unique_ptr<FlexibleSurface> facingSurface(const EngineCase& c, std::shared_ptr<const FlexibleBody> body,
+                                               const BodySpec& spec, const std::string& role,
+                                               FlexibleSurface::Side side, const lube::FilmGrid& grid, double zMin,
+                                               double zMax) {
+    try {
+        return std::make_unique<FlexibleSurface>(std::move(body), side, spec.surface, grid, zMin, zMax);
+    } catch (const std::exception& e) {
+        throw std::invalid_argument(fmt::format("{}: {}.surface: the reduced body {} cannot face the film: {}", c.path,
+                                                bodyKey(role), spec.file, e.what()));
+    }
 }
 
 }  // namespace flexehd::cosim

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/results/CycleMetrics.hpp"
 
 namespace flexehd::cosim {
@@ -208,7 +209,8 @@ void addCycleToCycle(const RunSummaryInput& in, Json& d) {
 nlohmann::json runSummary(const RunSummaryInput& in) {
     Source s{in, std::nullopt, {}};
     const double crankDeg[3] = {0.0, 90.0, 180.0};
-    for (int i = 0; i < 3; ++i) s.centred[std::size_t(i)] = in.sim.centredClearance(crankDeg[i]);
+    const SkirtContact& skirt = in.sim.contact<SkirtContact>();
+    for (int i = 0; i < 3; ++i) s.centred[std::size_t(i)] = skirt.centredClearance(in.sim.linerOffset(crankDeg[i]));
     if (in.cycle.size() >= 2) {
         const double volume = 0.25 * std::numbers::pi * in.c.engine.bore * in.c.engine.bore * in.c.engine.stroke;
         s.m = cycleMetrics(in.cycle, in.sim.dynamics(), volume);

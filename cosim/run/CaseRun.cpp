@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/results/CycleSeries.hpp"
 #include "cosim/results/FieldSeriesWriter.hpp"
@@ -38,11 +39,11 @@ std::string describe(const EngineCase& c) {
 }
 
 // The bodies the case names, and a warning when the piston's surface misses the skirt's nodes.
-void reportBodies(const EngineCase& c, const PistonSimulation& sim, const RunLog& log) {
-    if (sim.piston()) {
-        say(log.info, fmt::format("piston: {} modes from {}", sim.piston()->modes(), c.pistonBody.file));
-        const std::size_t outside = sim.piston()->outsideNodes().size();
-        const int film = sim.film().grid().filmNodeCount();
+void reportBodies(const EngineCase& c, const SkirtContact& skirt, const RunLog& log) {
+    if (skirt.piston()) {
+        say(log.info, fmt::format("piston: {} modes from {}", skirt.piston()->modes(), c.pistonBody.file));
+        const std::size_t outside = skirt.piston()->outsideNodes().size();
+        const int film = skirt.film().grid().filmNodeCount();
         if (2 * outside > std::size_t(film))
             say(log.warn,
                 fmt::format("{} of the {} skirt film nodes ({:.0f} %) lie outside the surface '{}' of {}: most of "
@@ -55,7 +56,7 @@ void reportBodies(const EngineCase& c, const PistonSimulation& sim, const RunLog
                                       "motion there",
                                       outside, film, c.pistonBody.surface, c.pistonBody.file));
     }
-    if (sim.liner()) say(log.info, fmt::format("liner: {} modes from {}", sim.liner()->modes(), c.linerBody.file));
+    if (skirt.liner()) say(log.info, fmt::format("liner: {} modes from {}", skirt.liner()->modes(), c.linerBody.file));
 }
 
 // The piston mesh's displacement at a snapshot: the rigid secondary motion about the pin axis
@@ -73,9 +74,9 @@ Eigen::VectorXd pistonDisplacement(const FlexibleSurface& piston, const Snapshot
 }
 
 // A snapshot as the film and body fields of the VTK series.
-void writeSnapshot(FieldSeriesWriter& fields, const EngineCase& c, const PistonSimulation& sim, const Snapshot& s) {
+void writeSnapshot(FieldSeriesWriter& fields, const EngineCase& c, const SkirtContact& skirt, const Snapshot& s) {
     FilmField film;
-    film.grid = &sim.film().grid();
+    film.grid = &skirt.film().grid();
     film.origin = Eigen::Vector3d(0.0, 0.0, s.pinHeight);
     film.pressure = s.pressure;
     film.filmThickness = s.filmThickness;
@@ -84,15 +85,15 @@ void writeSnapshot(FieldSeriesWriter& fields, const EngineCase& c, const PistonS
     film.cavitation = s.cavitation;
     film.filmFraction = s.filmFraction;
     BodyField piston, liner;
-    if (sim.piston()) {
-        piston.mesh = &sim.piston()->body().mesh;
+    if (skirt.piston()) {
+        piston.mesh = &skirt.piston()->body().mesh;
         piston.origin = film.origin;
-        piston.displacement = pistonDisplacement(*sim.piston(), s, c.engine.pinOffset, piston.elastic);
+        piston.displacement = pistonDisplacement(*skirt.piston(), s, c.engine.pinOffset, piston.elastic);
     }
-    if (sim.liner()) {
-        liner.mesh = &sim.liner()->body().mesh;
+    if (skirt.liner()) {
+        liner.mesh = &skirt.liner()->body().mesh;
         liner.origin = Eigen::Vector3d(0.0, 0.0, s.pinHeight - s.linerOffset);
-        liner.displacement = sim.liner()->displacement(s.linerModal);
+        liner.displacement = skirt.liner()->displacement(s.linerModal);
     }
     // Time axis: the crank angle of the written cycle, time.start_deg … start_deg + 720 (0–720
     // with the default start), so that it reads as history.csv's crank_deg.
@@ -104,22 +105,22 @@ void writeSnapshot(FieldSeriesWriter& fields, const EngineCase& c, const PistonS
         oil.z = &s.linerOilZ;
         oil.thickness = s.linerOil;
     }
-    fields.write(at, film, sim.piston() ? &piston : nullptr, sim.liner() ? &liner : nullptr,
+    fields.write(at, film, skirt.piston() ? &piston : nullptr, skirt.liner() ? &liner : nullptr,
                  s.linerOil.size() ? &oil : nullptr);
 }
 
 // DIR/modes_piston, DIR/modes_liner (unchanged files are kept); returns the seconds taken.
-double writeBodyModes(const std::string& dir, const PistonSimulation& sim, const RunLog& log) {
+double writeBodyModes(const std::string& dir, const SkirtContact& skirt, const RunLog& log) {
     const fem::Stopwatch w;
-    for (const auto* body : {sim.piston(), sim.liner()}) {
+    for (const auto* body : {skirt.piston(), skirt.liner()}) {
         if (!body) continue;
-        const std::string sub = dir + (body == sim.piston() ? "/modes_piston" : "/modes_liner");
+        const std::string sub = dir + (body == skirt.piston() ? "/modes_piston" : "/modes_liner");
         std::filesystem::create_directories(sub);
         const fem::Stopwatch one;
         bool reused = false;
         writeModeShapes(sub, body->body().mesh, body->body().shapes, body->body().frequenciesHz, Eigen::VectorXd(),
                         &reused);
-        say(log.info, fmt::format("mode shapes of the {} ({} modes): {} {}", body == sim.piston() ? "piston" : "liner",
+        say(log.info, fmt::format("mode shapes of the {} ({} modes): {} {}", body == skirt.piston() ? "piston" : "liner",
                                   body->modes(),
                                   reused ? "unchanged, kept in" : fmt::format("written in {:.1f} s to", one.seconds()),
                                   sub));
@@ -135,9 +136,9 @@ void writeSummary(const std::string& dir, const nlohmann::json& doc) {
 // snapshot, each cycle's series committed at its end; the seconds they take inside the run.
 class RunFiles final : public RunObserver {
 public:
-    RunFiles(const EngineCase& c, const PistonSimulation& sim, HistoryWriter& history, FieldSeriesWriter& fields,
+    RunFiles(const EngineCase& c, const SkirtContact& skirt, HistoryWriter& history, FieldSeriesWriter& fields,
              const RunLog& log)
-        : c_(c), sim_(sim), history_(history), fields_(fields), log_(log) {}
+        : c_(c), skirt_(skirt), history_(history), fields_(fields), log_(log) {}
 
     void recorded(const StepRecord& row) override {
         const fem::Stopwatch w;
@@ -146,7 +147,7 @@ public:
     }
     void snapshotTaken(const Snapshot& s) override {
         const fem::Stopwatch w;
-        writeSnapshot(fields_, c_, sim_, s);
+        writeSnapshot(fields_, c_, skirt_, s);
         seconds_ += w.seconds();
     }
     void cycleEnded(const CycleEnd& e) override {
@@ -163,7 +164,7 @@ public:
 
 private:
     const EngineCase& c_;
-    const PistonSimulation& sim_;
+    const SkirtContact& skirt_;  // whose film the field series shows
     HistoryWriter& history_;
     FieldSeriesWriter& fields_;
     const RunLog& log_;
@@ -188,19 +189,20 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     say(log.info, describe(c));
     PistonSimulation sim(c);
     for (const ContactBuilder& build : contacts) sim.addContact(build(c, sim));
+    const SkirtContact& skirt = sim.contact<SkirtContact>();
     std::optional<SkirtWear> wear;
     if (SkirtWear::wanted(c)) sim.addObserver(wear.emplace(c, sim));
-    reportBodies(c, sim, log);
+    reportBodies(c, skirt, log);
 
     HistoryWriter history(dir + "/history.csv", sim.carriesOil(), columnNames(sim.contactColumns()));
     FieldSeriesWriter fields(dir);
-    RunFiles files(c, sim, history, fields, log);
+    RunFiles files(c, skirt, history, fields, log);
     sim.addObserver(files);
     CycleSeries cycleSeries(c, sim.dynamics());
     sim.addObserver(cycleSeries);
     SimulationCallbacks cb;
     cb.progress = log.info;
-    const double outputSeconds = c.output.modeShapes ? writeBodyModes(dir, sim, log) : 0.0;
+    const double outputSeconds = c.output.modeShapes ? writeBodyModes(dir, skirt, log) : 0.0;
 
     std::vector<StepRecord> cycle;
     std::string status = "ok", message;
@@ -212,7 +214,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
         fields.discard();  // the unfinished cycle's snapshots; the last complete cycle's stay listed
     }
     if (cycle.empty() && status == "ok") status = "failed";
-    if (wear && wear->finished()) writeWearMaps(dir, sim.film().grid(), wear->maps());  // the last whole cycle's
+    if (wear && wear->finished()) writeWearMaps(dir, wear->grid(), wear->maps());  // the last whole cycle's
     CaseRunResult result;
     result.summary =
         runSummary({c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(),

@@ -1,5 +1,6 @@
 #include "cosim/wear/SkirtWear.hpp"
 
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 
 #include <algorithm>
@@ -10,8 +11,7 @@ namespace flexehd::cosim {
 namespace {
 
 // The liner's z range the skirt's grid covers over a revolution (liner frame, m).
-std::pair<double, double> skirtReach(const PistonSimulation& sim) {
-    const lube::FilmGrid& g = sim.film().grid();
+std::pair<double, double> skirtReach(const PistonSimulation& sim, const lube::FilmGrid& g) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (int k = 0; k <= 1440; ++k) {
         lo = std::min(lo, sim.linerOffset(0.25 * k) + g.z(0));
@@ -20,9 +20,15 @@ std::pair<double, double> skirtReach(const PistonSimulation& sim) {
     return {lo, hi};
 }
 
-ArchardWear makeWear(const EngineCase& c, const PistonSimulation& sim) {
-    const auto [lo, hi] = skirtReach(sim);
-    return ArchardWear(sim.film().grid(), c.contact.pistonWearCoefficient, c.contact.linerWearCoefficient, lo, hi);
+ArchardWear makeWear(const EngineCase& c, const PistonSimulation& sim, const lube::FilmGrid& g) {
+    const auto [lo, hi] = skirtReach(sim, g);
+    return ArchardWear(g, c.contact.pistonWearCoefficient, c.contact.linerWearCoefficient, lo, hi);
+}
+
+std::size_t indexOf(const PistonSimulation& sim, const FilmContact& contact) {
+    const auto& all = sim.contacts();
+    return std::size_t(std::find_if(all.begin(), all.end(), [&](const auto& c) { return c.get() == &contact; }) -
+                       all.begin());
 }
 
 }  // namespace
@@ -31,18 +37,23 @@ bool SkirtWear::wanted(const EngineCase& c) {
     return c.contact.pistonWearCoefficient > 0.0 || c.contact.linerWearCoefficient > 0.0;
 }
 
-SkirtWear::SkirtWear(const EngineCase& c, const PistonSimulation& sim) : sim_(sim), wear_(makeWear(c, sim)) {}
+SkirtWear::SkirtWear(const EngineCase& c, const PistonSimulation& sim)
+    : sim_(sim),
+      skirt_(sim.contact<SkirtContact>()),
+      index_(indexOf(sim, skirt_)),
+      wear_(makeWear(c, sim, skirt_.grid())) {}
+
+const lube::FilmGrid& SkirtWear::grid() const { return skirt_.grid(); }
 
 void SkirtWear::stepAccepted(const AcceptedStep& step) {
-    // The skirt is the run's first contact.
     const double deg = step.state.crankDeg;
-    wear_.add(step.evaluation.films.front().pc, sim_.kinematics().at(deg).velocity, sim_.linerOffset(deg), step.seconds);
+    wear_.add(step.evaluation.films[index_].pc, sim_.kinematics().at(deg).velocity, sim_.linerOffset(deg), step.seconds);
 }
 
 void SkirtWear::cycleEnded(const CycleEnd& /*end*/) {
     // The largest mean rates of the cycle's maps and where they are (docs/coupling.md §7).
     wear_.finishCycle();
-    const lube::FilmGrid& g = sim_.film().grid();
+    const lube::FilmGrid& g = skirt_.grid();
     Eigen::Index kp = 0, kl = 0;
     maxima_.pistonRate = wear_.pistonRate().maxCoeff(&kp) * 3600.0;
     maxima_.pistonZ = g.z(g.axialIndex(int(kp)));

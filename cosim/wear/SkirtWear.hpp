@@ -9,6 +9,7 @@
 namespace flexehd::cosim {
 
 class PistonSimulation;
+class SkirtContact;
 
 /// The largest mean wear rates of the last finished cycle (m/h) and their places: on the skirt at
 /// piston-frame z and θ, on the liner at its depth below the deck and θ.
@@ -34,8 +35,13 @@ public:
     const WearMaxima& maxima() const { return maxima_; }
     bool finished() const { return wear_.finished(); }
 
+    /// The grid the maps are on (the skirt's).
+    const lube::FilmGrid& grid() const;
+
 private:
     const PistonSimulation& sim_;
+    const SkirtContact& skirt_;
+    std::size_t index_ = 0;  // the skirt's place among the run's contacts
     ArchardWear wear_;
     WearMaxima maxima_;
 };

@@ -12,6 +12,7 @@
 // by damped semismooth Newton (primal–dual active set) with the exact derivative in p and finite
 // differences in q, on a dense LU. This uses neither the multigrid solver nor the coupling
 // accelerator; only the discretisation (ReynoldsSystem) and the body (FlexibleSurface) are shared.
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/ReynoldsSystem.hpp"
 #include "CliRunner.hpp"
@@ -74,9 +75,9 @@ struct Monolithic {
 // Starts from q0 (must leave a positive film); returns iterations = 0 if it does not.
 Monolithic solveMonolithic(const PistonSimulation& sim, const EngineCase& c, double lateral, double tilt,
                            double lateralVelocity, double tiltRate, double slidingVelocity, const Eigen::VectorXd& q0) {
-    const SkirtFilm& film = sim.film();
+    const SkirtFilm& film = sim.contact<SkirtContact>().film();
     const lube::FilmGrid& g = film.grid();
-    const FlexibleSurface& body = *sim.piston();
+    const FlexibleSurface& body = *sim.contact<SkirtContact>().piston();
     const int n = g.size(), m = body.modes();
     Eigen::VectorXd hRigid;
     film.rigidThickness(lateral, tilt, hRigid);
@@ -206,6 +207,8 @@ TEST(CouplingMonolithic, PartitionedIterationMatchesTheMonolithicSolve) {
     cb.onSnapshot = [&](const Snapshot& s) { snaps.push_back(s); };
     sim.run(cb, 420.0);  // through the firing slap
     ASSERT_GE(snaps.size(), 4u);
+    const FlexibleSurface& piston = *sim.contact<SkirtContact>().piston();
+    const lube::FilmGrid& g = sim.contact<SkirtContact>().film().grid();
 
     int compared = 0, skipped = 0;
     double peak = 0.0;
@@ -220,7 +223,7 @@ TEST(CouplingMonolithic, PartitionedIterationMatchesTheMonolithicSolve) {
         // Start from the undeformed skirt, or where the rigid film alone is closed (the skirt's
         // elastic give opens it) by continuation from the previous angle's monolithic solution.
         Monolithic mono = solveMonolithic(sim, c, s.lateral, s.tilt, r->lateralVelocity, r->tiltRate, v,
-                                          Eigen::VectorXd::Zero(sim.piston()->modes()));
+                                          Eigen::VectorXd::Zero(piston.modes()));
         if (mono.iterations == 0 && previous.size() > 0)
             mono = solveMonolithic(sim, c, s.lateral, s.tilt, r->lateralVelocity, r->tiltRate, v, previous);
         if (mono.iterations == 0) {
@@ -236,9 +239,8 @@ TEST(CouplingMonolithic, PartitionedIterationMatchesTheMonolithicSolve) {
         // criterion (Monolithic::kappaH/kappaP; 1.5 for the linearisation, and 1e-6 p_max for
         // the film solver's own tolerance, relative residual 1e-8).
         Eigen::VectorXd dh, elastic;
-        sim.piston()->filmChange(s.pistonModal - mono.q, 0.0, dh);
-        sim.piston()->filmChange(mono.q, 0.0, elastic);
-        const lube::FilmGrid& g = sim.film().grid();
+        piston.filmChange(s.pistonModal - mono.q, 0.0, dh);
+        piston.filmChange(mono.q, 0.0, elastic);
         double dhMax = 0.0, dp = 0.0;
         for (int k = 0; k < g.size(); ++k) {
             if (g.kind(k) == lube::NodeKind::Void) continue;

@@ -7,6 +7,7 @@
 //    below 1 Hz) cannot follow the load over the 70 ms of the run: its elastic film change must
 //    stay a small fraction, (ω t)²/2 ≈ 1e-2, of the quasi-static one. This fails if the response
 //    is not the dynamic one.
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "modal/ReducedBodyFile.hpp"
 #include "CliRunner.hpp"
@@ -46,7 +47,7 @@ RunResult run(const EngineCase& c, double span) {
     sim.run(cb, span);
     Eigen::VectorXd dh;
     for (const Snapshot& s : r.snaps) {
-        sim.piston()->filmChange(s.pistonModal, 0.0, dh);
+        sim.contact<SkirtContact>().piston()->filmChange(s.pistonModal, 0.0, dh);
         r.largestElastic = std::max(r.largestElastic, dh.cwiseAbs().maxCoeff());
     }
     return r;

@@ -8,6 +8,7 @@
 // quasi-static response q = C Φᵀ A (p + p_c) must reproduce the run's modal coordinates y to the
 // coupling tolerance. The same check with the rigid rate only must fail — the elastic rate is
 // not negligible in this run — so the check can tell the two equations apart.
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "CliRunner.hpp"
@@ -35,14 +36,14 @@ TEST(ElasticSqueeze, StepsSolveTheEquationsWithTheElasticRate) {
     c.coupling.elasticSqueeze = true;
     flexehd::test::checkableSteps(c);
     PistonSimulation sim(c);
-    ASSERT_EQ(sim.clearance(), nullptr);  // h_rigid is the skirt film's alone
+    ASSERT_EQ(sim.contact<SkirtContact>().clearance(), nullptr);  // h_rigid is the skirt film's alone
     // Through BDC (pure squeeze) and the firing slap.
     const flexehd::test::RecordedRun run = flexehd::test::recordRun(sim, 400.0);
     const std::vector<StepRecord>& steps = run.steps;
     const std::vector<Snapshot>& snaps = run.snapshots;
 
-    const lube::FilmGrid& g = sim.film().grid();
-    const FlexibleSurface& body = *sim.piston();
+    const lube::FilmGrid& g = sim.contact<SkirtContact>().film().grid();
+    const FlexibleSurface& body = *sim.contact<SkirtContact>().piston();
     lube::ReynoldsOptions opt;
     opt.solver = lube::SolverKind::ActiveSet;
     opt.cavitation = lube::Cavitation::Reynolds;
@@ -52,7 +53,7 @@ TEST(ElasticSqueeze, StepsSolveTheEquationsWithTheElasticRate) {
                                        c.contact.compositeModulus);
     auto total = [&](const Snapshot& s) {
         Eigen::VectorXd h, dh;
-        sim.film().rigidThickness(s.lateral, s.tilt, h);
+        sim.contact<SkirtContact>().film().rigidThickness(s.lateral, s.tilt, h);
         body.filmChange(s.pistonModal, 0.0, dh);
         return std::pair<Eigen::VectorXd, Eigen::VectorXd>(h + dh, h);
     };

@@ -48,7 +48,8 @@ void compareSplitSkirt(EngineCase c, double spanDeg, double& worstLateral, doubl
     EngineCase halfDry = half;
     halfDry.contact.compositeModulus = 0.0;
     PistonSimulation split(half);
-    split.addContact(std::make_unique<SkirtContact>(halfDry, [&split](double deg) { return split.linerOffset(deg); }));
+    split.addContact(std::make_unique<SkirtContact>(halfDry, CaseBodies{split.pistonBody(), split.linerBody()},
+                                                    [&split](double deg) { return split.linerOffset(deg); }));
     const std::vector<Snapshot> b = snapshots(split, spanDeg);
 
     ASSERT_EQ(a.size(), b.size());

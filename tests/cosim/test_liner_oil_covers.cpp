@@ -8,6 +8,7 @@
 // and the skirt carries α t₀.
 #include "cosim/contact/FilmContact.hpp"
 #include "cosim/contact/MassConservingFilm.hpp"
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "SmallEngineCase.hpp"
 
@@ -110,7 +111,7 @@ TEST(LinerOilCovers, AnAddedContactTradesWithTheMastersLayerAndJoinsTheOilBalanc
     PistonSimulation sim(c);
 
     // The band below the skirt's grid, on its columns.
-    const lube::FilmGrid& g = sim.film().grid();
+    const lube::FilmGrid& g = sim.contact<SkirtContact>().film().grid();
     const double high = g.z(0) - kGap, low = high - kHeight;
     LinerFootprint f;
     f.zLow = sim.linerOffset(180.0) + low;

@@ -2,6 +2,7 @@
 // every step and of the liner's layer over a run, starvation's trends against a flooded film, and
 // the coupled steps of a flexible piston checked from outside the simulation.
 #include "cosim/contact/MassConservingFilm.hpp"
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/engine/SkirtFilm.hpp"
 #include "lube/JfoSolver.hpp"
@@ -191,7 +192,7 @@ TEST(MassConservingSkirt, FlexiblePistonStepsSolveTheCoupledEquations) {
     c.lubricant.cavitation = CavitationModel::MassConserving;
     flexehd::test::checkableSteps(c);
     PistonSimulation sim(c);
-    ASSERT_EQ(sim.clearance(), nullptr);  // h_rigid is the skirt film's alone
+    ASSERT_EQ(sim.contact<SkirtContact>().clearance(), nullptr);  // h_rigid is the skirt film's alone
     const flexehd::test::RecordedRun run = flexehd::test::recordRun(sim, 400.0);
     const std::vector<StepRecord>& steps = run.steps;
     const std::vector<Snapshot>& snaps = run.snapshots;
@@ -200,8 +201,8 @@ TEST(MassConservingSkirt, FlexiblePistonStepsSolveTheCoupledEquations) {
     const double imbalance = worstStepImbalance(steps, largestFlow);
     EXPECT_LT(imbalance, 10.0 * MassConservingFilm::kTolerance * largestFlow);
 
-    const lube::FilmGrid& g = sim.film().grid();
-    const FlexibleSurface& body = *sim.piston();
+    const lube::FilmGrid& g = sim.contact<SkirtContact>().film().grid();
+    const FlexibleSurface& body = *sim.contact<SkirtContact>().piston();
     lube::JfoOptions jo;
     jo.method = lube::JfoMethod::ActiveSet;
     jo.control.tolerance = 1e-12;
@@ -210,7 +211,7 @@ TEST(MassConservingSkirt, FlexiblePistonStepsSolveTheCoupledEquations) {
                                        c.contact.compositeModulus);
     auto thickness = [&](const Snapshot& s, Eigen::VectorXd& floored) {
         Eigen::VectorXd h, dh;
-        sim.film().rigidThickness(s.lateral, s.tilt, h);
+        sim.contact<SkirtContact>().film().rigidThickness(s.lateral, s.tilt, h);
         body.filmChange(s.pistonModal, 0.0, dh);
         h += dh;
         floored = h;

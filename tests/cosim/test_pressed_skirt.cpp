@@ -15,6 +15,7 @@
 // both, so the test sees whether the body's compliance takes part.
 #include "cosim/mapping/DeformationMapping.hpp"
 #include "cosim/mapping/LoadMapping.hpp"
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "fem/DofMap.hpp"
 #include "fem/ElasticityAssembler.hpp"
@@ -56,7 +57,7 @@ public:
           foundation_(lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
                                                               c.contact.coatingThickness)),
           lubricant_(c.lubricant.viscosity, c.lubricant.density) {
-        film_ = filmCarryingNodes(sim.film().grid());
+        film_ = filmCarryingNodes(sim.contact<SkirtContact>().film().grid());
     }
 
     // (e, β) where the contact balances the rod and gas forces at the crank angle.
@@ -87,9 +88,9 @@ public:
 
 private:
     Eigen::Vector2d residual(const CrankState& crank, double gas, const Eigen::Vector2d& x) {
-        const lube::FilmGrid& g = sim_.film().grid();
+        const lube::FilmGrid& g = sim_.contact<SkirtContact>().film().grid();
         Eigen::VectorXd hRigid;
-        sim_.film().rigidThickness(x[0], x[1], hRigid);
+        sim_.contact<SkirtContact>().film().rigidThickness(x[0], x[1], hRigid);
         Eigen::VectorXd h = filmThickness(hRigid);
         Eigen::VectorXd pc = Eigen::VectorXd::Zero(g.size());
         minGap_ = std::numeric_limits<double>::infinity();
@@ -230,12 +231,12 @@ TEST(PressedSkirt, SettlesAtTheGapOfTheStaticFiniteElementSolution) {
     ASSERT_GT(std::abs(r.sideForce), 1000.0);
     ASSERT_LT(std::abs(r.filmForce), 1e-3 * std::abs(r.sideForce));
 
-    const lube::FilmGrid& g = sim.film().grid();
+    const lube::FilmGrid& g = sim.contact<SkirtContact>().film().grid();
     const double gas = sim.dynamics().gasForce(cylinder);
     const Eigen::Vector2d start(r.lateral, r.tilt);
-    StaticContactProblem full(c, sim, fullModelCompliance(*sim.piston(), g));
+    StaticContactProblem full(c, sim, fullModelCompliance(*sim.contact<SkirtContact>().piston(), g));
     const Eigen::Vector2d xf = full.solve(r.crankDeg, gas, start);
-    StaticContactProblem reduced(c, sim, reducedCompliance(*sim.piston(), g));
+    StaticContactProblem reduced(c, sim, reducedCompliance(*sim.contact<SkirtContact>().piston(), g));
     const Eigen::Vector2d xm = reduced.solve(r.crankDeg, gas, start);
     StaticContactProblem rigid(c, sim, Eigen::MatrixXd::Zero(full.filmNodes(), full.filmNodes()));
     const Eigen::Vector2d xr = rigid.solve(r.crankDeg, gas, start);
@@ -265,8 +266,10 @@ TEST(PressedSkirt, SettlesAtTheGapOfTheStaticFiniteElementSolution) {
     EXPECT_LT(r.minFilm, 0.0);
     // 3. A second surface in front of the same body (its compliance shared, not recomputed), as
     //    a further film contact on the piston would hold it, answers as the master's own.
-    const FlexibleSurface second(sim.piston()->flexibleBody(), FlexibleSurface::Side::Piston, sim.piston()->surface(), g);
-    EXPECT_EQ(second.flexibleBody().get(), sim.piston()->flexibleBody().get());
-    EXPECT_EQ((reducedCompliance(second, g) - reducedCompliance(*sim.piston(), g)).cwiseAbs().maxCoeff(), 0.0);
+    const FlexibleSurface& first = *sim.contact<SkirtContact>().piston();
+    const FlexibleSurface second(first.flexibleBody(), FlexibleSurface::Side::Piston, first.surface(), g);
+    EXPECT_EQ(second.flexibleBody().get(), first.flexibleBody().get());
+    EXPECT_EQ(second.flexibleBody().get(), sim.pistonBody().get());
+    EXPECT_EQ((reducedCompliance(second, g) - reducedCompliance(first, g)).cwiseAbs().maxCoeff(), 0.0);
     std::filesystem::remove_all(dir);
 }

@@ -17,6 +17,7 @@
 #include "cosim/casefile/CaseFile.hpp"
 #include "cosim/thermal/CylindricalSurfaceSampler.hpp"
 #include "cosim/thermal/LinerTemperature.hpp"
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/clearance/ThermalDisplacementFile.hpp"
 #include "fem/MeshReader.hpp"
@@ -289,7 +290,8 @@ TEST(ThermalExample, HotRunningClearanceIsPlausible) {
     const double closureMin = (ap * (377.0 - Tref) - al * (418.0 - Tref)) * R;
     const double closureMax = (ap * (408.0 - Tref) - al * (370.0 - Tref)) * R;
     for (const double deg : {0.0, 90.0, 180.0}) {
-        const cosim::ClearanceRange h = hotSim.centredClearance(deg), c = coldSim.centredClearance(deg);
+        const cosim::ClearanceRange h = hotSim.contact<cosim::SkirtContact>().centredClearance(hotSim.linerOffset(deg)),
+                                    c = coldSim.contact<cosim::SkirtContact>().centredClearance(coldSim.linerOffset(deg));
         EXPECT_GE(h.min, 10.0e-6) << deg;
         EXPECT_LE(h.min, 40.0e-6) << deg;
         const double closure = c.mean - h.mean;

@@ -25,6 +25,7 @@
 #include "cosim/clearance/BoreDistortion.hpp"
 #include "cosim/casefile/CaseFile.hpp"
 #include "cosim/clearance/ClearanceTerms.hpp"
+#include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/engine/SkirtFilm.hpp"
 #include "cosim/clearance/ThermalDisplacementFile.hpp"
@@ -119,9 +120,9 @@ TEST(ThermalFile, LinerFieldsMoveWithThePistonInTheRun) {
         ASSERT_FALSE(snaps.empty());
         const Snapshot& sn = snaps.back();
         ASSERT_NEAR(sn.crankDeg, crank, 1e-9);
-        const lube::FilmGrid& g = sim.film().grid();
+        const lube::FilmGrid& g = sim.contact<SkirtContact>().film().grid();
         Eigen::VectorXd h;
-        sim.film().rigidThickness(sn.lateral, sn.tilt, h);
+        sim.contact<SkirtContact>().film().rigidThickness(sn.lateral, sn.tilt, h);
         double worst = 0.0;
         for (int k = 0; k < g.size(); ++k) {
             if (g.kind(k) == lube::NodeKind::Void) continue;
