@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,13 @@ struct OilLayerPoint {
     double thickness = 0.0;  ///< m, oil layer on the liner
 };
 
+/// The oil-control ring as the liner's oil layer sees it (docs/coupling.md §6, "The oil-control
+/// ring"): its band on the piston and the layer it leaves on the liner.
+struct OilControlRingSpec {
+    double bottom = 0.0, top = 0.0;  ///< m, piston-frame z of the ring's lower and upper edges
+    double thickness = 0.0;          ///< m, the oil layer it leaves on the liner
+};
+
 struct OilSupplySpec {
     OilSupplyModel model = OilSupplyModel::Flooded;
     /// The liner's oil layer at the start, depth ascending: one point is a constant layer;
@@ -73,6 +81,8 @@ struct OilSupplySpec {
     /// mid-stroke (crank angle 90°). Off with `replenish` false.
     double replenishBelowDepth = std::numeric_limits<double>::quiet_NaN();
     bool replenish = true;
+    /// The oil-control ring above the skirt, setting the layer where it passes (none: not modelled).
+    std::optional<OilControlRingSpec> oilControlRing;
 };
 
 struct LubricantSpec {

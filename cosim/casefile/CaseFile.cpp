@@ -66,6 +66,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     readTime(top, c.time);
     const YamlSection coupling = readCoupling(top, c.coupling);
     requireSupportedMassConserving(lubricant, coupling, c);
+    requireOilControlRingOnPiston(lubricant, c);
     readOutput(top, c.output);
     return c;
 }

@@ -1,6 +1,7 @@
 #include "cosim/casefile/CrossSectionChecks.hpp"
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 namespace flexehd::cosim::casefile {
 
@@ -43,6 +44,25 @@ void requireSupportedMassConserving(const YamlSection& lubricant, const YamlSect
                                  "full-film / cavitated partition, and a starved film's meniscus moves with the "
                                  "deformation; docs/coupling.md section 6). Use rigid bodies (flexehd run --rigid), or "
                                  "the flooded supply with flexible ones");
+}
+
+// The oil-control ring's band above the skirt and below the deck at TDC (docs/case-file.md,
+// "lubricant.supply").
+void requireOilControlRingOnPiston(const YamlSection& lubricant, const EngineCase& c) {
+    const std::optional<OilControlRingSpec>& r = c.lubricant.supply.oilControlRing;
+    if (!r) return;
+    const YAML::Node ring = lubricant.get("supply")["oil_control_ring"];
+    auto fail = [&](const char* key, const std::string& msg) {
+        lubricant.source().fail(lubricant.keyPath(std::string("supply.oil_control_ring.") + key), ring[key], msg);
+    };
+    if (r->bottom < c.piston.skirtTop)
+        fail("bottom", fmt::format("the oil-control ring sits above the skirt: its lower edge must be at or above "
+                                        "piston.skirt_top = {:g} m, got {:g} m",
+                                        c.piston.skirtTop, r->bottom));
+    if (!(r->top < c.engine.pinTdcDepth))
+        fail("top", fmt::format("at TDC the ring's upper edge would stand above the deck: it must lie below "
+                                     "engine.pin_tdc_depth = {:g} m above the pin, got {:g} m",
+                                     c.engine.pinTdcDepth, r->top));
 }
 
 }  // namespace flexehd::cosim::casefile

@@ -14,5 +14,7 @@ void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c);
 /// The mass-conserving film with a flexible body: the coupled Newton method on a flooded supply
 /// (docs/coupling.md §6; after bodies, lubricant and coupling).
 void requireSupportedMassConserving(const YamlSection& lubricant, const YamlSection& coupling, const EngineCase& c);
+/// lubricant.supply.oil_control_ring above piston.skirt_top and, at TDC, below the deck.
+void requireOilControlRingOnPiston(const YamlSection& lubricant, const EngineCase& c);
 
 }  // namespace flexehd::cosim::casefile

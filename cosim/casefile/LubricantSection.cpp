@@ -13,15 +13,34 @@ namespace flexehd::cosim::casefile {
 
 namespace {
 
+// lubricant.supply.oil_control_ring: the ring's band on the piston and the layer it leaves (its
+// place against the skirt and the deck is checked with the piston's, CrossSectionChecks).
+OilControlRingSpec readOilControlRing(const YamlSection& supply) {
+    const YamlSection s(supply.source(), supply.get("oil_control_ring"), supply.keyPath("oil_control_ring"),
+                        {"bottom", "top", "thickness"});
+    OilControlRingSpec r;
+    r.bottom = number(s, "bottom", {"piston-frame z of the ring's lower edge", "m"}, Sign::Any, 0.0, true);
+    r.top = number(s, "top", {"piston-frame z of the ring's upper edge", "m"}, Sign::Any, 0.0, true);
+    if (!(r.top > r.bottom))
+        s.fail("top", fmt::format("the ring's upper edge must lie above its lower edge (bottom = {:g} m), got {:g} m",
+                                  r.bottom, r.top));
+    r.thickness = number(s, "thickness", {"oil layer the ring leaves on the liner", "m"}, Sign::NonNegative, 0.0, true);
+    if (r.thickness > 1e-3)
+        s.fail("thickness", fmt::format("an oil layer of {:g} m is above 1 mm: check the units (m; 3 um = 3e-06)",
+                                        r.thickness));
+    return r;
+}
+
 // lubricant.supply (docs/case-file.md): flooded, or the liner's oil layer (constant or a table over
 // the depth below the deck) with its replenishment.
 void readOilSupply(const YamlSection& lubricant, LubricantSpec& l) {
     const YamlSection s(lubricant.source(), lubricant.get("supply"), lubricant.keyPath("supply"),
-                        {"model", "thickness", "thickness_table", "replenish", "replenish_below_depth"});
+                        {"model", "thickness", "thickness_table", "replenish", "replenish_below_depth",
+                         "oil_control_ring"});
     OilSupplySpec& o = l.supply;
     o.model = choice(s, "model", {"flooded", "liner_layer"}, 0) == 0 ? OilSupplyModel::Flooded : OilSupplyModel::LinerLayer;
     if (o.model == OilSupplyModel::Flooded) {
-        for (const char* key : {"thickness", "thickness_table", "replenish", "replenish_below_depth"})
+        for (const char* key : {"thickness", "thickness_table", "replenish", "replenish_below_depth", "oil_control_ring"})
             if (s.has(key)) s.fail(key, "belongs to model: liner_layer; a flooded supply has no oil layer");
         return;
     }
@@ -63,6 +82,7 @@ void readOilSupply(const YamlSection& lubricant, LubricantSpec& l) {
         o.replenishBelowDepth =
             number(s, "replenish_below_depth", {"depth below the deck", "m"}, Sign::NonNegative, 0.0);
     }
+    if (s.has("oil_control_ring")) o.oilControlRing = readOilControlRing(s);
 }
 
 }  // namespace

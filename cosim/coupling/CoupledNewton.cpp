@@ -35,6 +35,19 @@
 #include "fem/Stopwatch.hpp"
 
 namespace flexehd::cosim {
+namespace {
+
+// A contact's part of the coupled Jacobian added to the sum; an empty part (a contact whose loads
+// do not change with y) adds nothing.
+void addPart(Eigen::MatrixXd& sum, const Eigen::MatrixXd& part) {
+    if (part.size() == 0) return;
+    if (sum.size() == 0)
+        sum = part;
+    else
+        sum += part;
+}
+
+}  // namespace
 
 Eigen::Matrix<double, 2, 6> CoupledNewtonScheme::actionGradient(const StepContext& ctx) const {
     // The equations of motion's right-hand side is affine in the film action (F_x, F_z, M_y).
@@ -52,22 +65,20 @@ void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::
     // when the Jacobian is formed: it depends on the step size with bodies.response: dynamic).
     CoupledJacobianParts& P = parts_;
     Eigen::MatrixXd loadH, loadRate;
-    ContactJacobian J;
+    P.modalH.resize(0, 0);
+    P.modalRate.resize(0, 0);
+    P.filmChangePerUnknown.resize(0);
     for (std::size_t c = 0; c < step_.contacts_.size(); ++c) {
+        ContactJacobian J;
         step_.contacts_[c]->linearize(ctx.step, ctx.now->films[c], x, ev.films[c], J, step_.work_);
-        if (c == 0) {
-            loadH = J.loadH;
-            loadRate = J.loadRate;
-            P.modalH = J.modalH;
-            P.modalRate = J.modalRate;
-            P.filmChangePerUnknown = J.filmChangePerUnknown;
-        } else {
-            loadH += J.loadH;
-            loadRate += J.loadRate;
-            P.modalH += J.modalH;
-            P.modalRate += J.modalRate;
-            P.filmChangePerUnknown = P.filmChangePerUnknown.cwiseMax(J.filmChangePerUnknown);
-        }
+        addPart(loadH, J.loadH);
+        addPart(loadRate, J.loadRate);
+        addPart(P.modalH, J.modalH);
+        addPart(P.modalRate, J.modalRate);
+        if (J.filmChangePerUnknown.size() == 0) continue;
+        P.filmChangePerUnknown = P.filmChangePerUnknown.size() == 0
+                                     ? J.filmChangePerUnknown
+                                     : Eigen::VectorXd(P.filmChangePerUnknown.cwiseMax(J.filmChangePerUnknown));
     }
     const fem::Stopwatch t0;
     const Eigen::Matrix<double, 2, 6> dForce = actionGradient(ctx);  // ∂f/∂(F, M)

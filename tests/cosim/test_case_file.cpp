@@ -298,7 +298,9 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
         EXPECT_EQ(v->time.minStepDeg, ehd.time.minStepDeg);
         EXPECT_EQ(v->time.lateralTolerance, ehd.time.lateralTolerance);
         EXPECT_EQ(v->time.tiltTolerance, ehd.time.tiltTolerance);
-        EXPECT_EQ(v->time.maxCycles, ehd.time.maxCycles);
+        if (v != &starved) {  // the starved layer settles over more cycles (docs/case-file.md)
+            EXPECT_EQ(v->time.maxCycles, ehd.time.maxCycles);
+        }
         EXPECT_EQ(v->time.periodicityTolerance, ehd.time.periodicityTolerance);
         EXPECT_EQ(v->coupling.tolerance, ehd.coupling.tolerance);
         EXPECT_EQ(v->coupling.maxIterations, ehd.coupling.maxIterations);
@@ -569,6 +571,41 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
                 AllOf(StartsWith(file + ": lubricant.supply.thickness"), HasSubstr("liner_layer")));
     EXPECT_THAT(caseError(dir, "speed_rpm: 1000", "speed_rpm: 1000\n  pin_tdc_depth: 0.005"),
                 AllOf(StartsWith(file + ": engine.pin_tdc_depth"), HasSubstr("above the deck")));
+}
+
+TEST(CaseFile, OilControlRingIsReadAndPlacedOnThePiston) {
+    const fs::path dir = scratchDir();
+    const std::string file = (dir / "case.yaml").string();
+    const std::string supply = "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, "
+                               "thickness: 3e-6, oil_control_ring: ";
+    auto withRing = [&](const std::string& ring) { return supply + ring + "}}"; };
+    const EngineCase c =
+        readCaseFile(caseWith(dir, "name: small", withRing("{bottom: 0.0138, top: 0.0163, thickness: 1e-6}")));
+    ASSERT_TRUE(c.lubricant.supply.oilControlRing.has_value());
+    EXPECT_EQ(c.lubricant.supply.oilControlRing->bottom, 0.0138);
+    EXPECT_EQ(c.lubricant.supply.oilControlRing->top, 0.0163);
+    EXPECT_EQ(c.lubricant.supply.oilControlRing->thickness, 1e-6);
+    EXPECT_FALSE(readCaseFile(caseWith(dir, "name: small", "name: small")).lubricant.supply.oilControlRing.has_value());
+
+    const std::string ring = file + ": lubricant.supply.oil_control_ring";
+    EXPECT_THAT(caseError(dir, "name: small", withRing("{bottom: 0.0138, thickness: 1e-6}")),
+                StartsWith(ring + ".top"));
+    EXPECT_THAT(caseError(dir, "name: small", withRing("{bottom: 0.0163, top: 0.0138, thickness: 1e-6}")),
+                AllOf(StartsWith(ring + ".top"), HasSubstr("above its lower edge")));
+    EXPECT_THAT(caseError(dir, "name: small", withRing("{bottom: 0.0138, top: 0.0163, thickness: 2e-3}")),
+                AllOf(StartsWith(ring + ".thickness"), HasSubstr("check the units")));
+    EXPECT_THAT(caseError(dir, "name: small", withRing("{bottom: 0.0138, top: 0.0163, thickness: -1e-6}")),
+                StartsWith(ring + ".thickness"));
+    EXPECT_THAT(caseError(dir, "name: small", withRing("{bottom: 0.005, top: 0.0163, thickness: 1e-6}")),
+                AllOf(StartsWith(ring + ".bottom"), HasSubstr("piston.skirt_top = 0.0108")));
+    EXPECT_THAT(caseError(dir, "name: small", withRing("{bottom: 0.0138, top: 0.04, thickness: 1e-6}")),
+                AllOf(StartsWith(ring + ".top"), HasSubstr("above the deck")));
+    EXPECT_THAT(caseError(dir, "name: small", withRing("{bottom: 0.0138, top: 0.0163, thick: 1e-6}")),
+                AllOf(StartsWith(ring + ".thick"), HasSubstr("did you mean 'thickness'")));
+    EXPECT_THAT(caseError(dir, "name: small",
+                          "name: small\nlubricant: {supply: {oil_control_ring: {bottom: 0.0138, top: 0.0163, "
+                          "thickness: 1e-6}}}"),
+                AllOf(StartsWith(file + ": lubricant.supply.oil_control_ring"), HasSubstr("liner_layer")));
 }
 
 TEST(CaseFileErrors, MissingAndUnreadableFiles) {
