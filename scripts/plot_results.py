@@ -343,11 +343,12 @@ def plot_oil(runs, out_dir):
     oily = [r for r in runs if "film_oil_m3" in r[1]]
     if not oily:
         return
+    # The oil columns sum over the contacts on the layer (the skirt, and an oil-control ring).
     plot_columns(oily, out_dir, "oil.png", "Oil on the skirt and the liner (mass-conserving film)",
                  [("wetted_share", 100.0, "skirt area in\nfull film (%)"),
-                  ("film_oil_m3", 1e9, "oil in the\nskirt's film (mm³)"),
-                  ("liner_oil_m3", 1e9, "oil on the liner\noutside the skirt (mm³)"),
-                  ("oil_in_m3_per_s", 1e9, "oil into the skirt\nat its edges (mm³/s)")], height=8.5)
+                  ("film_oil_m3", 1e9, "oil in the\nfilms (mm³)"),
+                  ("liner_oil_m3", 1e9, "oil on the liner\noutside the covers (mm³)"),
+                  ("oil_in_m3_per_s", 1e9, "oil into the films\nat their edges (mm³/s)")], height=8.5)
 
 
 def cycle_note(runs):
