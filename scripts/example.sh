@@ -59,9 +59,11 @@ echo "== HD with the mass-conserving film: flooded, and on a 3 um liner oil laye
   --labels "${labels[@]}" --out "$out/plots"
 /usr/bin/python3 "$root/scripts/plot_results.py" "$out/mass_conserving" --compare "$out/starved" "$out/hd" \
   --labels "flooded" "starved (3 um layer)" "flooded, Reynolds condition" --out "$out/plots_oil_supply"
+/usr/bin/python3 "$root/scripts/plot_wear.py" "$out/starved" --log 3 --out "$out/plots_oil_supply"
 echo
 echo "Results: $out/{hd,ehd,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
-echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil), $out/plots_oil_supply/;"
+echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil) with the starved run's"
+echo "wear maps, $out/plots_oil_supply/;"
 echo "temperatures and thermal expansion in $out/thermal/ (piston.vtu, liner.vtu)."
 echo "ParaView: open $out/ehd/film.pvd (film grid: pressure, film thickness, contact, shear) and"
 echo "$out/ehd/piston.pvd (Warp By Vector: 'displacement_m' with a scale of about 20, 'elastic_displacement_m' 100-200)."
