@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Every module a script in scripts/ imports is in Python's standard library or comes with a
-# Debian package that scripts/install_deps.sh --with-python installs, and every shell script
+# Every module a script in scripts/ imports is in Python's standard library, is another script of
+# scripts/, or comes with a Debian package that scripts/install_deps.sh --with-python installs,
+# and every shell script
 # that runs /usr/bin/python3 calls install_deps.sh with --with-python first (run by ctest).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -16,6 +17,7 @@ check_imports() {  # file: its import lines (a .py file, or the inline Python of
   local file=$1 mod pkg
   for mod in $(sed -nE 's/^[[:space:]]*(import|from)[[:space:]]+([A-Za-z_][A-Za-z0-9_]*).*/\2/p' "$file" | sort -u); do
     [[ "$stdlib" == *" $mod "* ]] && continue
+    [[ -f "$mod.py" ]] && continue  # another script of scripts/ (its own imports are checked)
     needs[$file]=1
     pkg="${debian[$mod]:-}"
     if [[ -z "$pkg" ]]; then

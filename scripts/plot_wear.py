@@ -36,6 +36,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 
+from plot_results import save  # noqa: E402  (the PNG written atomically, as every plot here)
+
 ARRAY = "wear_rate_m_per_h"
 FILES = (("piston", "wear_piston.vts"), ("liner", "wear_liner.vts"))
 
@@ -247,15 +249,6 @@ def draw(fig, ax, m, peak, void_note, decades=None):
     if void_note:
         ax.text(0.01, 0.01, void_note, transform=ax.transAxes, fontsize=6.5, color="0.25", va="bottom",
                 bbox=dict(boxstyle="square,pad=0.2", fc="w", ec="none", alpha=0.7))
-
-
-def save(fig, out_dir, name):
-    path = os.path.join(out_dir, name)
-    tmp = path + ".tmp"
-    fig.savefig(tmp, dpi=150, format="png")
-    plt.close(fig)
-    os.replace(tmp, path)
-    print(path)
 
 
 def wear_files(directory):
