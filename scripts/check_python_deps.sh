@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Every module a script in scripts/ imports is in Python's standard library, is another script of
 # scripts/, or comes with a Debian package that scripts/install_deps.sh --with-python installs,
-# and every shell script
-# that runs /usr/bin/python3 calls install_deps.sh with --with-python first (run by ctest).
+# and every shell script that runs /usr/bin/python3 calls install_deps.sh with --with-python
+# first (run by ctest).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root/scripts"
