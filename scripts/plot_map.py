@@ -8,7 +8,10 @@ cylinder_pressure (one pressure-trace file per load point, as in
 examples/engine86/study_speed_load.yaml) and writes map.png: skirt friction power, minimum
 film thickness (the true gap: below zero the surfaces overlap and the hard contact carries
 the load) and peak slap kinetic energy over speed, one line per load point, as engine maps are
-read. Failed variants are left out and listed. Needs only numpy and matplotlib (Agg backend).
+read. A third parameter (e.g. lubricant.supply in study_oil_supply.yaml) gives each of its
+values a line style, the load points keeping their colours; a variant that did not become
+periodic is drawn as an open marker. Failed variants are left out and listed. Needs only numpy
+and matplotlib (Agg backend).
 """
 import argparse
 import csv
@@ -34,6 +37,26 @@ def load_label(path):
     return "part load" if name == "cylinder_pressure" else name
 
 
+STYLES = ["-", "--", ":", "-."]
+
+
+def third_parameter(row):
+    """The study's parameter column besides speed and load (None when there is none)."""
+    keys = list(row.keys())
+    params = keys[keys.index("id") + 1:keys.index("status")] if "id" in keys and "status" in keys else []
+    others = [k for k in params if k not in ("engine.speed_rpm", "cylinder_pressure")]
+    return others[0] if len(others) == 1 else None
+
+
+def value_label(parameter, value):
+    """A short legend text for a value of the third parameter."""
+    if parameter == "lubricant.supply":
+        if "liner_layer" in value:
+            return "starved (liner layer)"
+        return "flooded"
+    return value if len(value) <= 30 else value[:27] + "..."
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("study", help="the study directory (holds study.csv)")
@@ -51,32 +74,43 @@ def main():
             print(f"plot_map: {path} has no column '{key}' (a speed x load study is expected)", file=sys.stderr)
             return 1
     failed = [r for r in rows if r["status"] != "ok"]
+    third = third_parameter(rows[0])
     lines = {}
     for r in rows:
         if r["status"] != "ok":
             continue
-        lines.setdefault(load_label(r["cylinder_pressure"]), []).append(r)
+        lines.setdefault((load_label(r["cylinder_pressure"]), r[third] if third else ""), []).append(r)
     if not lines:
         print(f"plot_map: {path}: no variant finished ok", file=sys.stderr)
         return 1
     fig, axes = plt.subplots(1, len(PANELS), figsize=(5 * len(PANELS), 4))
+    order = {"motored": 0, "part load": 1, "full load": 2}
+    loads = sorted({k[0] for k in lines}, key=lambda n: (order.get(n, 3), n))
+    values = sorted({k[1] for k in lines}, key=lambda v: [r[third] for r in rows].index(v) if third else 0)
+    colours = {n: f"C{i}" for i, n in enumerate(loads)}
+    styles = {v: STYLES[i % len(STYLES)] for i, v in enumerate(values)}
     for ax, (key, label, scale) in zip(axes, PANELS):
-        order = {"motored": 0, "part load": 1, "full load": 2}
-        for name, rs in sorted(lines.items(), key=lambda kv: (order.get(kv[0], 3), kv[0])):
+        for (name, value), rs in sorted(lines.items(), key=lambda kv: (order.get(kv[0][0], 3), kv[0][0],
+                                                                        values.index(kv[0][1]))):
             rs = sorted(rs, key=lambda r: float(r["engine.speed_rpm"]))
-            x = [float(r["engine.speed_rpm"]) for r in rs]
-            y = [float(r[key]) * scale for r in rs if key in r]
-            ax.plot(x, y, "o-", label=name)
+            x = np.array([float(r["engine.speed_rpm"]) for r in rs])
+            y = np.array([float(r[key]) * scale for r in rs])
+            text = name + (", " + value_label(third, value) if third else "")
+            ax.plot(x, y, styles[value], color=colours[name], label=text)
+            periodic = np.array([r.get("periodic", "true") == "true" for r in rs])
+            ax.plot(x[periodic], y[periodic], "o", color=colours[name])
+            ax.plot(x[~periodic], y[~periodic], "o", mfc="w", color=colours[name])
         if key == "min_film_m":
             ax.axhline(0.0, color="k", lw=0.8)
         ax.set_xlabel("engine speed [rpm]")
         ax.set_ylabel(label)
         ax.grid(True, alpha=0.3)
-    axes[0].legend()
-    title = "operating map"
+    axes[0].legend(fontsize=7)
+    title = "operating map (open markers: not periodic within the tolerance)"
     if failed:
-        title += " (failed: " + ", ".join(f"{r['engine.speed_rpm']} rpm {load_label(r['cylinder_pressure'])}"
-                                         for r in failed) + ")"
+        title += "; failed: " + ", ".join(
+            f"{r['engine.speed_rpm']} rpm {load_label(r['cylinder_pressure'])}"
+            + (f" {value_label(third, r[third])}" if third else "") for r in failed)
     fig.suptitle(title, fontsize=9)
     fig.tight_layout()
     out = args.out or args.study
