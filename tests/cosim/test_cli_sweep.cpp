@@ -1,6 +1,7 @@
 // `flexehd sweep`: study files (designs, errors), and small studies of the coarse rigid example
 // (16 × 48 grid, one cycle): one process and two MPI ranks give the same study.csv, a killed
 // study resumes with only the missing variant, a failing variant is recorded with its error.
+#include "cosim/casefile/CaseFile.hpp"
 #include "cosim/study/BodyCache.hpp"
 #include "cosim/study/StudyFile.hpp"
 #include "cosim/study/VariantCase.hpp"
@@ -130,6 +131,33 @@ TEST(StudyFile, FullFactorialListsAndRanges) {
     EXPECT_THAT(c, HasSubstr("clearance: 5e-05"));
     EXPECT_THAT(c, HasSubstr("axial_nodes: 16"));
     EXPECT_THAT(c, HasSubstr("cylinder_pressure: " + kSource + "/examples/engine86/cylinder_pressure.csv"));
+}
+
+// Every study the examples ship names case-file keys only, and every variant's case reads
+// (values in their ranges; the bodies' files are not looked for).
+TEST(StudyFile, ShippedExampleStudiesGiveValidCases) {
+    TempDir t("examples");
+    int studies = 0;
+    for (const auto& entry : fs::directory_iterator(kSource + "/examples/engine86")) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("study_", 0) != 0 || entry.path().extension() != ".yaml") continue;
+        ++studies;
+        const auto s = flexehd::cosim::readStudyFile(entry.path().string(), (t.path / name).string());
+        ASSERT_FALSE(s.variants.empty()) << name;
+        EXPECT_NO_THROW(flexehd::cosim::checkCaseKeys(s)) << name;
+        flexehd::cosim::CaseFileOptions noBodyFiles;
+        noBodyFiles.checkBodyFiles = false;
+        for (const auto& v : s.variants) {
+            const fs::path file = t.path / (name + "." + v.id + ".yaml");
+            std::ofstream(file) << flexehd::cosim::variantCaseText(s, v);
+            try {
+                flexehd::cosim::readCaseFile(file.string(), noBodyFiles);
+            } catch (const std::exception& e) {
+                ADD_FAILURE() << name << " " << v.id << ": " << e.what();
+            }
+        }
+    }
+    EXPECT_GE(studies, 3);
 }
 
 TEST(StudyFile, LatinHypercubeHitsEveryStratumOnce) {
