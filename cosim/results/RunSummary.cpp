@@ -229,6 +229,10 @@ const std::vector<std::string>& runSummaryKeys() {
     static const std::vector<std::string> keys = [] {
         std::vector<std::string> k;
         for (const Entry& e : entries()) k.push_back(e.key);
+        // A non-periodic run's spread over its cycles (addCycleToCycle).
+        for (const Figure& f : figures())
+            for (const char* statistic : {"mean", "min", "max", "std"})
+                k.push_back(std::string("cycle_to_cycle.") + f.key + "." + statistic);
         return k;
     }();
     return keys;

@@ -160,6 +160,25 @@ TEST(StudyFile, ShippedExampleStudiesGiveValidCases) {
     EXPECT_GE(studies, 3);
 }
 
+// A non-periodic variant's spread over its cycles is a study output like any summary.json key.
+TEST(StudyFile, CycleToCycleFiguresAreOutputs) {
+    TempDir t("spread");
+    const auto s = flexehd::cosim::readStudyFile(writeStudy(t.path,
+        "parameters:\n"
+        "  engine.speed_rpm: [1000, 2000]\n"
+        "outputs: [friction_power_mean_w, cycle_to_cycle.friction_power_mean_w.std, cycle_to_cycle.min_film_m.min]\n"));
+    EXPECT_EQ(s.outputs.size(), 3u);
+    std::string error = "no error";
+    try {
+        flexehd::cosim::readStudyFile(writeStudy(
+            t.path, "parameters:\n  engine.speed_rpm: [1000]\noutputs: [cycle_to_cycle.friction_power_mean_w.median]\n",
+            "bad.yaml"));
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    EXPECT_THAT(error, HasSubstr("'cycle_to_cycle.friction_power_mean_w.median' is not a summary.json key"));
+}
+
 TEST(StudyFile, LatinHypercubeHitsEveryStratumOnce) {
     TempDir t("lhs");
     const std::string body = "design: latin_hypercube\nsamples: 8\nseed: 42\n"
