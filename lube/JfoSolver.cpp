@@ -228,8 +228,10 @@ bool multigridSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState& f
     std::vector<double> history;  // the residual of each pass
     for (int outer = 1; outer <= o.maxMultigridPasses; ++outer) {
         effectiveSqueeze(net, g, film, dt, previous, rows, res.fraction.data(), eff.dhdt);
-        // Cold, the first pass is the multigrid's own cold start (nested from the coarse grids).
-        res.pressure = rs.solve(eff, warmStarted || outer > 1 ? &warm : nullptr).pressure;
+        // Cold, the first pass is the multigrid's own cold start (nested from the coarse grids);
+        // the later ones change only the squeeze rate: the assembled system is reused.
+        res.pressure = outer == 1 ? rs.solve(eff, warmStarted ? &warm : nullptr).pressure
+                                  : rs.resolve(eff.dhdt, warm).pressure;
         warm = res.pressure;
         sweepAlongFlow(net, g, film, pcav, res.pressure.data(), res.fraction.data());
         res.iterations = outer;

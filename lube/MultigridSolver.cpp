@@ -241,6 +241,20 @@ SolveReport MultigridSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
     Hierarchy& H = *h_;
     H.base = found < 0 ? 0 : static_cast<std::size_t>(found);
     H.extractFine(sys);
+    return iterate(sys, p, pLower, control);
+}
+
+SolveReport MultigridSolver::resolve(const ReynoldsSystem& sys, Eigen::VectorXd& p, double pLower,
+                                     const SolverControl& control) {
+    if (!h_ || h_->levels[h_->base].a != sys.stencil().data() || h_->levels[h_->base].size() != sys.grid().size())
+        return solve(sys, p, pLower, control);  // not the last solve's system
+    return iterate(sys, p, pLower, control);
+}
+
+SolveReport MultigridSolver::iterate(const ReynoldsSystem& sys, Eigen::VectorXd& p, double pLower,
+                                     const SolverControl& control) {
+    const FilmGrid& g = sys.grid();
+    Hierarchy& H = *h_;
     if (p.size() != g.size()) p = sys.initialGuess(pLower);
     const double deadScale = H.startingPoint(g, p, pLower);
 

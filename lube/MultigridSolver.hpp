@@ -53,6 +53,13 @@ public:
     SolveReport solve(const ReynoldsSystem& system, Eigen::VectorXd& p, double pLower,
                       const SolverControl& control);
 
+    /// The same as solve() for the system of the last solve() whose right-hand side alone has
+    /// changed (ReynoldsSystem::setSqueezeRate): the coarse operators, smoother directions and
+    /// line factorizations of the last solve are kept and updated only where the truncation
+    /// changes. Another system (or none solved yet) is solved with solve().
+    SolveReport resolve(const ReynoldsSystem& system, Eigen::VectorXd& p, double pLower,
+                        const SolverControl& control);
+
     /// Number of grid levels of the last solve (1 = no coarse grid could be built).
     int levels() const;
 
@@ -64,6 +71,7 @@ public:
     bool hasLevel(const FilmGrid& g) const;
 
 private:
+    SolveReport iterate(const ReynoldsSystem& system, Eigen::VectorXd& p, double pLower, const SolverControl& control);
     struct Hierarchy;
     std::unique_ptr<Hierarchy> h_;
 };

@@ -51,6 +51,12 @@ FilmState inject(const FilmState& f, const FilmGrid& coarse, const FilmGrid& fin
     return c;
 }
 
+// Half-Sommerfeld: the Film nodes' pressures below p_cav set to p_cav.
+void clipBelow(const FilmGrid& g, double pcav, Eigen::VectorXd& p) {
+    for (int k = 0; k < g.size(); ++k)
+        if (g.kind(k) == NodeKind::Film && p[k] < pcav) p[k] = pcav;
+}
+
 }  // namespace
 
 ReynoldsSolver::ReynoldsSolver(FilmGrid grid, Lubricant lubricant, ReynoldsOptions options)
@@ -130,10 +136,40 @@ Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coars
     return p;
 }
 
+ReynoldsResult ReynoldsSolver::resolve(const Eigen::VectorXd& dhdt, const Eigen::VectorXd& warmStart) {
+    if (!last_)
+        throw std::logic_error("ReynoldsSolver::resolve: no system of a constant-property solve to reuse");
+    if (warmStart.size() != grid_.size())
+        throw std::invalid_argument("ReynoldsSolver::resolve: warm start has " + std::to_string(warmStart.size()) +
+                                    " values, grid has " + std::to_string(grid_.size()));
+    last_->setSqueezeRate(dhdt);
+    ReynoldsResult res;
+    res.pressure = warmStart;
+    res.picardIterations = 1;
+    SolveReport rep;
+    try {
+        rep = options_.solver == SolverKind::Multigrid
+                  ? multigrid_.resolve(*last_, res.pressure, lowerBound(), options_.control)
+                  : solveOnce(*last_, res.pressure);
+    } catch (const std::runtime_error&) {
+        if (!fallback_) throw;
+        res.pressure = warmStart;
+        rep = fallback_->solveOnce(*last_, res.pressure);
+        res.fellBack = true;
+    }
+    res.iterations = rep.iterations;
+    res.residual = rep.residual;
+    if (options_.cavitation == Cavitation::HalfSommerfeld) clipBelow(grid_, options_.cavitationPressure, res.pressure);
+    return res;
+}
+
+double ReynoldsSolver::lowerBound() const {
+    return options_.cavitation == Cavitation::Reynolds ? options_.cavitationPressure
+                                                       : -std::numeric_limits<double>::infinity();
+}
+
 SolveReport ReynoldsSolver::solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd& p) {
-    const double lower = options_.cavitation == Cavitation::Reynolds
-                             ? options_.cavitationPressure
-                             : -std::numeric_limits<double>::infinity();
+    const double lower = lowerBound();
     if (options_.solver == SolverKind::Psor) return psor_.solve(sys, p, lower, options_.control);
     if (options_.solver == SolverKind::Multigrid)
         return multigrid_.solve(sys, p, lower, options_.control);
@@ -164,8 +200,11 @@ ReynoldsResult ReynoldsSolver::solveWithPrimary(const FilmState& film, const Eig
         res.pressure = sequencedStart(film, res.coarseIterations);
 
     if (!lubricant_.pressureDependent()) {
-        ReynoldsSystem sys(grid_, film, lubricant_.referenceDensity(), lubricant_.referenceViscosity());
-        const SolveReport rep = solveOnce(sys, res.pressure);
+        last_.reset();  // a throw below leaves none
+        auto sys = std::make_unique<ReynoldsSystem>(grid_, film, lubricant_.referenceDensity(),
+                                                    lubricant_.referenceViscosity());
+        const SolveReport rep = solveOnce(*sys, res.pressure);
+        last_ = std::move(sys);
         res.iterations = rep.iterations;
         res.residual = rep.residual;
         res.picardIterations = 1;
@@ -202,10 +241,7 @@ ReynoldsResult ReynoldsSolver::solveWithPrimary(const FilmState& film, const Eig
                     "); try picardRelaxation < 1");
         }
     }
-    if (options_.cavitation == Cavitation::HalfSommerfeld)
-        for (int k = 0; k < n; ++k)
-            if (grid_.kind(k) == NodeKind::Film && res.pressure[k] < options_.cavitationPressure)
-                res.pressure[k] = options_.cavitationPressure;
+    if (options_.cavitation == Cavitation::HalfSommerfeld) clipBelow(grid_, options_.cavitationPressure, res.pressure);
     return res;
 }
 

@@ -68,6 +68,13 @@ public:
     /// warmStart: a previous pressure field on the same grid (or nullptr).
     ReynoldsResult solve(const FilmState& film, const Eigen::VectorXd* warmStart = nullptr);
 
+    /// The film of the last solve() with the squeeze rate replaced by dhdt (m/s, one value per
+    /// node), from the warm start p (the grid's size): the assembled system and, for the
+    /// multigrid solver, its coarse operators are reused (ReynoldsSystem::setSqueezeRate,
+    /// MultigridSolver::resolve). For a fixed point that changes only the right-hand side between
+    /// solves (JfoSolver's passes). Constant-property lubricant; std::logic_error before a solve().
+    ReynoldsResult resolve(const Eigen::VectorXd& dhdt, const Eigen::VectorXd& warmStart);
+
     const FilmGrid& grid() const { return grid_; }
     const Lubricant& lubricant() const { return lubricant_; }
     const ReynoldsOptions& options() const { return options_; }
@@ -75,6 +82,7 @@ public:
 private:
     ReynoldsResult solveWithPrimary(const FilmState& film, const Eigen::VectorXd* warmStart);
     SolveReport solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd& p);
+    double lowerBound() const;  // p_cav under the Reynolds condition, else −∞
     /// Grid-sequenced starting pressure on the fine grid (empty if unavailable).
     Eigen::VectorXd sequencedStart(const FilmState& film, int& coarseIterations);
 
@@ -92,6 +100,7 @@ private:
     ActiveSetSolver fast_;
     MultigridSolver multigrid_;
     std::vector<Level> coarse_;  // coarse_[0] is 2× coarser than grid_, coarse_[1] 4×, ...
+    std::unique_ptr<ReynoldsSystem> last_;  // the last solve's system (constant properties)
     std::unique_ptr<ReynoldsSolver> fallback_;  // options_.fallback's solver
 };
 

@@ -79,12 +79,13 @@ namespace {
 template <bool Constant>
 class StencilAssembly {
 public:
+    // bFlow: b without the squeeze term (may be null).
     StencilAssembly(const FilmGrid& grid, const FilmState& film, const double* rho, const double* eta, double* st,
-                    double* bv)
+                    double* bv, double* bFlow)
         : grid_(grid), nz_(grid.nAxial()), nt_(grid.nTheta()), periodic_(grid.periodic()),
           Uz_(film.sumAxial()), Ut_(film.sumCircumferential()), kind_(grid.kinds()),
           pp_(grid.prescribedPressures()), h_(film.h.data()), squeeze_(film.dhdt.size() != 0),
-          dhdt_(squeeze_ ? film.dhdt.data() : nullptr), rho_(rho), eta_(eta), st_(st), bv_(bv),
+          dhdt_(squeeze_ ? film.dhdt.data() : nullptr), rho_(rho), eta_(eta), st_(st), bv_(bv), bFlow_(bFlow),
           colL_(sj(nt_)), faceD_(sj(nt_)), cUp_(sj(nt_), 0.0), mUp_(sj(nt_), 0.0), cDn_(sj(nt_), 0.0),
           mDn_(sj(nt_), 0.0), cT_(sj(nt_), 0.0), mT_(sj(nt_), 0.0) {
         const double R = grid.radius();
@@ -172,6 +173,7 @@ private:
                 c[ReynoldsSystem::kStencilE] = c[ReynoldsSystem::kStencilN] = 0.0;
                 c[ReynoldsSystem::kStencilC] = 1.0;
                 bv_[k] = pp[k];
+                if (bFlow_) bFlow_[k] = pp[k];
                 continue;
             }
             const bool hasLeft = j > 0 || periodic, hasRight = j + 1 < nt || periodic;
@@ -208,6 +210,7 @@ private:
                 inflow(hasLeft, leftFilm, left, cl, mT_[jl]);
                 c[ReynoldsSystem::kStencilC] = cu + cd + cr + cl;
             }
+            if (bFlow_) bFlow_[k] = bk;
             if (squeeze_) bk -= colL_[sj(j)] * Lt * (Constant ? rho_[0] : rho_[k]) * dhdt_[k];  // ∂(ρh)/∂t V_k
             bv_[k] = bk;
             // Only the east and north couplings are stored: the west one is the west neighbour's
@@ -234,6 +237,7 @@ private:
     const double* const eta_;
     double* const st_;
     double* const bv_;
+    double* const bFlow_;
     std::vector<double> colL_, faceD_;
     std::vector<double> cUp_, mUp_, cDn_, mDn_, cT_, mT_;
 };
@@ -245,7 +249,29 @@ void ReynoldsSystem::assemble(const FilmState& film, const double* rho, const do
     const int n = grid_->size();
     st_.resize(static_cast<std::size_t>(3) * static_cast<std::size_t>(n));  // every entry written below
     b_.resize(n);
-    StencilAssembly<Constant>(*grid_, film, rho, eta, st_.data(), b_.data()).run();
+    if (Constant) {
+        density_ = rho[0];
+        flowRhs_.resize(n);
+    }
+    StencilAssembly<Constant>(*grid_, film, rho, eta, st_.data(), b_.data(), Constant ? flowRhs_.data() : nullptr).run();
+}
+
+// b = b_flow − V_k ρ ḣ_k on the Film rows, in the assembly's order of operations (V_k = R Δθ_j Δz_i).
+void ReynoldsSystem::setSqueezeRate(const Eigen::VectorXd& dhdt) {
+    const FilmGrid& g = *grid_;
+    const int n = g.size();
+    if (!std::isfinite(density_))
+        throw std::logic_error("ReynoldsSystem::setSqueezeRate: only for a system of constant density");
+    if (dhdt.size() != n)
+        throw std::invalid_argument("ReynoldsSystem::setSqueezeRate: dhdt has " + std::to_string(dhdt.size()) +
+                                    " values, the grid " + std::to_string(n) + " nodes");
+    for (int k = 0; k < n; ++k) {
+        if (g.kind(k) != NodeKind::Film) continue;
+        if (!std::isfinite(dhdt[k]))
+            throw std::invalid_argument("ReynoldsSystem::setSqueezeRate: dhdt is not finite at node " +
+                                        std::to_string(k));
+        b_[k] = flowRhs_[k] - g.area(k) * density_ * dhdt[k];
+    }
 }
 
 // A in compressed columns from the stencil (symmetric: column k = row k), rows in increasing

@@ -101,6 +101,10 @@ public:
     /// call for the first time from two threads at once.
     const SparseMatrix& matrix() const;
     const Eigen::VectorXd& rhs() const { return b_; }
+    /// Replaces the squeeze rate ∂h/∂t (m/s, one value per node; the Film nodes' are used) in b,
+    /// the operator A unchanged: b is then that of a system assembled with this dhdt, bit for bit.
+    /// Constant-density systems only (std::logic_error otherwise).
+    void setSqueezeRate(const Eigen::VectorXd& dhdt);
     /// Diagonal of A (built with matrix(), same caveat).
     const Eigen::VectorXd& diagonal() const;
     /// A as a symmetric 5-point stencil, the storage A is assembled in: 3 entries per node
@@ -134,6 +138,8 @@ private:
     const FilmGrid* grid_;
     LargeVector<double> st_;     // symmetric 5-point stencil, 3 per node (C, E, N)
     Eigen::VectorXd b_;
+    Eigen::VectorXd flowRhs_;    // b without the squeeze term (constant density)
+    double density_ = std::numeric_limits<double>::quiet_NaN();  // constant density, else NaN
     mutable SparseMatrix A_;     // built on demand from st_
     mutable Eigen::VectorXd diag_;
     mutable bool matrixBuilt_ = false;
