@@ -1,10 +1,9 @@
 #include "cosim/contact/CaseContacts.hpp"
 
+#include "cosim/contact/LinerOffsetRange.hpp"
 #include "cosim/contact/OilControlRingBand.hpp"
 #include "cosim/contact/SkirtContact.hpp"
 
-#include <algorithm>
-#include <limits>
 
 namespace flexehd::cosim {
 namespace {
@@ -13,13 +12,8 @@ namespace {
 // range its edges sweep over a revolution.
 std::unique_ptr<FilmContact> oilControlRing(const OilControlRingSpec& ring, const SkirtContact& skirt,
                                             const std::function<double(double)>& linerOffset) {
-    const std::optional<LinerFootprint> columns = skirt.linerFootprint();
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (int k = 0; k <= 1440; ++k) {
-        lo = std::min(lo, linerOffset(0.25 * k) + ring.bottom);
-        hi = std::max(hi, linerOffset(0.25 * k) + ring.top);
-    }
-    return std::make_unique<OilControlRingBand>(ring, *columns, lo, hi);
+    const LinerOffsetRange r = linerOffsetRange(linerOffset);
+    return std::make_unique<OilControlRingBand>(ring, *skirt.linerFootprint(), r.low + ring.bottom, r.high + ring.top);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // liner oil it leaves (docs/coupling.md §6).
 #include "cosim/contact/MassConservingFilm.hpp"
 
+#include "cosim/contact/LinerOffsetRange.hpp"
+
 #include "cosim/contact/ReynoldsFilm.hpp"
 
 #include <algorithm>
@@ -24,13 +26,9 @@ lube::JfoOptions jfoOptions(const LubricantSpec& l) {
 
 // The liner-frame z range the skirt's edges sweep over a revolution.
 void skirtReach(const lube::FilmGrid& g, const std::function<double(double)>& linerOffset, double& lo, double& hi) {
-    lo = std::numeric_limits<double>::infinity();
-    hi = -lo;
-    for (int k = 0; k <= 1440; ++k) {
-        const double s = linerOffset(0.25 * k);
-        lo = std::min(lo, s + g.z(0));
-        hi = std::max(hi, s + g.z(g.nAxial() - 1));
-    }
+    const LinerOffsetRange r = linerOffsetRange(linerOffset);
+    lo = r.low + g.z(0);
+    hi = r.high + g.z(g.nAxial() - 1);
 }
 
 }  // namespace

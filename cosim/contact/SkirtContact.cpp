@@ -5,6 +5,7 @@
 #include "cosim/contact/SkirtContact.hpp"
 
 #include "cosim/clearance/ClearanceTerms.hpp"
+#include "cosim/contact/LinerOffsetRange.hpp"
 #include "cosim/contact/MassConservingFilm.hpp"
 #include "cosim/contact/ReynoldsFilm.hpp"
 #include "cosim/mapping/FlexibleBodyLoader.hpp"
@@ -51,13 +52,8 @@ SkirtContact::SkirtContact(const EngineCase& c, const CaseBodies& bodies, std::f
     }
     if (ClearanceTerms::wanted(c)) {
         // Liner offsets the grid visits: the extremes of the crank-slider over a revolution.
-        double lo = linerOffset_(0.0), hi = lo;
-        for (int k = 1; k <= 1440; ++k) {
-            const double s = linerOffset_(0.25 * k);
-            lo = std::min(lo, s);
-            hi = std::max(hi, s);
-        }
-        clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), lo, hi);
+        const LinerOffsetRange visited = linerOffsetRange(linerOffset_);
+        clearance_ = std::make_unique<ClearanceTerms>(c, film_.grid(), visited.low, visited.high);
     }
 }
 

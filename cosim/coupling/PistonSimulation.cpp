@@ -157,8 +157,8 @@ StepRecord PistonSimulation::record(const StepState& s, const StepEvaluation& ev
     r.tiltRate = s.v[1];
     r.sideForce = dyn_.sideForce(k, gas, ev.action, s.a[1]);
     // The film's figures: the first contact's that reports them (the skirt's).
-    for (std::size_t c = 0; c < contacts_.size() && !contacts_[c]->filmFigures(ev.films[c], r); ++c) {
-    }
+    for (std::size_t c = 0; c < contacts_.size(); ++c)
+        if (contacts_[c]->filmFigures(ev.films[c], r)) break;
     if (carriesOil()) oilRecord(s, ev, r);
     contactRecord(ev, r);
     r.couplingIterations = iterations;
@@ -222,8 +222,8 @@ Snapshot PistonSimulation::snapshot(const StepState& s, const StepEvaluation& ev
     sn.linerOffset = linerOffset(s.crankDeg);
     sn.lateral = s.x[0];
     sn.tilt = s.x[1];
-    for (std::size_t c = 0; c < contacts_.size() && !contacts_[c]->filmFields(ev.films[c], k.velocity, sn); ++c) {
-    }
+    for (std::size_t c = 0; c < contacts_.size(); ++c)
+        if (contacts_[c]->filmFields(ev.films[c], k.velocity, sn)) break;  // the first that reports them
     if (s.oil.layer) {
         const LinerOilLayer& layer = *s.oil.layer;
         sn.linerOil = layer.meanThickness(s.oil.covers);

@@ -1,5 +1,6 @@
 #include "cosim/wear/SkirtWear.hpp"
 
+#include "cosim/contact/LinerOffsetRange.hpp"
 #include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 
@@ -12,12 +13,8 @@ namespace {
 
 // The liner's z range the skirt's grid covers over a revolution (liner frame, m).
 std::pair<double, double> skirtReach(const PistonSimulation& sim, const lube::FilmGrid& g) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (int k = 0; k <= 1440; ++k) {
-        lo = std::min(lo, sim.linerOffset(0.25 * k) + g.z(0));
-        hi = std::max(hi, sim.linerOffset(0.25 * k) + g.z(g.nAxial() - 1));
-    }
-    return {lo, hi};
+    const LinerOffsetRange r = linerOffsetRange([&sim](double deg) { return sim.linerOffset(deg); });
+    return {r.low + g.z(0), r.high + g.z(g.nAxial() - 1)};
 }
 
 ArchardWear makeWear(const EngineCase& c, const PistonSimulation& sim, const lube::FilmGrid& g) {

@@ -59,6 +59,16 @@ std::string writeStudy(const fs::path& dir, const std::string& body, const std::
     return file.string();
 }
 
+// The message readStudyFile throws for the study (written as writeStudy does), or "no error".
+std::string studyError(const fs::path& dir, const std::string& body, const std::string& name = "study.yaml") {
+    try {
+        flexehd::cosim::readStudyFile(writeStudy(dir, body, name));
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
 std::string readText(const fs::path& p) {
     std::ifstream f(p);
     std::stringstream ss;
@@ -168,15 +178,10 @@ TEST(StudyFile, CycleToCycleFiguresAreOutputs) {
         "  engine.speed_rpm: [1000, 2000]\n"
         "outputs: [friction_power_mean_w, cycle_to_cycle.friction_power_mean_w.std, cycle_to_cycle.min_film_m.min]\n"));
     EXPECT_EQ(s.outputs.size(), 3u);
-    std::string error = "no error";
-    try {
-        flexehd::cosim::readStudyFile(writeStudy(
-            t.path, "parameters:\n  engine.speed_rpm: [1000]\noutputs: [cycle_to_cycle.friction_power_mean_w.median]\n",
-            "bad.yaml"));
-    } catch (const std::exception& e) {
-        error = e.what();
-    }
-    EXPECT_THAT(error, HasSubstr("'cycle_to_cycle.friction_power_mean_w.median' is not a summary.json key"));
+    EXPECT_THAT(studyError(t.path,
+                           "parameters:\n  engine.speed_rpm: [1000]\noutputs: [cycle_to_cycle.friction_power_mean_w.median]\n",
+                           "bad.yaml"),
+                HasSubstr("'cycle_to_cycle.friction_power_mean_w.median' is not a summary.json key"));
 }
 
 TEST(StudyFile, LatinHypercubeHitsEveryStratumOnce) {
@@ -222,14 +227,7 @@ TEST(StudyFile, TableAndBodyRecipesShareCachedBodies) {
 
 TEST(StudyFile, BadInputIsAClearError) {
     TempDir t("bad");
-    auto error = [&](const std::string& body) {
-        try {
-            flexehd::cosim::readStudyFile(writeStudy(t.path, body));
-        } catch (const std::exception& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
+    auto error = [&](const std::string& body) { return studyError(t.path, body); };
     EXPECT_THAT(error("parameters:\n  engine.pin_ofset: [0.0, 1e-3]\n"),
                 AllOf(HasSubstr("parameters.engine.pin_ofset: not a case-file key"), HasSubstr("did you mean 'pin_offset'")));
     EXPECT_THAT(error("parameters:\n  engine.pin_offset: [0.0]\nsamplez: 3\n"), HasSubstr("samplez (line"));
