@@ -137,6 +137,11 @@ Eigen::VectorXd ReynoldsSolver::sequencedStart(const FilmState& film, int& coars
 }
 
 ReynoldsResult ReynoldsSolver::resolve(const Eigen::VectorXd& dhdt, const Eigen::VectorXd& warmStart) {
+    if (lastFellBack_) {  // the primary solver has no system of that film: the fallback's
+        ReynoldsResult r = fallback_->resolve(dhdt, warmStart);
+        r.fellBack = true;
+        return r;
+    }
     if (!last_)
         throw std::logic_error("ReynoldsSolver::resolve: no system of a constant-property solve to reuse");
     if (warmStart.size() != grid_.size())
@@ -177,12 +182,14 @@ SolveReport ReynoldsSolver::solveOnce(const ReynoldsSystem& sys, Eigen::VectorXd
 }
 
 ReynoldsResult ReynoldsSolver::solve(const FilmState& film, const Eigen::VectorXd* warmStart) {
+    lastFellBack_ = false;
     if (!fallback_) return solveWithPrimary(film, warmStart);
     try {
         return solveWithPrimary(film, warmStart);
     } catch (const std::runtime_error&) {
         ReynoldsResult r = fallback_->solve(film, warmStart);
         r.fellBack = true;
+        lastFellBack_ = true;
         return r;
     }
 }

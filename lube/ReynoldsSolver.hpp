@@ -72,7 +72,9 @@ public:
     /// node), from the warm start p (the grid's size): the assembled system and, for the
     /// multigrid solver, its coarse operators are reused (ReynoldsSystem::setSqueezeRate,
     /// MultigridSolver::resolve). For a fixed point that changes only the right-hand side between
-    /// solves (JfoSolver's passes). Constant-property lubricant; std::logic_error before a solve().
+    /// solves (JfoSolver's passes). When the last solve() fell back, the fallback solver re-solves
+    /// its own system (and the result says so). Constant-property lubricant; std::logic_error
+    /// before a solve().
     ReynoldsResult resolve(const Eigen::VectorXd& dhdt, const Eigen::VectorXd& warmStart);
 
     const FilmGrid& grid() const { return grid_; }
@@ -102,6 +104,7 @@ private:
     std::vector<Level> coarse_;  // coarse_[0] is 2× coarser than grid_, coarse_[1] 4×, ...
     std::unique_ptr<ReynoldsSystem> last_;  // the last solve's system (constant properties)
     std::unique_ptr<ReynoldsSolver> fallback_;  // options_.fallback's solver
+    bool lastFellBack_ = false;                 // the last solve() was the fallback's
 };
 
 }  // namespace flexehd::lube

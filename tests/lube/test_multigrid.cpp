@@ -195,6 +195,15 @@ TEST(Multigrid, AStalledSolveIsRedoneByTheFallbackSolver) {
     const ReynoldsResult as = solveWith(rs.grid(), st, SolverKind::ActiveSet, 1e-12);
     EXPECT_LT(maxDiff(r, as), 1e-12);
     EXPECT_GT(as.pressure.maxCoeff(), 1e5);
+    // A re-solve with a new squeeze rate after the fallback solved: the fallback's system, again
+    // equal to an active-set solve of the changed film.
+    FilmState squeezed = st;
+    squeezed.dhdt = Eigen::VectorXd::Constant(rs.grid().size(), -2e-3);
+    const ReynoldsResult again = rs.resolve(squeezed.dhdt, r.pressure);
+    EXPECT_TRUE(again.fellBack);
+    const ReynoldsResult freshSqueezed = solveWith(rs.grid(), squeezed, SolverKind::ActiveSet, 1e-12);
+    EXPECT_LT(maxDiff(again, freshSqueezed), 1e-12);
+    EXPECT_GT(maxDiff(freshSqueezed, as), 1e-3) << "the squeeze must change the film";
     opt.control.maxIterations = 200;
     ReynoldsSolver converging(rs.grid(), Lubricant(jb.mu), opt);
     EXPECT_FALSE(converging.solve(st).fellBack) << "a converged multigrid solve is kept";
