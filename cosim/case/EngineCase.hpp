@@ -162,6 +162,9 @@ struct CouplingSpec {
     /// ≤ tolerance × piston.clearance (docs/coupling.md §1).
     double tolerance = 1e-3;
     int maxIterations = 30;    ///< passes per step, one film solve each (+ 2 for the first pass's Jacobian)
+    /// The default of maxIterations with a flexible body on the liner's oil layer (a starved
+    /// mass-conserving film; docs/coupling.md §6).
+    static constexpr int kStarvedFlexiblePasses = 150;
     CouplingAcceleration acceleration = CouplingAcceleration::IqnIls;  ///< of the partitioned method
     CouplingMethod method = CouplingMethod::Newton;
     ElasticResponse response = ElasticResponse::QuasiStatic;

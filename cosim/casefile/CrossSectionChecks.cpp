@@ -28,9 +28,8 @@ void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c) {
                                 c.piston.skirtTop, c.engine.pinTdcDepth));
 }
 
-// The mass-conserving film with a flexible body: the coupled Newton method, on a flooded supply
-// (docs/coupling.md §6).
-void requireSupportedMassConserving(const YamlSection& lubricant, const YamlSection& coupling, const EngineCase& c) {
+// The mass-conserving film with a flexible body: the coupled Newton method (docs/coupling.md §6).
+void requireSupportedMassConserving(const YamlSection& coupling, const EngineCase& c) {
     const bool flexible = c.pistonBody.model == BodyModel::Flexible || c.linerBody.model == BodyModel::Flexible;
     if (c.lubricant.cavitation != CavitationModel::MassConserving || !flexible) return;
     if (c.coupling.method == CouplingMethod::Partitioned)
@@ -38,12 +37,6 @@ void requireSupportedMassConserving(const YamlSection& lubricant, const YamlSect
                                 "body: the film's content term carries the elastic thickness change, a coupling gain "
                                 "that grows as 1/dt (docs/coupling.md section 6). Use coupling.method: newton (the "
                                 "default)");
-    if (c.lubricant.supply.model == OilSupplyModel::LinerLayer)
-        lubricant.fail("supply", "model: liner_layer runs with rigid bodies only: with a flexible body the coupled "
-                                 "Newton iteration does not converge on the starved film (its linearisation holds the "
-                                 "full-film / cavitated partition, and a starved film's meniscus moves with the "
-                                 "deformation; docs/coupling.md section 6). Use rigid bodies (flexehd run --rigid), or "
-                                 "the flooded supply with flexible ones");
 }
 
 // The oil-control ring's band above the skirt and below the deck at TDC (docs/case-file.md,

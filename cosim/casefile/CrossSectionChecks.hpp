@@ -11,9 +11,9 @@ namespace flexehd::cosim::casefile {
 void requirePinTdcDepth(const YamlSection& engine, const EngineCase& c);
 /// The skirt top below the deck at TDC (after engine, bodies and piston).
 void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c);
-/// The mass-conserving film with a flexible body: the coupled Newton method on a flooded supply
+/// The mass-conserving film with a flexible body: the coupled Newton method
 /// (docs/coupling.md §6; after bodies, lubricant and coupling).
-void requireSupportedMassConserving(const YamlSection& lubricant, const YamlSection& coupling, const EngineCase& c);
+void requireSupportedMassConserving(const YamlSection& coupling, const EngineCase& c);
 /// lubricant.supply.oil_control_ring above piston.skirt_top and, at TDC, below the deck.
 void requireOilControlRingOnPiston(const YamlSection& lubricant, const EngineCase& c);
 
