@@ -8,7 +8,10 @@
 # (like the seed's Fig. 5; flooded vs starved). Results in out/engine86/.
 # FLEXEHD_EXAMPLE_LINER=1 also runs the flexible piston + flexible liner case;
 # FLEXEHD_EXAMPLE_RIGID_RATE=1 also EHD with the rigid film thickness's rate only in the squeeze
-# term (ehd_rigid_rate.yaml, about 40 s more; docs/coupling.md section 3).
+# term (ehd_rigid_rate.yaml, about 40 s more; docs/coupling.md section 3);
+# FLEXEHD_EXAMPLE_STARVED_EHD=1 also the flexible piston on the 3 um liner oil layer
+# (starved_ehd.yaml, about 12 minutes more; docs/coupling.md section 6) with its plots against
+# the flooded EHD run and the starved HD run.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/install_deps.sh" --with-python  # the plots at the end need numpy and matplotlib
@@ -60,6 +63,16 @@ echo "== HD with the mass-conserving film: flooded, and on a 3 um liner oil laye
 /usr/bin/python3 "$root/scripts/plot_results.py" "$out/mass_conserving" --compare "$out/starved" "$out/hd" \
   --labels "flooded" "starved (3 um layer)" "flooded, Reynolds condition" --out "$out/plots_oil_supply"
 /usr/bin/python3 "$root/scripts/plot_wear.py" "$out/starved" --log 3 --out "$out/plots_oil_supply"
+if [[ "${FLEXEHD_EXAMPLE_STARVED_EHD:-0}" == 1 ]]; then
+  echo "== EHD with the mass-conserving film on the 3 um liner oil layer (flexible piston, starved)"
+  "$flexehd" run "$root/examples/engine86/starved_ehd.yaml"
+  /usr/bin/python3 "$root/scripts/plot_results.py" "$out/starved_ehd" --compare "$out/ehd" "$out/starved" \
+    --labels "EHD starved (3 um layer)" "EHD flooded, Reynolds condition" "HD starved (3 um layer)" \
+    --out "$out/plots_starved_ehd"
+  /usr/bin/python3 "$root/scripts/plot_wear.py" "$out/starved_ehd" --log 3 --out "$out/plots_starved_ehd"
+  echo "EHD on the starved layer: $out/starved_ehd/, plots against the flooded EHD and the starved HD runs in"
+  echo "$out/plots_starved_ehd/."
+fi
 echo
 echo "Results: $out/{hd,ehd,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
 echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil) with the starved run's"
