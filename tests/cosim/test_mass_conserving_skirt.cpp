@@ -291,8 +291,9 @@ TEST(MassConservingSkirt, StarvedFlexiblePistonStepsSolveTheCoupledEquations) {
 // over a fired cycle: the skirt's compliance spreads the load of its few full-film patches, so
 // the peak film pressure is far lower (the rigid skirt's patches carry the slap on the
 // asperities' and the squeeze film's stiffness alone) and the surfaces overlap less; the skirt
-// deflects away from the load and the conforming surface widens the wetted patches, so the
-// wetted share is larger and the piston's lateral shift (its pin axis) swings wider.
+// deflects away from the load, so the piston's lateral shift (its pin axis) swings wider. The
+// wetted share is printed, not asserted: the two differ by less than the starved motion's
+// sensitivity to round-off moves the flexible one's (0.0150 to 0.0155 between two builds).
 TEST(MassConservingSkirt, FlexibilityOnAStarvedLayerSpreadsTheLoad) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / ("flexehd_mc_trend_" + std::to_string(::getpid()));
@@ -334,7 +335,6 @@ TEST(MassConservingSkirt, FlexibilityOnAStarvedLayerSpreadsTheLoad) {
                     name, f.minFilm * 1e6, f.maxPressure, f.wetted, f.power, f.swing * 1e6);
     EXPECT_LT(b.maxPressure, 0.5 * a.maxPressure);
     EXPECT_GT(b.minFilm, a.minFilm);
-    EXPECT_GT(b.wetted, a.wetted);
     EXPECT_GT(b.swing, a.swing);
     fs::remove_all(dir);
 }
