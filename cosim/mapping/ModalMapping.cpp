@@ -84,9 +84,24 @@ void ModalMapping::modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) c
     if (P.rows() != gridSize_)
         throw std::invalid_argument("ModalMapping::modalForces: " + std::to_string(P.rows()) +
                                     " pressures per column for a grid of " + std::to_string(gridSize_) + " nodes");
-    Eigen::MatrixXd pa(static_cast<Eigen::Index>(active_.size()), P.cols());
-    for (std::size_t c = 0; c < active_.size(); ++c) pa.row(static_cast<Eigen::Index>(c)) = P.row(active_[c]);
-    out.noalias() = B_ * pa;
+    // Only the nodes with a load in some column: a starved film's pressure change lives on its few
+    // full-film and contact nodes (docs/coupling.md §6), a small share of the active ones.
+    std::vector<Eigen::Index> loaded;
+    for (std::size_t c = 0; c < active_.size(); ++c)
+        if (!P.row(active_[c]).isZero(0.0)) loaded.push_back(static_cast<Eigen::Index>(c));
+    const auto nl = static_cast<Eigen::Index>(loaded.size());
+    if (2 * nl >= static_cast<Eigen::Index>(active_.size())) {
+        Eigen::MatrixXd pa(static_cast<Eigen::Index>(active_.size()), P.cols());
+        for (std::size_t c = 0; c < active_.size(); ++c) pa.row(static_cast<Eigen::Index>(c)) = P.row(active_[c]);
+        out.noalias() = B_ * pa;
+        return;
+    }
+    Eigen::MatrixXd Bl(B_.rows(), nl), pl(nl, P.cols());
+    for (Eigen::Index c = 0; c < nl; ++c) {
+        Bl.col(c) = B_.col(loaded[static_cast<std::size_t>(c)]);
+        pl.row(c) = P.row(active_[static_cast<std::size_t>(loaded[static_cast<std::size_t>(c)])]);
+    }
+    out.noalias() = Bl * pl;
 }
 
 Eigen::VectorXd ModalMapping::radialDisplacement(const Eigen::VectorXd& q) const {

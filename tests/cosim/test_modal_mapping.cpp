@@ -152,6 +152,13 @@ TEST(ModalMapping, RestrictedToFilmNodesEqualsTheFullProducts) {
     restricted.modalForces(P, F);
     EXPECT_LE((F.col(0) - fRes).norm(), 1e-14 * fRes.norm());
     EXPECT_LE((F.col(1) - 0.5 * fRes).norm(), 1e-14 * fRes.norm());
+    // Pressure changes on a few nodes only (a starved film's patches; the product skips the
+    // unloaded nodes): the full operator's product.
+    Eigen::MatrixXd Ps = Eigen::MatrixXd::Zero(g.size(), 3);
+    for (std::size_t i = 0; i < active.size(); i += 37) Ps.row(active[i]) = Eigen::RowVector3d(p[active[i]], -1e5, 2e4);
+    restricted.modalForces(Ps, F);
+    const Eigen::MatrixXd expected = restricted.loadOperator() * Ps;
+    EXPECT_LE((F - expected).norm(), 1e-13 * expected.norm());
     // The full-size operators: zero columns / rows off the active nodes, the same products.
     const Eigen::MatrixXd B = restricted.loadOperator(), G = restricted.gridShapes();
     EXPECT_LE((B * p - fRes).norm(), 1e-13 * fRes.norm());
