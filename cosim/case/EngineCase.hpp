@@ -233,6 +233,11 @@ struct EngineCase {
     OutputSpec output;
     LinerSpec liner;      ///< liner geometry beyond the bore: assembly distortion
     ThermalSpec thermal;  ///< thermal displacements (none by default)
+
+    /// The piston or the liner is a flexible (reduced) body.
+    bool hasFlexibleBody() const {
+        return pistonBody.model == BodyModel::Flexible || linerBody.model == BodyModel::Flexible;
+    }
 };
 
 }  // namespace flexehd::cosim

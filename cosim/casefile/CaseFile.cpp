@@ -64,8 +64,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     readCylinderPressure(top, c);
     readGrid(top, c.piston, c.grid);
     readTime(top, c.time);
-    const bool flexible = c.pistonBody.model == BodyModel::Flexible || c.linerBody.model == BodyModel::Flexible;
-    if (flexible && c.lubricant.supply.model == OilSupplyModel::LinerLayer)
+    if (c.hasFlexibleBody() && c.lubricant.supply.model == OilSupplyModel::LinerLayer)
         c.coupling.maxIterations = CouplingSpec::kStarvedFlexiblePasses;  // coupling.max_iterations' default
     const YamlSection coupling = readCoupling(top, c.coupling);
     requireSupportedMassConserving(coupling, c);

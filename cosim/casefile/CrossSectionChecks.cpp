@@ -30,8 +30,7 @@ void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c) {
 
 // The mass-conserving film with a flexible body: the coupled Newton method (docs/coupling.md §6).
 void requireSupportedMassConserving(const YamlSection& coupling, const EngineCase& c) {
-    const bool flexible = c.pistonBody.model == BodyModel::Flexible || c.linerBody.model == BodyModel::Flexible;
-    if (c.lubricant.cavitation != CavitationModel::MassConserving || !flexible) return;
+    if (c.lubricant.cavitation != CavitationModel::MassConserving || !c.hasFlexibleBody()) return;
     if (c.coupling.method == CouplingMethod::Partitioned)
         coupling.fail("method", "partitioned does not converge with lubricant.cavitation: mass_conserving and a flexible "
                                 "body: the film's content term carries the elastic thickness change, a coupling gain "

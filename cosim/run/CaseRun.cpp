@@ -28,7 +28,7 @@ void say(const std::function<void(const std::string&)>& f, const std::string& s)
 }
 
 std::string describe(const EngineCase& c) {
-    const bool anyFlexible = c.pistonBody.model == BodyModel::Flexible || c.linerBody.model == BodyModel::Flexible;
+    const bool anyFlexible = c.hasFlexibleBody();
     return fmt::format("flexehd run {}: piston {}, liner {}{}, grid {} x {}, {} rpm -> {}", c.path,
                        c.pistonBody.model == BodyModel::Flexible ? "flexible" : "rigid",
                        c.linerBody.model == BodyModel::Flexible ? "flexible" : "rigid",
