@@ -165,6 +165,11 @@ struct CouplingSpec {
     /// The default of maxIterations with a flexible body on the liner's oil layer (a starved
     /// mass-conserving film; docs/coupling.md §6).
     static constexpr int kStarvedFlexiblePasses = 150;
+    /// coupling.keep_jacobian: the step's Jacobian kept from step to step while it serves (rigid
+    /// bodies: the motion's while the step size is the same; flexible bodies with method Newton:
+    /// the coupled one, re-formed from its parts for a new step size) and formed anew where a pass
+    /// does not halve the residual; false: formed at every step's first pass (docs/coupling.md §1).
+    bool keepJacobian = true;
     CouplingAcceleration acceleration = CouplingAcceleration::IqnIls;  ///< of the partitioned method
     CouplingMethod method = CouplingMethod::Newton;
     ElasticResponse response = ElasticResponse::QuasiStatic;

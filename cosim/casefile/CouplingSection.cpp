@@ -7,13 +7,15 @@ namespace flexehd::cosim::casefile {
 
 YamlSection readCoupling(const YamlSection& top, CouplingSpec& k) {
     const YamlSection coupling(top.source(), top.get("coupling"), "coupling",
-                               {"tolerance", "max_iterations", "method", "acceleration", "elastic_squeeze"});
+                               {"tolerance", "max_iterations", "method", "acceleration", "elastic_squeeze",
+                                "keep_jacobian"});
     k.tolerance =
         number(coupling, "tolerance", {"relative tolerance", ""}, Sign::Positive, k.tolerance);
     if (!(k.tolerance < 1.0))
         coupling.fail("tolerance",
                       fmt::format("expected a relative tolerance below 1, got {:g}", k.tolerance));
     k.maxIterations = integer(coupling, "max_iterations", 1, 10000, k.maxIterations, "iterations");
+    k.keepJacobian = boolean(coupling, "keep_jacobian", k.keepJacobian);
     k.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0
                                   ? CouplingAcceleration::IqnIls
                                   : CouplingAcceleration::Aitken;

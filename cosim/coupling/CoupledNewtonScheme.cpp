@@ -16,6 +16,7 @@ CoupledNewtonScheme::CoupledNewtonScheme(StepSolver& step) : step_(step), mp_(st
 
 void CoupledNewtonScheme::beginStep(const Eigen::Vector2d& x, const Eigen::VectorXd& y) {
     iterate_ = NewtonIterate{};
+    if (!step_.case_.coupling.keepJacobian) parts_.valid = false;  // a new linearisation every step
     iterate_.acceptedX = x;
     iterate_.acceptedY = y;
 }

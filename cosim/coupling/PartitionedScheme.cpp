@@ -12,6 +12,7 @@ namespace flexehd::cosim {
 
 PartitionedScheme::PartitionedScheme(StepSolver& step)
     : step_(step), flexible_(step.mp_ + step.ml_ > 0),
+      keepJacobian_(step.case_.coupling.keepJacobian),
       accelerator_(makeCouplingAccelerator(step.case_.coupling.acceleration)) {}
 
 void PartitionedScheme::contactsChanged() {
@@ -43,11 +44,28 @@ CouplingScheme::PassOutcome PartitionedScheme::pass(const StepContext& ctx, cons
                                                     Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
                                                     Eigen::Vector2d& dx, bool& resolved, std::string& why) {
     resolved = false;
+    // The residual in units of its tolerances.
+    const double measure = std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + tol.forceFloor)),
+                                    std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach)));
+    const double rate = ctx.step.a0 / ctx.step.dt;
+    bool fresh = false;
     if (pass == 0) {
+        // With rigid bodies the last step's Jacobian is kept while the step size and the BDF2
+        // rate are the same (its inertia and squeeze-damping parts depend on them); flexible
+        // bodies form it at every step's first pass.
+        fresh = flexible_ || !keepJacobian_ || !kept_ || ctx.step.dt != keptDt_ || rate != keptRate_;
+    } else if (!jacobianFresh_ && measure > 0.5 * lastMeasure_) {
+        fresh = true;  // the kept Jacobian did not halve the residual: a new one at this iterate
+    }
+    if (fresh) {
         if (!motionJacobian(ctx, tol, x, y, ev, iterations)) {
+            kept_ = false;
             why = "a film solve of the finite-difference Jacobian failed";
             return PassOutcome::Failed;
         }
+        jacobianFresh_ = true;
+    } else if (pass == 0) {
+        jacobianFresh_ = false;
     } else if (!flexible_) {
         // Broyden update of the rigid motion's Jacobian. With flexible bodies the Jacobian is
         // held through the step (a chord iteration): the joint quasi-Newton update below
@@ -59,6 +77,10 @@ CouplingScheme::PassOutcome PartitionedScheme::pass(const StepContext& ctx, cons
             jacobian_ += (dr - jacobian_ * ddx) * w.transpose() / d2;  // Broyden, scaled
         }
     }
+    lastMeasure_ = measure;
+    kept_ = true;
+    keptDt_ = ctx.step.dt;
+    keptRate_ = rate;
     dx = -jacobian_.partialPivLu().solve(ev.residual);
     return PassOutcome::Update;
 }

@@ -197,6 +197,7 @@ TEST(CaseFileExample, ReadsWithTheDocumentedValues) {
     EXPECT_EQ(c.pistonBody.interface, "pin_bore");
     EXPECT_EQ(c.linerBody.model, BodyModel::Rigid);
     EXPECT_EQ(c.coupling.acceleration, cosim::CouplingAcceleration::IqnIls);
+    EXPECT_TRUE(c.coupling.keepJacobian);
     EXPECT_EQ(c.coupling.response, cosim::ElasticResponse::QuasiStatic);
     EXPECT_NEAR(c.time.tiltTolerance, 5e-6, 1e-9);
     EXPECT_EQ(c.output.directory, fs::path(source("out/engine86/ehd")).lexically_normal().string());
@@ -471,6 +472,8 @@ TEST(CaseFileErrors, WrongTypes) {
                 AllOf(StartsWith(file + ": output.mode_shapes"), HasSubstr("true or false")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\ncoupling: {elastic_squeeze: 1e-3}"),
                 AllOf(StartsWith(file + ": coupling.elastic_squeeze"), HasSubstr("true or false")));
+    EXPECT_THAT(caseError(dir, "name: small", "name: small\ncoupling: {keep_jacobian: 0.5}"),
+                AllOf(StartsWith(file + ": coupling.keep_jacobian"), HasSubstr("true or false")));
     EXPECT_THAT(caseError(dir, "name: small", "name: small\ncoupling: {acceleration: iqn_ils}"),
                 AllOf(StartsWith(file + ": coupling.acceleration"), HasSubstr("one of iqn-ils, aitken"),
                       HasSubstr("did you mean 'iqn-ils'?")));
@@ -601,6 +604,15 @@ TEST(CaseFile, FlexibleBodiesOnTheLinerLayerGetMorePassesByDefault) {
     EXPECT_EQ(passes(starved), CouplingSpec{}.maxIterations);
     EXPECT_EQ(passes("name: small\nlubricant: {cavitation: mass_conserving}\n" + flexible), CouplingSpec{}.maxIterations);
     EXPECT_GT(CouplingSpec::kStarvedFlexiblePasses, CouplingSpec{}.maxIterations);
+}
+
+TEST(CaseFile, TheKeptJacobianCanBeTurnedOff) {
+    const fs::path dir = scratchDir();
+    auto keep = [&](const std::string& text) {
+        return readCaseFile(caseWith(dir, "name: small", text), noBodyFiles()).coupling.keepJacobian;
+    };
+    EXPECT_TRUE(keep("name: small"));
+    EXPECT_FALSE(keep("name: small\ncoupling: {keep_jacobian: false}"));
 }
 
 TEST(CaseFile, OilControlRingIsReadAndPlacedOnThePiston) {
