@@ -185,7 +185,8 @@ private:
 // pattern is fixed; each partition rewrites its values through the kept pointers.
 class JfoActiveSetSystem {
 public:
-    JfoActiveSetSystem(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const double* p)
+    JfoActiveSetSystem(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const double* p,
+                       const double* phi = nullptr)
         : nf_(static_cast<int>(rows.size())) {
         const int n = g.size();
         idx_.assign(static_cast<std::size_t>(n), -1);
@@ -203,11 +204,11 @@ public:
                 d += c;
                 const double a = qo > 0.0 ? 0.0 : -qo;
                 if (qo > 0.0) b += qo;
-                if (g.kind(m) == NodeKind::Film) {
+                if (idx_[static_cast<std::size_t>(m)] >= 0) {
                     links_.push_back({m, c, a, nullptr});
                     trip.emplace_back(r, idx_[static_cast<std::size_t>(m)], 0.0);
-                } else {
-                    kn -= c * p[m] + a * net.inlet(m);
+                } else {  // a boundary node, or a Film node outside the rows (held: its p and φ)
+                    kn -= c * p[m] + a * (g.kind(m) == NodeKind::Film ? phi[m] : net.inlet(m));
                 }
             });
             b += net.storage(k);

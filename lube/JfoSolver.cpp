@@ -74,29 +74,29 @@ void clipToBounds(const std::vector<int>& rows, double pcav, double* p, double* 
     }
 }
 
-// JfoMethod::ActiveSet: the partition full film / cavitated solved and updated until it settles;
-// true when the settled iterate meets the tolerance (else the sweeps polish it, from a feasible
-// iterate).
-bool activeSetSolve(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const JfoOptions& o,
-                    SparseLuFactor& lu, JfoResult& res) {
+// How the partition iteration over a set of rows ended.
+enum class Partition { Settled, Unsettled, Singular, NonFinite };
+
+// The partition full film / cavitated of the Film nodes `rows` solved and updated until it
+// settles (the other nodes held at their p and φ), at most maxActiveSetIterations factorizations
+// (counted in factorizations); the iterate is clipped to the bounds.
+Partition settlePartition(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const JfoOptions& o,
+                          SparseLuFactor& lu, double* p, double* phi, int& factorizations) {
     const double pcav = o.cavitationPressure;
-    double* p = res.pressure.data();
-    double* phi = res.fraction.data();
-    JfoActiveSetSystem sys(net, g, rows, p);
+    JfoActiveSetSystem sys(net, g, rows, p, phi);
     const int nf = sys.size();
     // Partition: cavitated where the film is partial (and a Couette outflow or storage term
     // can carry it: B > 0), full film elsewhere.
     std::vector<char> cav(static_cast<std::size_t>(nf));
     for (int r = 0; r < nf; ++r) cav[static_cast<std::size_t>(r)] = sys.B(r) > 0.0 && phi[rows[static_cast<std::size_t>(r)]] < 1.0;
     Eigen::VectorXd rhs;
+    Partition outcome = Partition::Unsettled;
     for (int it = 1; it <= o.maxActiveSetIterations; ++it) {
         sys.setPartition(cav, pcav, rhs);
-        if (!lu.factor(sys.matrix()))  // the ordering kept while the pattern (the Film nodes) is the same
-            throw std::runtime_error("JfoSolver: sparse LU failed in active-set step " + std::to_string(it) +
-                                     " (singular: a closed film-fraction loop with no supply, e.g. a steady "
-                                     "film without inlet?)");
+        ++factorizations;
+        if (!lu.factor(sys.matrix())) return Partition::Singular;  // the ordering kept while the pattern is the same
         const Eigen::VectorXd y = lu.solve(rhs);
-        res.factorizations = it;
+        if (!std::isfinite(y.sum())) return Partition::NonFinite;
         bool changed = false;
         for (int r = 0; r < nf; ++r) {
             const auto sr = static_cast<std::size_t>(r);
@@ -111,18 +111,33 @@ bool activeSetSolve(const JfoNetwork& net, const FilmGrid& g, const std::vector<
                 if (y[r] < pcav && sys.B(r) > 0.0) cav[sr] = 1, changed = true;
             }
         }
-        if (!std::isfinite(y.sum()))
-            throw std::runtime_error("JfoSolver: active-set step " + std::to_string(it) +
-                                     " gave a non-finite solution");
-        if (changed) continue;
-        // Partition settled: the balances hold to round-off.
-        clipToBounds(rows, pcav, p, phi);
-        res.residual = net.residual(rows, p, phi);
-        if (res.residual <= o.control.tolerance) return true;
-        break;  // polish with Gauss–Seidel sweeps
+        if (!changed) {  // settled: the balances hold to round-off
+            outcome = Partition::Settled;
+            break;
+        }
     }
     clipToBounds(rows, pcav, p, phi);
-    return false;
+    return outcome;
+}
+
+// JfoMethod::ActiveSet: the partition of all Film nodes; true when the settled iterate meets the
+// tolerance (else the sweeps polish it, from a feasible iterate).
+bool activeSetSolve(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const JfoOptions& o,
+                    SparseLuFactor& lu, JfoResult& res) {
+    double* p = res.pressure.data();
+    double* phi = res.fraction.data();
+    res.factorizations = 0;
+    const Partition outcome = settlePartition(net, g, rows, o, lu, p, phi, res.factorizations);
+    if (outcome == Partition::Singular)
+        throw std::runtime_error("JfoSolver: sparse LU failed in active-set step " + std::to_string(res.factorizations) +
+                                 " (singular: a closed film-fraction loop with no supply, e.g. a steady "
+                                 "film without inlet?)");
+    if (outcome == Partition::NonFinite)
+        throw std::runtime_error("JfoSolver: active-set step " + std::to_string(res.factorizations) +
+                                 " gave a non-finite solution");
+    if (outcome != Partition::Settled) return false;
+    res.residual = net.residual(rows, p, phi);
+    return res.residual <= o.control.tolerance;
 }
 
 // The projected Gauss–Seidel sweeps (Ausas et al.) with over-relaxation w of the full-film
@@ -183,9 +198,9 @@ void effectiveSqueeze(const JfoNetwork& net, const FilmGrid& g, const FilmState&
 // direction of the Couette flow: each node's upstream neighbours are updated before it, so the
 // film fraction is transported through the cavities and a rupture or reformation front moves as
 // far as the flow carries it in one pass (repeated until φ no longer changes where the flow has
-// a circumferential part; once where it is axial only).
+// a circumferential part; once where it is axial only). Nodes marked in `held` keep their values.
 void sweepAlongFlow(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, double pcav, double* p,
-                    double* phi) {
+                    double* phi, const std::vector<char>* held = nullptr) {
     const int nz = g.nAxial(), nt = g.nTheta();
     const bool downZ = film.sumAxial() < 0.0, downT = film.sumCircumferential() < 0.0;
     for (int sweep = 0; sweep < 200; ++sweep) {
@@ -194,7 +209,7 @@ void sweepAlongFlow(const JfoNetwork& net, const FilmGrid& g, const FilmState& f
             const int i = downZ ? nz - 1 - ii : ii;
             for (int jj = 0; jj < nt; ++jj) {
                 const int k = g.index(i, downT ? nt - 1 - jj : jj);
-                if (g.kind(k) != NodeKind::Film) continue;
+                if (g.kind(k) != NodeKind::Film || (held && (*held)[static_cast<std::size_t>(k)])) continue;
                 const JfoNetwork::Balance bl = net.balance(k, p, phi);
                 const double phiStar = bl.B > 0.0 ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
                 const double before = phi[k];
@@ -210,6 +225,61 @@ void sweepAlongFlow(const JfoNetwork& net, const FilmGrid& g, const FilmState& f
         }
         if (change <= 1e-15 || film.sumCircumferential() == 0.0) return;
     }
+}
+
+// The full-film pad of a starved film and its rim: the Film nodes within kPadRim faces of a
+// full-film node (φ = 1, p > p_cav), marked in inPad.
+constexpr int kPadRim = 2;
+std::vector<int> fullFilmPad(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const double* p,
+                             const double* phi, double pcav, std::vector<char>& inPad) {
+    inPad.assign(static_cast<std::size_t>(g.size()), 0);
+    std::vector<int> pad;
+    for (int k : rows)
+        if (phi[k] >= 1.0 && p[k] > pcav) inPad[static_cast<std::size_t>(k)] = 1, pad.push_back(k);
+    std::size_t from = 0;
+    for (int layer = 0; layer < kPadRim; ++layer) {
+        const std::size_t to = pad.size();
+        for (std::size_t i = from; i < to; ++i)
+            net.forFaces(pad[i], [&](int m, double, double) {
+                if (g.kind(m) == NodeKind::Film && !inPad[static_cast<std::size_t>(m)])
+                    inPad[static_cast<std::size_t>(m)] = 1, pad.push_back(m);
+            });
+        from = to;
+    }
+    std::sort(pad.begin(), pad.end());
+    return pad;
+}
+
+// The first stage of JfoMethod::Multigrid from a warm start where the full film is a small pad
+// (a starved film: docs/lube.md §3b, "the full-film pad"): the nodal update along the flow, then
+// until the residual meets the tolerance: the partition of the pad and its rim solved as the
+// active set does (sparse LU of a few hundred unknowns), the other nodes held; the nodal update
+// along the flow of the nodes outside it, which carries the pad's outflow downstream and moves
+// the cavities' fronts. The pad is taken anew each time (it grows where a node outside it turned
+// full film). False (the multigrid passes continue from the iterate) when the pad and rim are more
+// than kPadShare of the Film nodes, its partition does not settle, or kPadRounds do not converge.
+constexpr double kPadShare = 0.25;
+constexpr int kPadRounds = 8;
+bool fullFilmPadSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, const std::vector<int>& rows,
+                      const JfoOptions& o, SparseLuFactor& lu, JfoResult& res) {
+    const double pcav = o.cavitationPressure;
+    double* p = res.pressure.data();
+    double* phi = res.fraction.data();
+    sweepAlongFlow(net, g, film, pcav, p, phi);
+    std::vector<char> inPad;
+    int factorizations = 0;
+    for (int round = 1; round <= kPadRounds; ++round) {
+        const std::vector<int> pad = fullFilmPad(net, g, rows, p, phi, pcav, inPad);
+        if (static_cast<double>(pad.size()) > kPadShare * static_cast<double>(rows.size())) return false;
+        if (!pad.empty() && settlePartition(net, g, pad, o, lu, p, phi, factorizations) != Partition::Settled)
+            return false;
+        sweepAlongFlow(net, g, film, pcav, p, phi, &inPad);
+        res.iterations = round;
+        res.padNodes = static_cast<int>(pad.size());
+        res.residual = net.residual(rows, p, phi);
+        if (res.residual <= o.control.tolerance) return true;
+    }
+    return false;
 }
 
 // JfoMethod::Multigrid: the fixed point of the Reynolds-condition problem with the effective
@@ -318,7 +388,12 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
             ro.control.tolerance = options_.control.tolerance;
             multigrid_ = std::make_unique<ReynoldsSolver>(g, lubricant_, ro);
         }
-        solved = multigridSolve(net, g, film, dt, previous, rows, options_, warm, *multigrid_, res);
+        if (warm) {
+            if (!padLu_) padLu_ = std::make_unique<SparseLuFactor>();
+            solved = res.padStage = fullFilmPadSolve(net, g, film, rows, options_, *padLu_, res);
+            if (!solved) res.padNodes = 0;
+        }
+        if (!solved) solved = multigridSolve(net, g, film, dt, previous, rows, options_, warm, *multigrid_, res);
     }
     if (!solved && options_.method != JfoMethod::GaussSeidel) {
         if (!warm && options_.method == JfoMethod::ActiveSet)

@@ -44,6 +44,10 @@
 // the cavities and moves the fronts] have the JFO solution as their fixed point. The pass stops
 // at the same criterion; should the residual not halve over three passes (a steady starved
 // film's meniscus alternates between two nodes) or the passes run out, the active set finishes.
+// From a warm start whose full film is a small pad (a starved film; with its rim of two nodes at
+// most a quarter of the Film nodes) the active set on the pad and its rim, the nodes outside held,
+// alternates with the nodal update along the flow of the nodes outside it, the pad taken anew
+// each round, before the passes (docs/lube.md §3b).
 #include <Eigen/Core>
 #include <memory>
 #include <vector>
@@ -93,6 +97,11 @@ struct JfoResult {
     int iterations = 0;        ///< Gauss–Seidel sweeps (Multigrid: fixed-point passes)
     double residual = 0.0;
     int factorizations = 0;    ///< ActiveSet: partition updates, one sparse LU each
+    /// Multigrid: solved by the full-film pad stage (iterations then counts its rounds), and the
+    /// nodes of the pad and its rim in its last round (0: no full film, the film fraction's
+    /// transport alone solved it).
+    bool padStage = false;
+    int padNodes = 0;
     /// The net flow (m³/s) from each Fixed or Void node into the Film nodes (0 on Film nodes), as
     /// JfoSolver::boundaryFlows gives it.
     Eigen::VectorXd boundaryFlow;
@@ -140,6 +149,7 @@ private:
     // solve() is therefore not safe to call from two threads on one solver.
     std::unique_ptr<SparseLuFactor> lu_;
     mutable std::unique_ptr<ReynoldsSolver> multigrid_;  // Multigrid: built on the first solve
+    mutable std::unique_ptr<SparseLuFactor> padLu_;     // Multigrid: the full-film pad's LU
     std::unique_ptr<JfoTopology> topology_;              // the faces touching Film nodes, once
 };
 
