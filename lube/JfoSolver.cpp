@@ -265,6 +265,10 @@ bool fullFilmPadSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState&
     const double pcav = o.cavitationPressure;
     double* p = res.pressure.data();
     double* phi = res.fraction.data();
+    // A warm start whose full film alone is beyond the share (a flooded film): the passes.
+    int full = 0;
+    for (int k : rows) full += phi[k] >= 1.0 && p[k] > pcav;
+    if (static_cast<double>(full) > kPadShare * static_cast<double>(rows.size())) return false;
     sweepAlongFlow(net, g, film, pcav, p, phi);
     std::vector<char> inPad;
     int factorizations = 0;
