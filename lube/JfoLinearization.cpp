@@ -1,5 +1,6 @@
 #include "lube/JfoLinearization.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -58,29 +59,64 @@ void JfoLinearization::linearize(const FilmState& film, double dt, const JfoStat
     const double* phi = solution.fraction.data();
     const JfoNetwork net(topo, g, film, eta, dt, previous, inlet, pcav);
 
-    // The partition of the solution and its system M (the active set's, settled).
-    JfoActiveSetSystem sys(net, g, rows_, p);
-    const int nf = sys.size();
-    cavRow_.assign(static_cast<std::size_t>(nf), 0);
-    cavitated_ = 0;
-    for (int r = 0; r < nf; ++r) {
-        const bool cav = sys.B(r) > 0.0 && phi[rows_[static_cast<std::size_t>(r)]] < 1.0;
-        cavRow_[static_cast<std::size_t>(r)] = cav;
-        cavitated_ += cav;
+    // The partition of the solution (the active set's, settled) and the rows δp depends on.
+    const std::vector<char> cavitated = partition(net, g, p, phi);
+    sys_ = dependentRows(net, g, cavitated);
+    if (sys_.empty()) {  // no full film: no pressure to change
+        dFdh_.resize(0, 0);
+        return;
     }
+    JfoActiveSetSystem sys(net, g, sys_, p, phi);
+    sysCav_.resize(sys_.size());
+    for (std::size_t r = 0; r < sys_.size(); ++r) sysCav_[r] = cavitated[static_cast<std::size_t>(sys_[r])];
     Eigen::VectorXd rhs;
-    sys.setPartition(cavRow_, pcav, rhs);
+    sys.setPartition(sysCav_, pcav, rhs);
     if (!lu_->factor(sys.matrix()))
         throw std::runtime_error("JfoLinearization: the film's balances on its full-film / cavitated partition are "
                                  "singular (a cavity with no supply?)");
 
-    // ∂F/∂h by colour (ColouredDifference).
+    // ∂F/∂h of those rows by colour (ColouredDifference).
     const bool flux = inlets_ == InletResponse::FluxHeldWherePartial;
-    const Eigen::VectorXd F0 = balances(net, g, rows_, p, phi, flux);
-    dFdh_ = colouredThicknessDerivative(g, colouring_, film, rows_, F0, [&](const FilmState& fc) {
+    const Eigen::VectorXd F0 = balances(net, g, sys_, p, phi, flux);
+    dFdh_ = colouredThicknessDerivative(g, colouring_, film, sys_, F0, [&](const FilmState& fc) {
         const JfoNetwork nc(topo, g, fc, eta, dt, previous, inlet, pcav);
-        return balances(nc, g, rows_, p, phi, flux);
+        return balances(nc, g, sys_, p, phi, flux);
     });
+}
+
+std::vector<char> JfoLinearization::partition(const JfoNetwork& net, const FilmGrid& g, const double* p,
+                                              const double* phi) {
+    std::vector<char> cavitated(static_cast<std::size_t>(g.size()), 0);
+    cavitated_ = 0;
+    for (int k : rows_) {
+        // The active set's rule: cavitated where the film is partial and a Couette outflow or the
+        // storage term can carry it (B > 0).
+        const JfoNetwork::Balance bl = net.balance(k, p, phi);
+        const bool cav = bl.B > 0.0 && phi[k] < 1.0;
+        cavitated[static_cast<std::size_t>(k)] = cav;
+        cavitated_ += cav;
+    }
+    return cavitated;
+}
+
+std::vector<int> JfoLinearization::dependentRows(const JfoNetwork& net, const FilmGrid& g,
+                                                 const std::vector<char>& cavitated) const {
+    // The full-film rows and, transitively, the rows their system's entries reach: a full-film
+    // neighbour's pressure (Poiseuille), a cavitated neighbour's film fraction where its Couette
+    // flow comes in (upstream). No other row enters these, so their part of M δy = −(∂F/∂h) δh is
+    // a system of its own (docs/lube.md §3b, "Linearisation").
+    std::vector<char> in(static_cast<std::size_t>(g.size()), 0);
+    std::vector<int> rows;
+    for (int k : rows_)
+        if (!cavitated[static_cast<std::size_t>(k)]) in[static_cast<std::size_t>(k)] = 1, rows.push_back(k);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        net.forFaces(rows[i], [&](int m, double, double qo) {
+            const auto sm = static_cast<std::size_t>(m);
+            if (g.kind(m) != NodeKind::Film || in[sm]) return;
+            if (!cavitated[sm] || qo < 0.0) in[sm] = 1, rows.push_back(m);
+        });
+    std::sort(rows.begin(), rows.end());
+    return rows;
 }
 
 Eigen::MatrixXd JfoLinearization::pressureChange(const Eigen::MatrixXd& dh) const {
@@ -89,12 +125,12 @@ Eigen::MatrixXd JfoLinearization::pressureChange(const Eigen::MatrixXd& dh) cons
         throw std::invalid_argument("JfoLinearization::pressureChange: columns of " + std::to_string(n) +
                                     " nodes expected, got " + std::to_string(dh.rows()));
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, dh.cols());
-    if (rows_.empty() || dFdh_.rows() == 0) return out;
+    if (sys_.empty() || dFdh_.rows() == 0) return out;
     const Eigen::MatrixXd rhs = -(dFdh_ * dh);
     for (Eigen::Index c = 0; c < dh.cols(); ++c) {
         const Eigen::VectorXd dy = lu_->solve(rhs.col(c));
-        for (std::size_t r = 0; r < rows_.size(); ++r)
-            if (!cavRow_[r]) out(rows_[r], c) = dy[static_cast<Eigen::Index>(r)];
+        for (std::size_t r = 0; r < sys_.size(); ++r)
+            if (!sysCav_[r]) out(sys_[r], c) = dy[static_cast<Eigen::Index>(r)];
     }
     return out;
 }

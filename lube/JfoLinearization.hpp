@@ -26,6 +26,7 @@
 namespace flexehd::lube {
 
 class SparseLuFactor;
+class JfoNetwork;
 
 /// What an inlet holds as the thickness changes.
 enum class InletResponse {
@@ -57,9 +58,15 @@ private:
     InletResponse inlets_;
     GridColouring colouring_;
     std::unique_ptr<SparseLuFactor> lu_;
-    std::vector<int> rows_;        // the Film nodes (the system's rows, in order)
-    std::vector<char> cavRow_;     // per row: 1 cavitated
-    Eigen::SparseMatrix<double> dFdh_;  // rows × grid nodes
+    /// Per grid node: cavitated in the solution's partition (counted in cavitated_).
+    std::vector<char> partition(const JfoNetwork& net, const FilmGrid& g, const double* p, const double* phi);
+    /// The rows δp depends on: the full-film nodes and the rows their system's entries reach.
+    std::vector<int> dependentRows(const JfoNetwork& net, const FilmGrid& g, const std::vector<char>& cavitated) const;
+
+    std::vector<int> rows_;        // the Film nodes
+    std::vector<int> sys_;         // the rows of the linearisation's system, in order
+    std::vector<char> sysCav_;     // per row of it: 1 cavitated
+    Eigen::SparseMatrix<double> dFdh_;  // sys_ rows × grid nodes
     int cavitated_ = 0;
 };
 
