@@ -52,6 +52,8 @@ public:
 
     /// Film nodes cavitated (φ < 1) in the last linearisation.
     int cavitatedNodes() const { return cavitated_; }
+    /// Rows of the last linearisation's system: the Film nodes the full film's δp depends on.
+    int systemRows() const { return static_cast<int>(sys_.size()); }
 
 private:
     const JfoSolver* solver_;
