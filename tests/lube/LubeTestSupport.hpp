@@ -37,4 +37,33 @@ struct Journal {
     }
 };
 
+/// A skirt-like starved film: the journal's gap c(1 + ε cos θ), ε = 0.5 + 0.3 sin(2πt/T) breathing
+/// (squeeze, then opening), plus a barrel crown (2z/L)²; the outer surface slides axially at U
+/// (no circumferential speed) and both axial ends are inlets of fraction φ_in (feed), so the full
+/// film is a small pad where the barrel meets the oil.
+struct StarvedBarrel {
+    Journal journal;
+    double L = 0.04, U = 8.0, crown = 40e-6, T = 0.02, inlet = 0.4;
+
+    FilmGrid grid() const { return journal.finiteGrid(L, 72, 33); }
+    FilmState state(const FilmGrid& g, double t) const {
+        Journal j = journal;
+        j.eps = 0.5 + 0.3 * std::sin(2 * kPi * t / T);
+        FilmState f = j.state(g);
+        f.inner.circumferential = 0.0;
+        f.outer.axial = U;
+        for (int k = 0; k < g.size(); ++k) {
+            const double z = 2.0 * g.z(g.axialIndex(k)) / L;
+            f.h[k] += crown * z * z;
+        }
+        return f;
+    }
+    /// The inlet fraction on both axial ends of a solver's grid.
+    template <class Solver>
+    void feed(const FilmGrid& g, Solver& s) const {
+        for (int j = 0; j < g.nTheta(); ++j)
+            for (int i : {0, g.nAxial() - 1}) s.setInletFraction(g.index(i, j), inlet);
+    }
+};
+
 }  // namespace flexehd::lube::test

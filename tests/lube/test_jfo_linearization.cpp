@@ -112,38 +112,27 @@ TEST(JfoLinearization, MatchesDifferencesWithAGivenInletFlux) {
     EXPECT_GT(wrongRule, 100.0 * err);
 }
 
-// A skirt-like starved film (as Jfo.AStarvedPadSolvedOnItsOwnMatchesTheActiveSetOverAllNodes: a
-// barrel-shaped gap sliding axially, the inflow end bringing φ_in = 0.4 of its gap, breathing)
+// A skirt-like starved film (test::StarvedBarrel: a barrel-shaped gap sliding axially, the
+// inflow end bringing φ_in = 0.4 of its gap, breathing)
 // at a step with a full-film pad: the linearisation's system holds only the rows the pad's
 // pressure depends on — the pad and the cavities upstream of it, not those downstream or beside
 // it — and its δp matches central differences of full active-set solves (which know nothing of
 // that restriction) as closely as on the journals above.
 TEST(JfoLinearization, OnAStarvedPadItsSystemIsThePadAndWhatFeedsIt) {
-    Journal jb;
-    const double L = 0.04, U = 8.0, crown = 40e-6, T = 0.02, dt = T / 80;
-    const FilmGrid g = jb.finiteGrid(L, 72, 33);
-    auto state = [&](double t) {
-        Journal j = jb;
-        j.eps = 0.5 + 0.3 * std::sin(2 * kPi * t / T);
-        FilmState f = j.state(g);
-        f.inner.circumferential = 0.0;
-        f.outer.axial = U;
-        for (int k = 0; k < g.size(); ++k) {
-            const double z = 2.0 * g.z(g.axialIndex(k)) / L;
-            f.h[k] += crown * z * z;
-        }
-        return f;
-    };
+    const flexehd::lube::test::StarvedBarrel barrel;
+    const Journal jb = barrel.journal;
+    const FilmGrid g = barrel.grid();
+    const double dt = barrel.T / 80;
+    auto state = [&](double t) { return barrel.state(g, t); };
     JfoOptions jo;
     jo.method = JfoMethod::ActiveSet;
     jo.control.tolerance = 1e-13;
     JfoSolver jfo(g, Lubricant(jb.mu), jo);
-    for (int j = 0; j < g.nTheta(); ++j)
-        for (int i : {0, g.nAxial() - 1}) jfo.setInletFraction(g.index(i, j), 0.4);
+    barrel.feed(g, jfo);
     FilmState st = state(0.0);
     JfoResult r;
     r.pressure = Eigen::VectorXd::Zero(g.size());
-    r.fraction = Eigen::VectorXd::Constant(g.size(), 0.4);
+    r.fraction = Eigen::VectorXd::Constant(g.size(), barrel.inlet);
     JfoState old;
     for (int step = 1; step <= 20; ++step) {  // the gap closing: a pad of about 300 full-film nodes
         old = {st.h, r.fraction};
