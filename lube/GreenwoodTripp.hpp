@@ -32,7 +32,8 @@ public:
     static double integralF(double n, double lambda);
     /// F_{5/2}(λ) from the table (direct quadrature below λ = −2, 0 above λ = 8).
     static double F52(double lambda);
-    /// dF_{5/2}/dλ = −(5/2) F_{3/2}(λ).
+    /// dF_{5/2}/dλ = −(5/2) F_{3/2}(λ): the derivative of F52's interpolant (direct quadrature
+    /// below λ = −2, 0 above λ = 8).
     static double dF52(double lambda);
     /// Hu et al. fit: 4.4086e-5 (4−λ)^6.804 for λ < 4, else 0.
     static double F52Hu(double lambda);

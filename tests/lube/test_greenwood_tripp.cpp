@@ -1,7 +1,9 @@
 // Greenwood–Tripp asperity contact against exact F_{5/2} values (the integral to 6 digits) and K (Greenwood & Tripp 1970).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "lube/GreenwoodTripp.hpp"
 
@@ -33,6 +35,16 @@ TEST(GreenwoodTripp, TableInterpolationAccuracy) {
     const double d = 1e-4, lam = 1.3;
     EXPECT_NEAR(GreenwoodTripp::dF52(lam),
                 (GreenwoodTripp::F52(lam + d) - GreenwoodTripp::F52(lam - d)) / (2 * d), 1e-7);
+    // The interpolant's derivative against the direct quadrature of −(5/2)F_{3/2}, between the
+    // table's nodes and beyond its ends.
+    double worst = 0.0;
+    for (double l = -2.493; l < 7.9; l += 0.137) {
+        const double direct = -2.5 * GreenwoodTripp::integralF(1.5, l);
+        worst = std::max(worst, std::abs(GreenwoodTripp::dF52(l) / direct - 1.0));
+    }
+    std::printf("dF52 from the table: largest relative deviation from quadrature %.2g\n", worst);
+    EXPECT_LT(worst, 1e-5);
+    EXPECT_EQ(GreenwoodTripp::dF52(8.5), 0.0);
 }
 
 // Hu et al. fit: 11% low at λ = 0 and ~4× low at λ = 3 (Hu et al. 1994), fine near λ ≈ 1.
