@@ -38,6 +38,9 @@ public:
     /// thickness's change δh_s (m): the part of the film's dependence on h that goes through its
     /// squeeze term (coupling.elastic_squeeze; zero where the film's content term is its own).
     virtual Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const = 0;
+    /// rateChange is zero whatever δh_s (the film's content term is in its thickness dependence):
+    /// the caller may skip it and the products of it.
+    virtual bool rateChangeIsZero() const { return false; }
     virtual const lube::Lubricant& lubricant() const = 0;
     /// The equation conserves the film's oil (its iterates carry the film fraction and edge flows).
     virtual bool conservesOil() const { return false; }

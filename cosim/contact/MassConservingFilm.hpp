@@ -35,6 +35,7 @@ public:
     Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh) const override;
     /// Zero: the content term V (φh − φₙhₙ)/Δt is in h, whole (pressureChange has it).
     Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const override;
+    bool rateChangeIsZero() const override { return true; }
     const lube::Lubricant& lubricant() const override { return lubricant_; }
     bool conservesOil() const override { return true; }
     std::optional<LinerFootprint> linerFootprint() const override;

@@ -77,7 +77,9 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     const lube::Lubricant& lub = equation_->lubricant();
     equation_->linearize(step, now, it);
     const Eigen::MatrixXd dPh = equation_->pressureChange(PsiFilm);
-    const Eigen::MatrixXd dPrate = elasticRate ? equation_->rateChange(step, Psi) : Eigen::MatrixXd(n, 0);
+    // The rate part, where the film has one (a mass-conserving film's content term is in dPh).
+    const bool ratePart = elasticRate && !equation_->rateChangeIsZero();
+    const Eigen::MatrixXd dPrate = ratePart ? equation_->rateChange(step, Psi) : Eigen::MatrixXd(n, 0);
     // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
     // (the load is p + p_c); its slope once per node.
     Eigen::VectorXd slope = Eigen::VectorXd::Zero(n);
@@ -96,17 +98,19 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     io.filmFraction = it.fraction.size() ? &it.fraction : nullptr;
     const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, it.p, io);
     J.loadH = G.change(dPh, PsiFilm, contact_ ? dPc : Eigen::MatrixXd());
-    J.loadRate = elasticRate ? G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd()) : Eigen::MatrixXd(6, 0);
+    J.loadRate = ratePart      ? G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd())
+                 : elasticRate ? Eigen::MatrixXd::Zero(6, m)
+                               : Eigen::MatrixXd(6, 0);
 
     // The modal loads of the mapped δp + δp_c, piston rows then liner rows.
     const Eigen::MatrixXd dLoad = dPh + dPc;
     J.modalH.resize(m, m);
-    J.modalRate.resize(elasticRate ? m : 0, m);
+    J.modalRate.setZero(elasticRate ? m : 0, m);
     Eigen::MatrixXd F;
     if (piston_) {
         piston_->modalForces(dLoad, 0.0, F);
         J.modalH.topRows(mp_) = F;
-        if (elasticRate) {
+        if (ratePart) {
             piston_->modalForces(dPrate, 0.0, F);
             J.modalRate.topRows(mp_) = F;
         }
@@ -114,7 +118,7 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     if (liner_) {
         liner_->modalForces(dLoad, step.linerOffset, F);
         J.modalH.bottomRows(ml_) = F;
-        if (elasticRate) {
+        if (ratePart) {
             liner_->modalForces(dPrate, step.linerOffset, F);
             J.modalRate.bottomRows(ml_) = F;
         }
