@@ -188,7 +188,7 @@ void PistonSimulation::afterAccepted(const StepState& s, const StepEvaluation& e
     for (RunObserver* o : observers_) o->stepAccepted(step);
 }
 
-void PistonSimulation::cyclePeriodicity(int cycleNumber, const std::vector<StepRecord>& cycle,
+void PistonSimulation::cyclePeriodicity(const std::vector<StepRecord>& cycle,
                                         const std::vector<double>& since, const std::vector<StepRecord>& previous,
                                         const std::vector<double>& previousSince) {
     const TimeSpec& T = case_.time;
@@ -494,7 +494,7 @@ void PistonSimulation::progressLine(RunLoop& loop, int iterations, double step) 
 bool PistonSimulation::closeCycle(RunLoop& loop) {
     const TimeSpec& T = case_.time;
     stats_.cycles = loop.cycle;
-    cyclePeriodicity(loop.cycle, loop.records, loop.since, loop.previous, loop.previousSince);
+    cyclePeriodicity(loop.records, loop.since, loop.previous, loop.previousSince);
     if (loop.cb.progress)
         loop.cb.progress(loop.progress.cycleDoneLine(
             loop.clock.seconds(), loop.previous.empty() ? std::nullopt : std::optional(stats_.periodicityError)));

@@ -142,7 +142,7 @@ private:
                        double& largestForce);
     /// The cycle's periodicity against the previous one (motion, and the oil of a mass-conserving
     /// film) into stats_.
-    void cyclePeriodicity(int cycleNumber, const std::vector<StepRecord>& cycle, const std::vector<double>& since,
+    void cyclePeriodicity(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
                           const std::vector<StepRecord>& previous, const std::vector<double>& previousSince);
     /// The last cycle's oil figures into stats_ (mass-conserving film).
     void cycleOil(const std::vector<StepRecord>& cycle);
