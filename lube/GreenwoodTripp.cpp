@@ -74,9 +74,9 @@ double GreenwoodTripp::integralF(double n, double lambda) {
 
 namespace {
 
-// ln F_{5/2}(λ) and its derivative by cubic Hermite interpolation of the table (exact node
-// slopes), for kLamMin ≤ λ < kLamMax.
-void interpolatedLnF(double lambda, double& lnF, double& dlnF) {
+// ln F_{5/2}(λ) by cubic Hermite interpolation of the table (exact node slopes), for
+// kLamMin ≤ λ < kLamMax; and its derivative into dlnF where asked.
+double interpolatedLnF(double lambda, double* dlnF = nullptr) {
     const Table& tb = table();
     const double x = (lambda - kLamMin) / kStep;
     std::size_t i = static_cast<std::size_t>(x);
@@ -84,9 +84,11 @@ void interpolatedLnF(double lambda, double& lnF, double& dlnF) {
     const double u = x - static_cast<double>(i);
     const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
     const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
-    lnF = h00 * tb.lnF[i] + h10 * kStep * tb.slope[i] + h01 * tb.lnF[i + 1] + h11 * kStep * tb.slope[i + 1];
-    const double d00 = 6 * u * (u - 1), d10 = (1 - u) * (1 - 3 * u), d01 = -d00, d11 = u * (3 * u - 2);
-    dlnF = (d00 * tb.lnF[i] + d01 * tb.lnF[i + 1]) / kStep + d10 * tb.slope[i] + d11 * tb.slope[i + 1];
+    if (dlnF) {
+        const double d00 = 6 * u * (u - 1), d10 = (1 - u) * (1 - 3 * u), d01 = -d00, d11 = u * (3 * u - 2);
+        *dlnF = (d00 * tb.lnF[i] + d01 * tb.lnF[i + 1]) / kStep + d10 * tb.slope[i] + d11 * tb.slope[i + 1];
+    }
+    return h00 * tb.lnF[i] + h10 * kStep * tb.slope[i] + h01 * tb.lnF[i + 1] + h11 * kStep * tb.slope[i + 1];
 }
 
 }  // namespace
@@ -95,9 +97,7 @@ double GreenwoodTripp::F52(double lambda) {
     if (!std::isfinite(lambda)) throw std::invalid_argument("GreenwoodTripp::F52: lambda not finite");
     if (lambda >= kLamMax) return 0.0;
     if (lambda < kLamMin) return integralF(2.5, lambda);
-    double lnF = 0.0, dlnF = 0.0;
-    interpolatedLnF(lambda, lnF, dlnF);
-    return std::exp(lnF);
+    return std::exp(interpolatedLnF(lambda));
 }
 
 double GreenwoodTripp::dF52(double lambda) {
@@ -105,8 +105,8 @@ double GreenwoodTripp::dF52(double lambda) {
     if (lambda >= kLamMax) return 0.0;
     if (lambda < kLamMin) return -2.5 * integralF(1.5, lambda);
     // The derivative of the interpolant F52 gives: F d(ln F)/dλ.
-    double lnF = 0.0, dlnF = 0.0;
-    interpolatedLnF(lambda, lnF, dlnF);
+    double dlnF = 0.0;
+    const double lnF = interpolatedLnF(lambda, &dlnF);
     return std::exp(lnF) * dlnF;
 }
 

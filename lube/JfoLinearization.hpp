@@ -11,7 +11,9 @@
 // brings to the film downstream. ∂F/∂h at fixed (p, φ) — Poiseuille h_f³, Couette h_f and the
 // content V φ h/Δt — is taken by finite differences on a distance-2 colouring of the grid
 // (ColouredDifference: one network per colour); M is factorized once per linearisation (sparse
-// LU, its ordering kept). Held: the previous step's content, and at each inlet (a Fixed node's
+// LU, its ordering kept), over the rows δp depends on only: the full-film nodes and, transitively,
+// the full-film and upstream cavitated neighbours their rows reach (no other unknown enters these
+// rows; on a starved film the cavities downstream are most of the grid). Held: the previous step's content, and at each inlet (a Fixed node's
 // Couette inflow) its film fraction or, where that is below 1, optionally its flux φ_in h_f — an
 // inlet fed with a given oil volume per step, whose fraction falls as the gap opens.
 #include <Eigen/Core>

@@ -178,15 +178,17 @@ private:
 };
 
 
-// The active-set linear system over the Film nodes. Unknown of Film node k: p_k (full film) or
-// φ_k (cavitated). Row k is the balance F_k = D p_k − Σ c_f p_m + B φ_k − Σ_in a_f φ_m − s_k = 0
-// (B: Couette outflow + storage, a_f: Couette inflow coefficients, s_k: previous oil); known p,
-// φ (the other state's variable, non-Film neighbours) go to the right-hand side. The matrix's
-// pattern is fixed; each partition rewrites its values through the kept pointers.
+// The active-set linear system over a set of Film nodes (all of them, or a part with the others
+// held). Unknown of row node k: p_k (full film) or φ_k (cavitated). Row k is the balance
+// F_k = D p_k − Σ c_f p_m + B φ_k − Σ_in a_f φ_m − s_k = 0 (B: Couette outflow + storage, a_f:
+// Couette inflow coefficients, s_k: previous oil); known p, φ (the other state's variable,
+// non-Film neighbours with their inlet fraction, Film nodes outside the rows with their p and φ)
+// go to the right-hand side. The matrix's pattern is fixed; each partition rewrites its values
+// through the kept pointers.
 class JfoActiveSetSystem {
 public:
     JfoActiveSetSystem(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const double* p,
-                       const double* phi = nullptr)
+                       const double* phi)
         : nf_(static_cast<int>(rows.size())) {
         const int n = g.size();
         idx_.assign(static_cast<std::size_t>(n), -1);

@@ -47,9 +47,7 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
                                                                    std::string& why) {
     const double forceFloor = tol.forceFloor, reach = tol.reach, couplingTol = tol.coupling;
     // The residual in units of its tolerances (≤ 1: converged).
-    const double measure = std::max({couplingRes / couplingTol,
-                                     std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
-                                     std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach))});
+    const double measure = std::max(couplingRes / couplingTol, tol.motionMeasure(ev));
     Eigen::VectorXd F(2 + mp_ + ml_);
     F.head<2>() = ev.residual;
     F.tail(mp_ + ml_) = y - ev.Hy;

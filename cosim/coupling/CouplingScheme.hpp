@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace flexehd::cosim {
@@ -22,6 +24,13 @@ struct StepTolerances {
     double reach = 0.0;       ///< m, the skirt's largest distance from the pin axis
     double forceFloor = 0.0;  ///< N, the reciprocating inertia force m r ω²
     double coupling = 0.0;    ///< m, coupling.tolerance × clearance
+
+    /// The motion residual of ev in units of its tolerances 1e-4 (S₁ + F_inertia),
+    /// 1e-4 (S₂ + F_inertia · reach) (≤ 1: met).
+    double motionMeasure(const StepEvaluation& ev) const {
+        return std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + forceFloor)),
+                        std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + forceFloor * reach)));
+    }
 };
 
 class CouplingScheme {

@@ -44,9 +44,7 @@ CouplingScheme::PassOutcome PartitionedScheme::pass(const StepContext& ctx, cons
                                                     Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
                                                     Eigen::Vector2d& dx, bool& resolved, std::string& why) {
     resolved = false;
-    // The residual in units of its tolerances.
-    const double measure = std::max(std::abs(ev.residual[0]) / (1e-4 * (ev.scale[0] + tol.forceFloor)),
-                                    std::abs(ev.residual[1]) / (1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach)));
+    const double measure = tol.motionMeasure(ev);
     const double rate = ctx.step.a0 / ctx.step.dt;
     bool fresh = false;
     if (pass == 0) {
