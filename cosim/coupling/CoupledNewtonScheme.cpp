@@ -51,13 +51,16 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
     Eigen::VectorXd F(2 + mp_ + ml_);
     F.head<2>() = ev.residual;
     F.tail(mp_ + ml_) = y - ev.Hy;
-    // Line search: a pass whose merit (coupledMerit) is worse than at the last accepted
-    // iterate goes back there — to linearise anew when the Jacobian was a kept one, else to
-    // halve the update (at most 5 times; the film and contact laws are strongly nonlinear
-    // where the cavitated or contact set changes).
+    // Line search: a pass whose merit (coupledMerit) is worse than the largest of the last three
+    // accepted iterates' (a non-monotone line search: Grippo, Lampariello & Lucidi 1986; where
+    // the cavitated or contact set changes, a Newton update that reaches the solution may first
+    // raise the merit) goes back to the last accepted iterate — to linearise anew when the
+    // Jacobian was a kept one, else to halve the update (at most 5 times; the film and contact
+    // laws are strongly nonlinear there). The pass that revisits the accepted iterate is not
+    // tested: its film solve differs from the first one there by the film solver's tolerance.
     Eigen::VectorXd rScale = residualScale(ev, forceFloor, reach, couplingTol);
-    if (it.acceptedMerit < std::numeric_limits<double>::infinity() && coupledMerit(F, rScale) > it.acceptedMerit) {
-        if (!it.freshJacobian && !it.revisit) {
+    if (!it.revisit && it.accepted > 0 && coupledMerit(F, rScale) > it.meritReference()) {
+        if (!it.freshJacobian) {
             // The kept Jacobian led astray: back to the accepted iterate, linearised anew.
             x = it.acceptedX;
             y = it.acceptedY;
@@ -106,7 +109,9 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
     it.backtracks = 0;
     rScale = residualScale(ev, forceFloor, reach, couplingTol);  // the Jacobian's unknown scales
     it.acceptedMeasure = measure;
-    it.acceptedMerit = coupledMerit(F, rScale);
+    std::copy_backward(it.recentMerits.begin(), it.recentMerits.end() - 1, it.recentMerits.end());
+    it.recentMerits.front() = coupledMerit(F, rScale);
+    ++it.accepted;
     it.acceptedX = x;
     it.acceptedY = y;
     it.acceptedF = F;

@@ -9,6 +9,8 @@
 
 #include "cosim/coupling/CouplingScheme.hpp"
 
+#include <algorithm>
+#include <array>
 #include <limits>
 
 namespace flexehd::cosim {
@@ -43,9 +45,15 @@ private:
     // line search's state.
     struct NewtonIterate {
         double acceptedMeasure = std::numeric_limits<double>::infinity();
-        double acceptedMerit = std::numeric_limits<double>::infinity();
         Eigen::Vector2d acceptedX = Eigen::Vector2d::Zero();
         Eigen::VectorXd acceptedY, acceptedF;
+        /// The merits of the last accepted iterates, newest first (the line search's reference).
+        std::array<double, 3> recentMerits{};
+        int accepted = 0;
+        /// The largest merit of the last (up to three) accepted iterates.
+        double meritReference() const {
+            return *std::max_element(recentMerits.begin(), recentMerits.begin() + std::min<int>(accepted, 3));
+        }
         int backtracks = 0;
         bool freshJacobian = false, regularize = false, revisit = false;
     };
