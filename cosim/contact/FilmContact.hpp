@@ -87,6 +87,11 @@ struct ContactIterate {
 struct ContactJacobian {
     Eigen::MatrixXd loadH, loadRate;    ///< 6 × modes: (F_x, F_y, F_z, M_x, M_y, M_z) about the pin
     Eigen::MatrixXd modalH, modalRate;  ///< modes × modes: the modal load on (piston, liner) rows
+    /// The same for the rigid motion (e, β): 6 × 2 and modes × 2, given where the contact's
+    /// linearisation follows a rigid motion as differences of its full solves do (a contact without
+    /// loads: empty); otherwise motionColumns is false and the master forms them by differences.
+    Eigen::MatrixXd loadX, modalX;
+    bool motionColumns = false;
     /// 2 + modes: the largest film-thickness change per unit of each unknown (e, β, y)
     Eigen::VectorXd filmChangePerUnknown;
 };

@@ -41,6 +41,10 @@ public:
     /// rateChange is zero whatever δh_s (the film's content term is in its thickness dependence):
     /// the caller may skip it and the products of it.
     virtual bool rateChangeIsZero() const { return false; }
+    /// pressureChange of a rigid motion's δh equals differences of full solves (the partition held
+    /// includes what the pressure depends on; no rate part): the contact gives the master its
+    /// motion columns.
+    virtual bool linearizationFollowsRigidMotion() const { return false; }
     virtual const lube::Lubricant& lubricant() const = 0;
     /// The equation conserves the film's oil (its iterates carry the film fraction and edge flows).
     virtual bool conservesOil() const { return false; }

@@ -59,6 +59,7 @@ void OilControlRingBand::evaluate(const ContactStep& step, const ContactState& n
 void OilControlRingBand::linearize(const ContactStep& /*step*/, const ContactState& /*now*/, const Eigen::Vector2d& /*x*/,
                                    const ContactIterate& /*it*/, ContactJacobian& J, WorkTally& /*work*/) {
     J = ContactJacobian{};
+    J.motionColumns = true;  // no load: its motion columns are zero
 }
 
 ContactState OilControlRingBand::accepted(const ContactStep& step, const ContactState& now,

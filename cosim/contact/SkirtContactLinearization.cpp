@@ -56,17 +56,20 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     filmChangeColumns(step, x);
     const Eigen::MatrixXd& Dh = jacobianDh_;
     J.filmChangePerUnknown = Dh.colwise().lpNorm<Eigen::Infinity>().transpose();
-    // The modal columns only: the master takes the (e, β) columns by differences of full
-    // evaluations. The film sees the floored thickness (no δh where the floor holds); the rate
-    // sees the unfloored one, and the modes only with coupling.elastic_squeeze.
-    const Eigen::MatrixXd Psi = Dh.rightCols(m);
-    Eigen::MatrixXd flooredPsi;
+    // The modal columns, and the (e, β) columns where the film's linearisation follows a rigid
+    // motion as differences of full solves do (otherwise the master takes them by differences).
+    // The film sees the floored thickness (no δh where the floor holds); the rate sees the
+    // unfloored one, and the modes only with coupling.elastic_squeeze.
+    const bool ratePart = elasticRate && !equation_->rateChangeIsZero();
+    J.motionColumns = equation_->linearizationFollowsRigidMotion() && !ratePart;
+    const int first = J.motionColumns ? 0 : 2, k = 2 + m - first;  // columns of Dh taken
+    const auto Cols = Dh.rightCols(k);
+    Eigen::MatrixXd flooredCols;
     if (it.floored > 0) {
-        flooredPsi = Psi;
+        flooredCols = Cols;
         for (int r = 0; r < n; ++r)
-            if (it.h[r] != it.hTotal[r]) flooredPsi.row(r).setZero();
+            if (it.h[r] != it.hTotal[r]) flooredCols.row(r).setZero();
     }
-    const Eigen::MatrixXd& PsiFilm = it.floored > 0 ? flooredPsi : Psi;
 
     // δp from the film's linearisation at the iterate's solution: the thickness part and the
     // rate part (per unit a0/Δt, the master's rate) apart.
@@ -76,40 +79,44 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     fs.outer.axial = -step.pistonVelocity;
     const lube::Lubricant& lub = equation_->lubricant();
     equation_->linearize(step, now, it);
-    const Eigen::MatrixXd dPh = equation_->pressureChange(PsiFilm);
+    const Eigen::MatrixXd dPh = it.floored > 0 ? equation_->pressureChange(flooredCols) : equation_->pressureChange(Cols);
     // The rate part, where the film has one (a mass-conserving film's content term is in dPh).
-    const bool ratePart = elasticRate && !equation_->rateChangeIsZero();
-    const Eigen::MatrixXd dPrate = ratePart ? equation_->rateChange(step, Psi) : Eigen::MatrixXd(n, 0);
+    const Eigen::MatrixXd dPrate = ratePart ? equation_->rateChange(step, Dh.rightCols(m)) : Eigen::MatrixXd(n, 0);
     // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
     // (the load is p + p_c); its slope once per node.
-    Eigen::VectorXd slope = Eigen::VectorXd::Zero(n);
-    if (contact_)
+    Eigen::MatrixXd dPc;
+    if (contact_) {
+        dPc.setZero(n, k);
         for (int r = 0; r < n; ++r)
-            if (g.kind(r) != lube::NodeKind::Void) slope[r] = contactSlope(it.hTotal[r]);
-    const Eigen::MatrixXd dPc = slope.asDiagonal() * Psi;
+            if (g.kind(r) != lube::NodeKind::Void) {
+                const double slope = contactSlope(it.hTotal[r]);
+                if (slope != 0.0) dPc.row(r) = slope * Cols.row(r);
+            }
+    }
     work.film += t0.seconds();
     t0.restart();
 
-    // The load's gradient in (p, h, p_c) applied to all modal columns at once, the friction's
-    // change included (at high sliding speed its moment about the pin is a large part of the
-    // motion's dependence on the deformation).
-    // (The film fraction's change, mass-conserving, is held in the shear.)
+    // The load's gradient in (p, h, p_c) applied to all columns at once, the friction's change
+    // included (at high sliding speed its moment about the pin is a large part of the motion's
+    // dependence on the deformation). (The film fraction's change, mass-conserving, is held in
+    // the shear.)
     lube::FilmIntegralOptions io = integralOptions();
     io.filmFraction = it.fraction.size() ? &it.fraction : nullptr;
     const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, it.p, io);
-    J.loadH = G.change(dPh, PsiFilm, contact_ ? dPc : Eigen::MatrixXd());
+    const Eigen::MatrixXd L = G.change(dPh, it.floored > 0 ? flooredCols : Eigen::MatrixXd(Cols), dPc);
+    J.loadH = L.rightCols(m);
     J.loadRate = ratePart      ? G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd())
                  : elasticRate ? Eigen::MatrixXd::Zero(6, m)
                                : Eigen::MatrixXd(6, 0);
 
     // The modal loads of the mapped δp + δp_c, piston rows then liner rows.
-    const Eigen::MatrixXd dLoad = dPh + dPc;
-    J.modalH.resize(m, m);
+    const Eigen::MatrixXd dLoad = contact_ ? Eigen::MatrixXd(dPh + dPc) : dPh;
+    Eigen::MatrixXd modal(m, k);
     J.modalRate.setZero(elasticRate ? m : 0, m);
     Eigen::MatrixXd F;
     if (piston_) {
         piston_->modalForces(dLoad, 0.0, F);
-        J.modalH.topRows(mp_) = F;
+        modal.topRows(mp_) = F;
         if (ratePart) {
             piston_->modalForces(dPrate, 0.0, F);
             J.modalRate.topRows(mp_) = F;
@@ -117,11 +124,16 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     }
     if (liner_) {
         liner_->modalForces(dLoad, step.linerOffset, F);
-        J.modalH.bottomRows(ml_) = F;
+        modal.bottomRows(ml_) = F;
         if (ratePart) {
             liner_->modalForces(dPrate, step.linerOffset, F);
             J.modalRate.bottomRows(ml_) = F;
         }
+    }
+    J.modalH = modal.rightCols(m);
+    if (J.motionColumns) {
+        J.loadX = L.leftCols(2);
+        J.modalX = modal.leftCols(2);
     }
     work.modal += t0.seconds();
 }

@@ -68,6 +68,9 @@ void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::
     P.modalH.resize(0, 0);
     P.modalRate.resize(0, 0);
     P.filmChangePerUnknown.resize(0);
+    P.motionColumns = true;
+    P.loadX = Eigen::MatrixXd::Zero(6, 2);
+    P.modalX = Eigen::MatrixXd::Zero(mp_ + ml_, 2);
     for (std::size_t c = 0; c < step_.contacts_.size(); ++c) {
         ContactJacobian J;
         step_.contacts_[c]->linearize(ctx.step, ctx.now->films[c], x, ev.films[c], J, step_.work_);
@@ -75,6 +78,9 @@ void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::
         addPart(loadRate, J.loadRate);
         addPart(P.modalH, J.modalH);
         addPart(P.modalRate, J.modalRate);
+        P.motionColumns = P.motionColumns && J.motionColumns;
+        addPart(P.loadX, J.loadX);
+        addPart(P.modalX, J.modalX);
         if (J.filmChangePerUnknown.size() == 0) continue;
         P.filmChangePerUnknown = P.filmChangePerUnknown.size() == 0
                                      ? J.filmChangePerUnknown
@@ -84,6 +90,7 @@ void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::
     const Eigen::Matrix<double, 2, 6> dForce = actionGradient(ctx);  // ∂f/∂(F, M)
     P.motionH = -dForce * loadH;
     P.motionRate = step_.case_.coupling.elasticSqueeze ? Eigen::MatrixXd(-dForce * loadRate) : Eigen::MatrixXd(2, 0);
+    if (P.motionColumns) P.loadX = -dForce * P.loadX;  // the film's part of the motion rows' (e, β) columns
     P.valid = true;
     step_.work_.modal += t0.seconds();
 }
@@ -97,21 +104,27 @@ Eigen::MatrixXd CoupledNewtonScheme::coupledJacobian(const StepContext& ctx) {
     // The modal columns; the (e, β) columns are formCoupledJacobian's.
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, k);
     J.topRightCorner(2, m) = elasticRate ? Eigen::MatrixXd(P.motionH + rate * P.motionRate) : P.motionH;
+    // With the contacts' motion columns: the motion rows' (e, β) columns are the inertia's
+    // (a0/Δt)² M and the film's part; the modal rows' the response to their modal load.
+    const int first = P.motionColumns ? 0 : 2;
+    if (P.motionColumns) J.topLeftCorner(2, 2) = rate * rate * step_.dyn_.mass(ctx.crank) + P.loadX;
     // Modal rows: δ_ij − ∂H/∂y_j, H linear in the mapped pressure (history terms held).
     auto respond = [&](const FlexibleBody& body, modal::HeldModalDynamics* dynamics, int row, int rows) {
-        Eigen::MatrixXd F = P.modalH.middleRows(row - 2, rows);
-        if (elasticRate) F += rate * P.modalRate.middleRows(row - 2, rows);
+        Eigen::MatrixXd F(rows, k - first);
+        if (P.motionColumns) F.leftCols(2) = P.modalX.middleRows(row - 2, rows);
+        F.rightCols(m) = P.modalH.middleRows(row - 2, rows);
+        if (elasticRate) F.rightCols(m) += rate * P.modalRate.middleRows(row - 2, rows);
         if (dynamics) {
             const Eigen::VectorXd zero = Eigen::VectorXd::Zero(rows);
             Eigen::VectorXd q;
-            for (int j = 0; j < m; ++j) {
+            for (int j = 0; j < k - first; ++j) {
                 dynamics->respond(F.col(j), zero, zero, q);
-                J.block(row, 2 + j, rows, 1) = -q;
+                J.block(row, first + j, rows, 1) = -q;
             }
         } else {
             Eigen::MatrixXd Q;
             body.quasiStatic(F, Q);
-            J.block(row, 2, rows, m) = -Q;
+            J.block(row, first, rows, k - first) = -Q;
         }
     };
     if (step_.pistonBody_) respond(*step_.pistonBody_, step_.pistonDynamics_.get(), 2, mp_);
@@ -125,16 +138,11 @@ bool CoupledNewtonScheme::formCoupledJacobian(const StepContext& ctx, const Eige
                                            const StepEvaluation& ev, const Eigen::Vector2d& tol, int& filmSolves) {
     Eigen::MatrixXd& J = newtonJacobian_;
     J = coupledJacobian(ctx);
-    // The (e, β) columns by differences of full evaluations (film solve and modal response): a
-    // rigid motion moves the cavitation boundary, whose effect the held-set linearisation misses —
-    // at high sliding and squeeze speeds enough to stall Newton (docs/coupling.md §1).
-    const Eigen::Vector2d delta = 1e-5 * tol;  // of the clearance (tilt: of the clearance over the reach)
-    std::array<StepEvaluation, 2> moved;
-    if (!step_.perturbedMotion(ctx, x, y, delta, true, moved, filmSolves)) return false;
-    for (int i = 0; i < 2; ++i) {
-        J.block<2, 1>(0, i) = (moved[i].residual - ev.residual) / delta[i];
-        J.col(i).tail(mp_ + ml_) = (ev.Hy - moved[i].Hy) / delta[i];
-    }
+    // Without the contacts' motion columns, the (e, β) columns by differences of full evaluations
+    // (film solve and modal response): a rigid motion moves the Reynolds film's cavitation
+    // boundary, whose effect its held-set linearisation misses — at high sliding and squeeze speeds
+    // enough to stall Newton (docs/coupling.md §1).
+    if (!parts_.motionColumns && !differenceColumns(ctx, x, y, ev, tol, J, filmSolves)) return false;
     newtonInverse_ = J.partialPivLu().inverse();
     // Unknowns in units of the film-thickness change they cause (Broyden norm, merit, damping).
     unknownScale_ = parts_.filmChangePerUnknown;
@@ -146,6 +154,19 @@ bool CoupledNewtonScheme::formCoupledJacobian(const StepContext& ctx, const Eige
     if (!step_.case_.coupling.elasticSqueeze && !step_.pistonDynamics_ && !step_.linerDynamics_ && mp_ + ml_ > 0) {
         const int m = mp_ + ml_;
         if (Eigen::MatrixXd(J.bottomRightCorner(m, m)).partialPivLu().determinant() < 0.0) ++step_.foldedJacobians_;
+    }
+    return true;
+}
+
+bool CoupledNewtonScheme::differenceColumns(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                                            const StepEvaluation& ev, const Eigen::Vector2d& tol, Eigen::MatrixXd& J,
+                                            int& filmSolves) {
+    const Eigen::Vector2d delta = 1e-5 * tol;  // of the clearance (tilt: of the clearance over the reach)
+    std::array<StepEvaluation, 2> moved;
+    if (!step_.perturbedMotion(ctx, x, y, delta, true, moved, filmSolves)) return false;
+    for (int i = 0; i < 2; ++i) {
+        J.block<2, 1>(0, i) = (moved[i].residual - ev.residual) / delta[i];
+        J.col(i).tail(mp_ + ml_) = (ev.Hy - moved[i].Hy) / delta[i];
     }
     return true;
 }

@@ -39,6 +39,10 @@ private:
         Eigen::MatrixXd motionH, motionRate;    // 2 × modes
         Eigen::MatrixXd modalH, modalRate;      // modes × modes: the contacts' modal loads (piston rows, liner rows)
         Eigen::VectorXd filmChangePerUnknown;   // 2 + modes: the contacts' largest film change per unit
+        // The (e, β) columns' film part where every contact gives it (ContactJacobian::motionColumns):
+        // the action's change (6 × 2) and the modal load's (modes × 2); else formed by differences.
+        bool motionColumns = false;
+        Eigen::MatrixXd loadX, modalX;
     };
 
     // The last accepted iterate of the step (its measure, merit, unknowns and residual) and the
@@ -72,6 +76,9 @@ private:
     void linearizeCoupled(const StepContext& ctx, const Eigen::Vector2d& x, const StepEvaluation& ev);
     /// ∂(equations of motion's right-hand side)/∂(F_x, ·, F_z, ·, M_y, ·): 2 × 6, from the dynamics.
     Eigen::Matrix<double, 2, 6> actionGradient(const StepContext& ctx) const;
+    /// The (e, β) columns of J by differences of two full evaluations; false: a film solve failed.
+    bool differenceColumns(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
+                           const StepEvaluation& ev, const Eigen::Vector2d& tol, Eigen::MatrixXd& J, int& filmSolves);
     /// Good Broyden update of the kept inverse Jacobian for the update s and the residual change dF.
     void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
     /// Forms the coupled Jacobian at the context's step size (its (e, β) columns by differences of

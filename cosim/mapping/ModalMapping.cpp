@@ -75,9 +75,19 @@ void ModalMapping::modalForce(const Eigen::VectorXd& p, Eigen::VectorXd& out) co
     if (p.size() != gridSize_)
         throw std::invalid_argument("ModalMapping::modalForce: " + std::to_string(p.size()) +
                                     " pressures for a grid of " + std::to_string(gridSize_) + " nodes");
-    Eigen::VectorXd pa(static_cast<Eigen::Index>(active_.size()));
-    for (std::size_t c = 0; c < active_.size(); ++c) pa[static_cast<Eigen::Index>(c)] = p[active_[c]];
-    out.noalias() = B_ * pa;
+    // A starved film loads a small share of the active nodes (its full-film and contact nodes,
+    // docs/coupling.md §6): then only their columns of Φᵀ A.
+    std::vector<Eigen::Index> loaded;
+    for (std::size_t c = 0; c < active_.size(); ++c)
+        if (p[active_[c]] != 0.0) loaded.push_back(static_cast<Eigen::Index>(c));
+    if (2 * loaded.size() >= active_.size()) {
+        Eigen::VectorXd pa(static_cast<Eigen::Index>(active_.size()));
+        for (std::size_t c = 0; c < active_.size(); ++c) pa[static_cast<Eigen::Index>(c)] = p[active_[c]];
+        out.noalias() = B_ * pa;
+        return;
+    }
+    out.setZero(B_.rows());
+    for (const Eigen::Index c : loaded) out.noalias() += p[active_[static_cast<std::size_t>(c)]] * B_.col(c);
 }
 
 void ModalMapping::modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) const {

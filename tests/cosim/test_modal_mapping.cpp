@@ -159,6 +159,8 @@ TEST(ModalMapping, RestrictedToFilmNodesEqualsTheFullProducts) {
     restricted.modalForces(Ps, F);
     const Eigen::MatrixXd expected = restricted.loadOperator() * Ps;
     EXPECT_LE((F - expected).norm(), 1e-13 * expected.norm());
+    const Eigen::VectorXd fs = restricted.modalForce(Eigen::VectorXd(Ps.col(1)));
+    EXPECT_LE((fs - expected.col(1)).norm(), 1e-13 * expected.col(1).norm());
     // The full-size operators: zero columns / rows off the active nodes, the same products.
     const Eigen::MatrixXd B = restricted.loadOperator(), G = restricted.gridShapes();
     EXPECT_LE((B * p - fRes).norm(), 1e-13 * fRes.norm());
