@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lube/FilmNodeGeometry.hpp"
 #include "lube/ReynoldsSystem.hpp"
@@ -21,15 +22,42 @@ void add(FilmLoadGradient::Rows& G, int col, const Eigen::Vector3d& f, const Eig
     G.col(col).tail<3>() += lever.cross(f);
 }
 
+// G D over the rows of D that are not zero only, where they are fewer than half (a starved
+// film's pressure change lives on its few full-film nodes, its contact pressure change on the
+// nodes in contact): one streaming pass finds them.
+void addProduct(const FilmLoadGradient::Rows& G, const Eigen::Ref<const Eigen::MatrixXd>& D, Eigen::MatrixXd& out) {
+    const Eigen::Index n = D.rows();
+    std::vector<char> loaded(static_cast<std::size_t>(n), 0);
+    for (Eigen::Index c = 0; c < D.cols(); ++c)
+        for (Eigen::Index r = 0; r < n; ++r)
+            if (D(r, c) != 0.0) loaded[static_cast<std::size_t>(r)] = 1;
+    std::vector<Eigen::Index> rows;
+    for (Eigen::Index r = 0; r < n; ++r)
+        if (loaded[static_cast<std::size_t>(r)]) rows.push_back(r);
+    if (2 * static_cast<Eigen::Index>(rows.size()) >= n) {
+        out.noalias() += G * D;
+        return;
+    }
+    const auto nl = static_cast<Eigen::Index>(rows.size());
+    Eigen::Matrix<double, 6, Eigen::Dynamic> Gl(6, nl);
+    Eigen::MatrixXd Dl(nl, D.cols());
+    for (Eigen::Index i = 0; i < nl; ++i) {
+        Gl.col(i) = G.col(rows[static_cast<std::size_t>(i)]);
+        Dl.row(i) = D.row(rows[static_cast<std::size_t>(i)]);
+    }
+    out.noalias() += Gl * Dl;
+}
+
 }  // namespace
 
-Eigen::MatrixXd FilmLoadGradient::change(const Eigen::MatrixXd& dp, const Eigen::MatrixXd& dh,
-                                         const Eigen::MatrixXd& dpc) const {
+Eigen::MatrixXd FilmLoadGradient::change(const Eigen::Ref<const Eigen::MatrixXd>& dp,
+                                         const Eigen::Ref<const Eigen::MatrixXd>& dh,
+                                         const Eigen::Ref<const Eigen::MatrixXd>& dpc) const {
     const Eigen::Index cols = std::max({dp.cols(), dh.cols(), dpc.cols()});
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(6, cols);
-    if (dp.cols()) out.noalias() += pressure * dp;
+    if (dp.cols()) addProduct(pressure, dp, out);
     if (dh.cols()) out.noalias() += thickness * dh;
-    if (dpc.cols()) out.noalias() += contactPressure * dpc;
+    if (dpc.cols()) addProduct(contactPressure, dpc, out);
     return out;
 }
 

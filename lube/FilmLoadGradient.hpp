@@ -22,8 +22,8 @@ struct FilmLoadGradient {
     Rows contactPressure;   ///< per Pa of the node's contact pressure
 
     /// The load change (6 rows) of a set of directions (a column each; empty = none).
-    Eigen::MatrixXd change(const Eigen::MatrixXd& dp, const Eigen::MatrixXd& dh,
-                           const Eigen::MatrixXd& dpc) const;
+    Eigen::MatrixXd change(const Eigen::Ref<const Eigen::MatrixXd>& dp, const Eigen::Ref<const Eigen::MatrixXd>& dh,
+                           const Eigen::Ref<const Eigen::MatrixXd>& dpc) const;
 };
 
 FilmLoadGradient filmLoadGradient(const FilmGrid& grid, const FilmState& film, const Lubricant& lubricant,

@@ -119,19 +119,18 @@ std::vector<int> JfoLinearization::dependentRows(const JfoNetwork& net, const Fi
     return rows;
 }
 
-Eigen::MatrixXd JfoLinearization::pressureChange(const Eigen::MatrixXd& dh) const {
+Eigen::MatrixXd JfoLinearization::pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const {
     const int n = solver_->grid().size();
     if (dh.rows() != n)
         throw std::invalid_argument("JfoLinearization::pressureChange: columns of " + std::to_string(n) +
                                     " nodes expected, got " + std::to_string(dh.rows()));
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, dh.cols());
     if (sys_.empty() || dFdh_.rows() == 0) return out;
-    const Eigen::MatrixXd rhs = -(dFdh_ * dh);
-    for (Eigen::Index c = 0; c < dh.cols(); ++c) {
-        const Eigen::VectorXd dy = lu_->solve(rhs.col(c));
+    Eigen::MatrixXd dy = -(dFdh_ * dh);
+    lu_->solveInPlace(dy);  // all columns in one pass over the factors
+    for (Eigen::Index c = 0; c < dh.cols(); ++c)
         for (std::size_t r = 0; r < sys_.size(); ++r)
-            if (!sysCav_[r]) out(sys_[r], c) = dy[static_cast<Eigen::Index>(r)];
-    }
+            if (!sysCav_[r]) out(sys_[r], c) = dy(static_cast<Eigen::Index>(r), c);
     return out;
 }
 

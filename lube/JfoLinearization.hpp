@@ -50,7 +50,7 @@ public:
     void linearize(const FilmState& film, double dt, const JfoState* previous, const JfoResult& solution);
 
     /// δp (N × k, Pa) for k columns of thickness changes δh (m, N × k).
-    Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh) const;
+    Eigen::MatrixXd pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const;
 
     /// Film nodes cavitated (φ < 1) in the last linearisation.
     int cavitatedNodes() const { return cavitated_; }

@@ -66,4 +66,11 @@ Eigen::VectorXd SparseLuFactor::solve(const Eigen::VectorXd& b) const {
     return x;
 }
 
+void SparseLuFactor::solveInPlace(Eigen::MatrixXd& B) const {
+    Klu& k = *klu_;
+    if (!k.numeric || B.rows() != k.n) throw std::logic_error("SparseLuFactor::solveInPlace: no factorization of this size");
+    if (B.cols() == 0) return;
+    klu_solve(k.symbolic, k.numeric, k.n, static_cast<int>(B.cols()), B.data(), &k.common);
+}
+
 }  // namespace flexehd::lube

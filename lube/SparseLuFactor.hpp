@@ -25,6 +25,8 @@ public:
     bool factor(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A);
     /// x = A⁻¹ b with the last factorization.
     Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+    /// B ← A⁻¹ B for all columns of B at once with the last factorization.
+    void solveInPlace(Eigen::MatrixXd& B) const;
     /// Orderings computed so far (once per pattern seen).
     int analyses() const { return analyses_; }
     /// Factorizations that reused the last pivot sequence.

@@ -33,7 +33,7 @@ public:
     /// or partition held), for the step from `now`.
     virtual void linearize(const ContactStep& step, const ContactState& now, const ContactIterate& it) = 0;
     /// δp (grid × k, Pa) at the last linearisation for k columns of film-thickness changes δh (m).
-    virtual Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh) const = 0;
+    virtual Eigen::MatrixXd pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const = 0;
     /// δp (grid × k, Pa) per unit a0/Δt of the master's BDF2 rate for k columns of the squeeze
     /// thickness's change δh_s (m): the part of the film's dependence on h that goes through its
     /// squeeze term (coupling.elastic_squeeze; zero where the film's content term is its own).

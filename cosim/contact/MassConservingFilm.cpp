@@ -143,7 +143,7 @@ void MassConservingFilm::linearize(const ContactStep& step, const ContactState& 
     linearization_->linearize(fs, step.dt, &previous, solution);
 }
 
-Eigen::MatrixXd MassConservingFilm::pressureChange(const Eigen::MatrixXd& dh) const {
+Eigen::MatrixXd MassConservingFilm::pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const {
     return linearization_->pressureChange(dh);
 }
 

@@ -67,7 +67,7 @@ void ReynoldsFilm::linearize(const ContactStep& step, const ContactState&, const
     linearization_->linearize(fs, rho, eta, it.p, cavitationPressure_);
 }
 
-Eigen::MatrixXd ReynoldsFilm::pressureChange(const Eigen::MatrixXd& dh) const {
+Eigen::MatrixXd ReynoldsFilm::pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const {
     return linearization_->pressureChange(dh, Eigen::MatrixXd());
 }
 

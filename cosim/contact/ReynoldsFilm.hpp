@@ -21,7 +21,7 @@ public:
                lube::FilmState& fs, WorkTally& work) override;
     void accept(const ContactStep&, const ContactState&, const ContactIterate&, ContactState&) const override {}
     void linearize(const ContactStep& step, const ContactState& now, const ContactIterate& it) override;
-    Eigen::MatrixXd pressureChange(const Eigen::MatrixXd& dh) const override;
+    Eigen::MatrixXd pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const override;
     Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const override;
     const lube::Lubricant& lubricant() const override { return solver_.lubricant(); }
 

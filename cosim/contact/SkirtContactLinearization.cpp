@@ -79,20 +79,25 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     fs.outer.axial = -step.pistonVelocity;
     const lube::Lubricant& lub = equation_->lubricant();
     equation_->linearize(step, now, it);
-    const Eigen::MatrixXd dPh = it.floored > 0 ? equation_->pressureChange(flooredCols) : equation_->pressureChange(Cols);
+    const Eigen::Ref<const Eigen::MatrixXd> filmCols = [&]() -> Eigen::Ref<const Eigen::MatrixXd> {
+        if (it.floored > 0) return flooredCols;
+        return Cols;
+    }();
+    const Eigen::MatrixXd dPh = equation_->pressureChange(filmCols);
     // The rate part, where the film has one (a mass-conserving film's content term is in dPh).
     const Eigen::MatrixXd dPrate = ratePart ? equation_->rateChange(step, Dh.rightCols(m)) : Eigen::MatrixXd(n, 0);
     // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
     // (the load is p + p_c); its slope once per node.
+    // (None where no node is in contact.)
     Eigen::MatrixXd dPc;
-    if (contact_) {
-        dPc.setZero(n, k);
-        for (int r = 0; r < n; ++r)
-            if (g.kind(r) != lube::NodeKind::Void) {
-                const double slope = contactSlope(it.hTotal[r]);
-                if (slope != 0.0) dPc.row(r) = slope * Cols.row(r);
-            }
-    }
+    if (contact_)
+        for (int r = 0; r < n; ++r) {
+            if (g.kind(r) == lube::NodeKind::Void) continue;
+            const double slope = contactSlope(it.hTotal[r]);
+            if (slope == 0.0) continue;
+            if (dPc.size() == 0) dPc.setZero(n, k);
+            dPc.row(r) = slope * Cols.row(r);
+        }
     work.film += t0.seconds();
     t0.restart();
 
@@ -103,14 +108,14 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     lube::FilmIntegralOptions io = integralOptions();
     io.filmFraction = it.fraction.size() ? &it.fraction : nullptr;
     const lube::FilmLoadGradient G = lube::filmLoadGradient(g, fs, lub, it.p, io);
-    const Eigen::MatrixXd L = G.change(dPh, it.floored > 0 ? flooredCols : Eigen::MatrixXd(Cols), dPc);
+    const Eigen::MatrixXd L = G.change(dPh, filmCols, dPc);
     J.loadH = L.rightCols(m);
     J.loadRate = ratePart      ? G.change(dPrate, Eigen::MatrixXd(), Eigen::MatrixXd())
                  : elasticRate ? Eigen::MatrixXd::Zero(6, m)
                                : Eigen::MatrixXd(6, 0);
 
     // The modal loads of the mapped δp + δp_c, piston rows then liner rows.
-    const Eigen::MatrixXd dLoad = contact_ ? Eigen::MatrixXd(dPh + dPc) : dPh;
+    const Eigen::MatrixXd dLoad = dPc.size() ? Eigen::MatrixXd(dPh + dPc) : dPh;
     Eigen::MatrixXd modal(m, k);
     J.modalRate.setZero(elasticRate ? m : 0, m);
     Eigen::MatrixXd F;

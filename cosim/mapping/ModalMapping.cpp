@@ -96,9 +96,13 @@ void ModalMapping::modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) c
                                     " pressures per column for a grid of " + std::to_string(gridSize_) + " nodes");
     // Only the nodes with a load in some column: a starved film's pressure change lives on its few
     // full-film and contact nodes (docs/coupling.md §6), a small share of the active ones.
+    std::vector<char> nonzero(static_cast<std::size_t>(gridSize_), 0);  // one streaming pass over P
+    for (Eigen::Index j = 0; j < P.cols(); ++j)
+        for (Eigen::Index r = 0; r < P.rows(); ++r)
+            if (P(r, j) != 0.0) nonzero[static_cast<std::size_t>(r)] = 1;
     std::vector<Eigen::Index> loaded;
     for (std::size_t c = 0; c < active_.size(); ++c)
-        if (!P.row(active_[c]).isZero(0.0)) loaded.push_back(static_cast<Eigen::Index>(c));
+        if (nonzero[static_cast<std::size_t>(active_[c])]) loaded.push_back(static_cast<Eigen::Index>(c));
     const auto nl = static_cast<Eigen::Index>(loaded.size());
     if (2 * nl >= static_cast<Eigen::Index>(active_.size())) {
         Eigen::MatrixXd pa(static_cast<Eigen::Index>(active_.size()), P.cols());
