@@ -64,8 +64,8 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     readCylinderPressure(top, c);
     readGrid(top, c.piston, c.grid);
     readTime(top, c.time);
-    if (c.hasFlexibleBody() && c.lubricant.supply.model == OilSupplyModel::LinerLayer)
-        c.coupling.maxIterations = CouplingSpec::kStarvedFlexiblePasses;  // coupling.max_iterations' default
+    if (c.hasFlexibleBody() && c.lubricant.cavitation == CavitationModel::MassConserving)
+        c.coupling.maxIterations = CouplingSpec::kMassConservingFlexiblePasses;  // coupling.max_iterations' default
     const YamlSection coupling = readCoupling(top, c.coupling);
     requireSupportedMassConserving(coupling, c);
     requireOilControlRingOnPiston(lubricant, c);

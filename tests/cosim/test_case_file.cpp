@@ -238,7 +238,7 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     EXPECT_EQ(starvedEhd.lubricant.supply.oilControlRing->bottom, starved.lubricant.supply.oilControlRing->bottom);
     EXPECT_EQ(starvedEhd.lubricant.supply.oilControlRing->top, starved.lubricant.supply.oilControlRing->top);
     EXPECT_EQ(starvedEhd.lubricant.supply.oilControlRing->thickness, starved.lubricant.supply.oilControlRing->thickness);
-    EXPECT_EQ(starvedEhd.coupling.maxIterations, CouplingSpec::kStarvedFlexiblePasses);
+    EXPECT_EQ(starvedEhd.coupling.maxIterations, CouplingSpec::kMassConservingFlexiblePasses);
     // The oil-supply pair: hd.yaml with the mass-conserving film, flooded and on a 3 µm liner layer.
     EXPECT_EQ(hd.lubricant.cavitation, cosim::CavitationModel::Reynolds);
     for (const EngineCase* v : {&flooded, &starved}) {
@@ -588,10 +588,10 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
                 AllOf(StartsWith(file + ": engine.pin_tdc_depth"), HasSubstr("above the deck")));
 }
 
-// A flexible body on the liner's oil layer runs (the coupled Newton method, more passes per step
-// by default: docs/coupling.md §6); a rigid one, or a flooded film, keeps the general default, and
-// the key given wins.
-TEST(CaseFile, FlexibleBodiesOnTheLinerLayerGetMorePassesByDefault) {
+// A flexible body on the mass-conserving film, flooded or on the liner's oil layer, runs (the
+// coupled Newton method, more passes per step by default: docs/coupling.md §6); a rigid one, or
+// the Reynolds film, keeps the general default, and the key given wins.
+TEST(CaseFile, FlexibleBodiesOnTheMassConservingFilmGetMorePassesByDefault) {
     const fs::path dir = scratchDir();
     const std::string starved =
         "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: 3e-6}}\n";
@@ -599,11 +599,13 @@ TEST(CaseFile, FlexibleBodiesOnTheLinerLayerGetMorePassesByDefault) {
     auto passes = [&](const std::string& text) {
         return readCaseFile(caseWith(dir, "name: small", text), noBodyFiles()).coupling.maxIterations;
     };
-    EXPECT_EQ(passes(starved + flexible), CouplingSpec::kStarvedFlexiblePasses);
+    EXPECT_EQ(passes(starved + flexible), CouplingSpec::kMassConservingFlexiblePasses);
     EXPECT_EQ(passes(starved + flexible + "coupling: {max_iterations: 40}"), 40);
     EXPECT_EQ(passes(starved), CouplingSpec{}.maxIterations);
-    EXPECT_EQ(passes("name: small\nlubricant: {cavitation: mass_conserving}\n" + flexible), CouplingSpec{}.maxIterations);
-    EXPECT_GT(CouplingSpec::kStarvedFlexiblePasses, CouplingSpec{}.maxIterations);
+    EXPECT_EQ(passes("name: small\nlubricant: {cavitation: mass_conserving}\n" + flexible),
+              CouplingSpec::kMassConservingFlexiblePasses);
+    EXPECT_EQ(passes("name: small\n" + flexible), CouplingSpec{}.maxIterations);
+    EXPECT_GT(CouplingSpec::kMassConservingFlexiblePasses, CouplingSpec{}.maxIterations);
 }
 
 TEST(CaseFile, TheKeptJacobianCanBeTurnedOff) {
