@@ -125,18 +125,33 @@ void StepSolver::acceptStep(const StepContext& ctx, const StepState& s, const Ei
     for (std::size_t c = 0; c < contacts_.size(); ++c) out.films.push_back(contacts_[c]->accepted(ctx.step, s.films[c], ev.films[c]));
 }
 
+Eigen::Vector2d StepSolver::predictedMotion(const StepState& s, const StepState& prev, double dt,
+                                            const Eigen::Vector2d& scale) {
+    const Eigen::Vector2d firstOrder = s.x + dt * s.v;
+    if (s.dt > 0.0 && prev.dt > 0.0) {
+        // Where the acceleration reverses within a step (a slap on a starved film), the second-
+        // order term sends the iteration's start the wrong way: the last step tells.
+        const Eigen::Vector2d lastFirst = prev.x + s.dt * prev.v;
+        const Eigen::Vector2d lastSecond = lastFirst + 0.5 * s.dt * s.dt * prev.a;
+        if ((s.x - lastFirst).cwiseQuotient(scale).cwiseAbs().maxCoeff() <
+            (s.x - lastSecond).cwiseQuotient(scale).cwiseAbs().maxCoeff())
+            return firstOrder;
+    }
+    return firstOrder + 0.5 * dt * dt * s.a;
+}
+
 bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg, StepState& out, StepEvaluation& ev, int& iterations,
                                std::string& failure) {
     const StepContext ctx = stepContext(s, prev, dtDeg);
     const double dt = ctx.step.dt;
-    Eigen::Vector2d x = s.x + dt * s.v + 0.5 * dt * dt * s.a;  // predictor
+    const StepTolerances tol = stepTolerances();
+    Eigen::Vector2d x = predictedMotion(s, prev, dt, tol.motion);
     // The modal coordinates start from their linear extrapolation over the last step (at high
     // speed y moves by hundreds of coupling tolerances per step; from y_n the first Newton passes
     // go through the strongly nonlinear film law).
     Eigen::VectorXd y = s.y;
     if (s.dt > 0.0 && prev.y.size() == s.y.size()) y += (ctx.step.dt / s.dt) * (s.y - prev.y);
     const bool flexible = mp_ + ml_ > 0;
-    const StepTolerances tol = stepTolerances();
     const int maxIt = case_.coupling.maxIterations;
     iterations = 0;
     failure.clear();

@@ -57,6 +57,11 @@ public:
     /// (det(I − ∂H/∂y) < 0: the skirt's equilibrium in the film is lost; docs/coupling.md §3).
     int foldedJacobians() const { return foldedJacobians_; }
     void stepAccepted() { foldedJacobians_ = 0; }
+    /// The Newton iteration's start for the motion from s (prev: the state before it): the
+    /// second-order predictor x + Δt v + ½ Δt² a, or the first-order one x + Δt v where that
+    /// predicted the last step (prev → s) better, in units of `scale` (docs/coupling.md §1).
+    static Eigen::Vector2d predictedMotion(const StepState& s, const StepState& prev, double dt,
+                                           const Eigen::Vector2d& scale);
 
 private:
     // The schemes are parts of the step: they evaluate the motion's difference columns

@@ -1,0 +1,60 @@
+// The coupled step's start (StepSolver::predictedMotion, docs/coupling.md §1): the second-order
+// predictor where the motion's acceleration holds over the steps, the first-order one where the
+// last step showed the acceleration reversing (a slap).
+#include "cosim/coupling/StepSolver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace flexehd::cosim;
+
+namespace {
+
+// A state of the motion x(t) = x0 + v0 t + ½ a t² at t, reached by a step dt.
+StepState onParabola(const Eigen::Vector2d& x0, const Eigen::Vector2d& v0, const Eigen::Vector2d& a, double t,
+                     double dt) {
+    StepState s;
+    s.time = t;
+    s.dt = dt;
+    s.x = x0 + v0 * t + 0.5 * a * t * t;
+    s.v = v0 + a * t;
+    s.a = a;
+    return s;
+}
+
+}  // namespace
+
+// Constant acceleration: the second-order predictor is the motion itself.
+TEST(StepPredictor, AConstantAccelerationIsPredictedExactly) {
+    const Eigen::Vector2d x0(1e-6, 2e-4), v0(3e-3, -0.1), a(40.0, 900.0), scale(50e-6, 50e-6 / 0.025);
+    const double dt = 1e-4;
+    const StepState prev = onParabola(x0, v0, a, dt, dt), s = onParabola(x0, v0, a, 2 * dt, dt);
+    const Eigen::Vector2d expected = onParabola(x0, v0, a, 3 * dt, dt).x;
+    const Eigen::Vector2d x = StepSolver::predictedMotion(s, prev, dt, scale);
+    EXPECT_LE((x - expected).cwiseQuotient(scale).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// The acceleration reversed over the last step (the piston hit the wall: it was accelerating
+// towards it, then stopped): the last step was predicted better without the acceleration, so
+// the start is the first-order one. Also the first step (no step before it) is second order.
+TEST(StepPredictor, AReversedAccelerationDropsTheSecondOrderTerm) {
+    const Eigen::Vector2d scale(50e-6, 50e-6 / 0.025);
+    const double dt = 1e-4;
+    StepState prev;
+    prev.dt = dt;
+    prev.x = Eigen::Vector2d(40e-6, 0.0);
+    prev.v = Eigen::Vector2d(0.2, 0.0);
+    prev.a = Eigen::Vector2d(2000.0, 0.0);  // towards the wall
+    StepState s = prev;
+    s.x = prev.x + dt * prev.v - 0.5 * dt * dt * prev.a;  // stopped by the wall instead
+    s.v = Eigen::Vector2d(0.05, 0.0);
+    s.a = Eigen::Vector2d(-3000.0, 0.0);
+    const Eigen::Vector2d x = StepSolver::predictedMotion(s, prev, dt, scale);
+    EXPECT_DOUBLE_EQ(x[0], s.x[0] + dt * s.v[0]);
+    EXPECT_DOUBLE_EQ(x[1], s.x[1] + dt * s.v[1]);
+    StepState first = prev;
+    first.dt = 0.0;  // the initial state
+    const Eigen::Vector2d y = StepSolver::predictedMotion(s, first, dt, scale);
+    EXPECT_DOUBLE_EQ(y[0], s.x[0] + dt * s.v[0] + 0.5 * dt * dt * s.a[0]);
+}
