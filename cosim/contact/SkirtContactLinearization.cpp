@@ -115,7 +115,9 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
                                : Eigen::MatrixXd(6, 0);
 
     // The modal loads of the mapped δp + δp_c, piston rows then liner rows.
-    const Eigen::MatrixXd dLoad = dPc.size() ? Eigen::MatrixXd(dPh + dPc) : dPh;
+    Eigen::MatrixXd summed;
+    if (dPc.size()) summed = dPh + dPc;
+    const Eigen::MatrixXd& dLoad = dPc.size() ? summed : dPh;
     Eigen::MatrixXd modal(m, k);
     J.modalRate.setZero(elasticRate ? m : 0, m);
     Eigen::MatrixXd F;

@@ -69,7 +69,7 @@ void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::
     P.modalRate.resize(0, 0);
     P.filmChangePerUnknown.resize(0);
     P.motionColumns = true;
-    P.loadX = Eigen::MatrixXd::Zero(6, 2);
+    Eigen::MatrixXd loadX = Eigen::MatrixXd::Zero(6, 2);
     P.modalX = Eigen::MatrixXd::Zero(mp_ + ml_, 2);
     for (std::size_t c = 0; c < step_.contacts_.size(); ++c) {
         ContactJacobian J;
@@ -79,7 +79,7 @@ void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::
         addPart(P.modalH, J.modalH);
         addPart(P.modalRate, J.modalRate);
         P.motionColumns = P.motionColumns && J.motionColumns;
-        addPart(P.loadX, J.loadX);
+        addPart(loadX, J.loadX);
         addPart(P.modalX, J.modalX);
         if (J.filmChangePerUnknown.size() == 0) continue;
         P.filmChangePerUnknown = P.filmChangePerUnknown.size() == 0
@@ -90,7 +90,7 @@ void CoupledNewtonScheme::linearizeCoupled(const StepContext& ctx, const Eigen::
     const Eigen::Matrix<double, 2, 6> dForce = actionGradient(ctx);  // ∂f/∂(F, M)
     P.motionH = -dForce * loadH;
     P.motionRate = step_.case_.coupling.elasticSqueeze ? Eigen::MatrixXd(-dForce * loadRate) : Eigen::MatrixXd(2, 0);
-    if (P.motionColumns) P.loadX = -dForce * P.loadX;  // the film's part of the motion rows' (e, β) columns
+    P.motionX = P.motionColumns ? Eigen::MatrixXd(-dForce * loadX) : Eigen::MatrixXd();
     P.valid = true;
     step_.work_.modal += t0.seconds();
 }
@@ -101,13 +101,14 @@ Eigen::MatrixXd CoupledNewtonScheme::coupledJacobian(const StepContext& ctx) {
     const int m = mp_ + ml_, k = 2 + m;
     const double rate = ctx.step.a0 / ctx.step.dt;
     const bool elasticRate = step_.case_.coupling.elasticSqueeze;
-    // The modal columns; the (e, β) columns are formCoupledJacobian's.
+    // The modal columns, and the (e, β) columns where the contacts give them (else
+    // formCoupledJacobian's differences).
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, k);
     J.topRightCorner(2, m) = elasticRate ? Eigen::MatrixXd(P.motionH + rate * P.motionRate) : P.motionH;
     // With the contacts' motion columns: the motion rows' (e, β) columns are the inertia's
     // (a0/Δt)² M and the film's part; the modal rows' the response to their modal load.
     const int first = P.motionColumns ? 0 : 2;
-    if (P.motionColumns) J.topLeftCorner(2, 2) = rate * rate * step_.dyn_.mass(ctx.crank) + P.loadX;
+    if (P.motionColumns) J.topLeftCorner(2, 2) = rate * rate * step_.dyn_.mass(ctx.crank) + P.motionX;
     // Modal rows: δ_ij − ∂H/∂y_j, H linear in the mapped pressure (history terms held).
     auto respond = [&](const FlexibleBody& body, modal::HeldModalDynamics* dynamics, int row, int rows) {
         Eigen::MatrixXd F(rows, k - first);

@@ -40,9 +40,10 @@ private:
         Eigen::MatrixXd modalH, modalRate;      // modes × modes: the contacts' modal loads (piston rows, liner rows)
         Eigen::VectorXd filmChangePerUnknown;   // 2 + modes: the contacts' largest film change per unit
         // The (e, β) columns' film part where every contact gives it (ContactJacobian::motionColumns):
-        // the action's change (6 × 2) and the modal load's (modes × 2); else formed by differences.
+        // the motion rows' (2 × 2, through the action) and the modal load's (modes × 2); else the
+        // columns are formed by differences.
         bool motionColumns = false;
-        Eigen::MatrixXd loadX, modalX;
+        Eigen::MatrixXd motionX, modalX;
     };
 
     // The last accepted iterate of the step (its measure, merit, unknowns and residual) and the

@@ -71,15 +71,24 @@ Eigen::VectorXd ModalMapping::modalForce(const Eigen::VectorXd& p) const {
     return out;
 }
 
+std::vector<Eigen::Index> ModalMapping::loadedColumns(const Eigen::Ref<const Eigen::MatrixXd>& P) const {
+    // A starved film loads a small share of the active nodes (its full-film and contact nodes,
+    // docs/coupling.md §6); one streaming pass over P finds them.
+    std::vector<char> nonzero(static_cast<std::size_t>(gridSize_), 0);
+    for (Eigen::Index j = 0; j < P.cols(); ++j)
+        for (Eigen::Index r = 0; r < P.rows(); ++r)
+            if (P(r, j) != 0.0) nonzero[static_cast<std::size_t>(r)] = 1;
+    std::vector<Eigen::Index> loaded;
+    for (std::size_t c = 0; c < active_.size(); ++c)
+        if (nonzero[static_cast<std::size_t>(active_[c])]) loaded.push_back(static_cast<Eigen::Index>(c));
+    return loaded;
+}
+
 void ModalMapping::modalForce(const Eigen::VectorXd& p, Eigen::VectorXd& out) const {
     if (p.size() != gridSize_)
         throw std::invalid_argument("ModalMapping::modalForce: " + std::to_string(p.size()) +
                                     " pressures for a grid of " + std::to_string(gridSize_) + " nodes");
-    // A starved film loads a small share of the active nodes (its full-film and contact nodes,
-    // docs/coupling.md §6): then only their columns of Φᵀ A.
-    std::vector<Eigen::Index> loaded;
-    for (std::size_t c = 0; c < active_.size(); ++c)
-        if (p[active_[c]] != 0.0) loaded.push_back(static_cast<Eigen::Index>(c));
+    const std::vector<Eigen::Index> loaded = loadedColumns(p);
     if (2 * loaded.size() >= active_.size()) {
         Eigen::VectorXd pa(static_cast<Eigen::Index>(active_.size()));
         for (std::size_t c = 0; c < active_.size(); ++c) pa[static_cast<Eigen::Index>(c)] = p[active_[c]];
@@ -94,15 +103,7 @@ void ModalMapping::modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) c
     if (P.rows() != gridSize_)
         throw std::invalid_argument("ModalMapping::modalForces: " + std::to_string(P.rows()) +
                                     " pressures per column for a grid of " + std::to_string(gridSize_) + " nodes");
-    // Only the nodes with a load in some column: a starved film's pressure change lives on its few
-    // full-film and contact nodes (docs/coupling.md §6), a small share of the active ones.
-    std::vector<char> nonzero(static_cast<std::size_t>(gridSize_), 0);  // one streaming pass over P
-    for (Eigen::Index j = 0; j < P.cols(); ++j)
-        for (Eigen::Index r = 0; r < P.rows(); ++r)
-            if (P(r, j) != 0.0) nonzero[static_cast<std::size_t>(r)] = 1;
-    std::vector<Eigen::Index> loaded;
-    for (std::size_t c = 0; c < active_.size(); ++c)
-        if (nonzero[static_cast<std::size_t>(active_[c])]) loaded.push_back(static_cast<Eigen::Index>(c));
+    const std::vector<Eigen::Index> loaded = loadedColumns(P);
     const auto nl = static_cast<Eigen::Index>(loaded.size());
     if (2 * nl >= static_cast<Eigen::Index>(active_.size())) {
         Eigen::MatrixXd pa(static_cast<Eigen::Index>(active_.size()), P.cols());

@@ -46,6 +46,8 @@ public:
     void modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) const;
 
 private:
+    /// The active columns whose grid node carries a load in some column of P (grid nodes × k).
+    std::vector<Eigen::Index> loadedColumns(const Eigen::Ref<const Eigen::MatrixXd>& P) const;
     int gridSize_ = 0;
     std::vector<int> active_;
     Eigen::MatrixXd B_, G_;  // Φᵀ A and D_r Φ on the active nodes: modes × active, active × modes
