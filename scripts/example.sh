@@ -10,7 +10,7 @@
 # FLEXEHD_EXAMPLE_RIGID_RATE=1 also EHD with the rigid film thickness's rate only in the squeeze
 # term (ehd_rigid_rate.yaml, about 40 s more; docs/coupling.md section 3);
 # FLEXEHD_EXAMPLE_STARVED_EHD=1 also the flexible piston on the 3 um liner oil layer
-# (starved_ehd.yaml, about 4 minutes more; docs/coupling.md section 6) with its plots against
+# (starved_ehd.yaml, about 3 minutes more; docs/coupling.md section 6) with its plots against
 # the flooded EHD run and the starved HD run.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -77,11 +77,15 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
     }
     it.revisit = false;
     const double rate = ctx.step.a0 / ctx.step.dt;
-    // A new linearisation when a pass did not halve the measure (or had to backtrack with a
-    // kept Jacobian); a step-size change alone re-forms the Jacobian from the kept parts
-    // (affine in the rate); otherwise the kept inverse, Broyden-updated within the step.
+    // A new linearisation when two passes in a row did not halve the measure (the first gets the
+    // Broyden update of the kept Jacobian: near the solution a stale Jacobian's error dominates
+    // the residual, and one secant update corrects it for less than a new linearisation costs),
+    // or when the update had to backtrack; a step-size change alone re-forms the Jacobian from
+    // the kept parts (affine in the rate); otherwise the kept inverse, Broyden-updated.
     if (it.backtracks > 0 && it.freshJacobian) it.regularize = true;  // see below
-    const bool relinearize = !parts_.valid || measure > 0.5 * it.acceptedMeasure || it.backtracks > 0;
+    const bool notHalved = measure > 0.5 * it.acceptedMeasure;
+    const bool relinearize = !parts_.valid || it.backtracks > 0 || (notHalved && it.stalled);
+    it.stalled = notHalved && !relinearize;
     if (!parts_.valid) it.acceptedMeasure = std::numeric_limits<double>::infinity();
     if (relinearize) {
         try {

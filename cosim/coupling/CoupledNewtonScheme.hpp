@@ -61,6 +61,7 @@ private:
         }
         int backtracks = 0;
         bool freshJacobian = false, regularize = false, revisit = false;
+        bool stalled = false;  ///< the last pass did not halve the measure (and was Broyden-updated)
     };
 
     /// The line search, the Jacobian kept, re-formed or Broyden-updated, and the damped update dz

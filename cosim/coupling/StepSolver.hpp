@@ -62,6 +62,10 @@ public:
     /// predicted the last step (prev → s) better, in units of `scale` (docs/coupling.md §1).
     static Eigen::Vector2d predictedMotion(const StepState& s, const StepState& prev, double dt,
                                            const Eigen::Vector2d& scale);
+    /// The iteration's start for the modal coordinates from s: with `quadratic` the quadratic
+    /// through the last three states' y (prev.yFrom, prev.y, s.y), else (or where fewer are known)
+    /// the linear extrapolation through the last two, s.y on the first step (docs/coupling.md §1).
+    static Eigen::VectorXd predictedModal(const StepState& s, const StepState& prev, double dt, bool quadratic);
 
 private:
     // The schemes are parts of the step: they evaluate the motion's difference columns
@@ -79,6 +83,8 @@ private:
     StepContext stepContext(const StepState& s, const StepState& prev, double dtDeg);
     StepTolerances stepTolerances() const;
     /// max |Δh(H(y)) − Δh(y)| over every contact's film (m).
+    /// The largest film-thickness change of the modal change d over every contact's film.
+    double largestFilmChange(const StepContext& ctx, const Eigen::VectorXd& d);
     double couplingResidual(const StepContext& ctx, const StepEvaluation& ev, const Eigen::VectorXd& y);
     /// The step's evaluations at x + δ_i e_i (i = e, β; y held; with the bodies' response when
     /// `structure`), each counted in `solves`: the finite-difference columns of the motion unknowns

@@ -25,6 +25,8 @@ struct StepState {
     double dt = 0.0;        // s, the step that reached this state (0: initial)
     Eigen::Vector2d x = Eigen::Vector2d::Zero(), v = Eigen::Vector2d::Zero(), a = Eigen::Vector2d::Zero();
     Eigen::VectorXd y;      // modal coordinates: the piston's, then the liner's
+    Eigen::VectorXd yFrom;  // y of the state the step that reached this one started from (empty: initial)
+    bool quadraticModalStart = false;  // y's quadratic extrapolation predicted this step better than the linear one
     Eigen::VectorXd w;      // modal velocities ẏ (bodies.response: dynamic; else empty)
     std::vector<ContactState> films;  // per contact (the squeeze term's history, the warm start)
     LinerOilState oil;                // the liner's oil layer and the contacts' covers on it

@@ -57,9 +57,11 @@ TEST(ElasticSqueeze, StepsSolveTheEquationsWithTheElasticRate) {
         body.filmChange(s.pistonModal, 0.0, dh);
         return std::pair<Eigen::VectorXd, Eigen::VectorXd>(h + dh, h);
     };
-    auto written = [&](double deg) {
-        for (const StepRecord& r : steps)
-            if (std::abs(r.crankDeg - deg) < 1e-9) return true;
+    // The three states are three consecutive accepted steps (no shortened step in between).
+    auto consecutive = [&](double deg0, double deg1, double deg2) {
+        for (std::size_t k = 2; k < steps.size(); ++k)
+            if (std::abs(steps[k].crankDeg - deg2) < 1e-9)
+                return std::abs(steps[k - 1].crankDeg - deg1) < 1e-9 && std::abs(steps[k - 2].crankDeg - deg0) < 1e-9;
         return false;
     };
     const double tolH = c.coupling.tolerance * c.piston.clearance;
@@ -69,7 +71,7 @@ TEST(ElasticSqueeze, StepsSolveTheEquationsWithTheElasticRate) {
         const Snapshot &s0 = snaps[i - 2], &s1 = snaps[i - 1], &s2 = snaps[i];
         // Three consecutive accepted steps of 0.25° (written states, no step in between).
         if (std::abs(s2.crankDeg - s1.crankDeg - 0.25) > 1e-9 || std::abs(s1.crankDeg - s0.crankDeg - 0.25) > 1e-9 ||
-            !written(s0.crankDeg) || !written(s1.crankDeg) || !written(s2.crankDeg))
+            !consecutive(s0.crankDeg, s1.crankDeg, s2.crankDeg))
             continue;
         const double dt = 0.25 * sim.kinematics().secondsPerDegree();
         const auto [h2, r2] = total(s2);

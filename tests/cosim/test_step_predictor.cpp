@@ -58,3 +58,38 @@ TEST(StepPredictor, AReversedAccelerationDropsTheSecondOrderTerm) {
     const Eigen::Vector2d y = StepSolver::predictedMotion(s, first, dt, scale);
     EXPECT_DOUBLE_EQ(y[0], s.x[0] + dt * s.v[0] + 0.5 * dt * dt * s.a[0]);
 }
+
+// The modal coordinates on a quadratic y(t) = c0 + c1 t + c2 t², reached by steps of different
+// sizes: the quadratic predictor is y itself; with one step of history it is the linear
+// extrapolation, on the first step y_n.
+TEST(StepPredictor, TheModalCoordinatesFollowTheirQuadraticThroughTheLastThreeStates) {
+    Eigen::VectorXd c0(3), c1(3), c2(3);
+    c0 << 1e-7, -2e-6, 3e-5;
+    c1 << 0.02, 0.5, -4.0;
+    c2 << 300.0, -20.0, 1e4;
+    auto at = [&](double t) { return Eigen::VectorXd(c0 + t * c1 + t * t * c2); };
+    const double t0 = 0.0, t1 = 1.3e-4, t2 = 2.1e-4, dt = 0.6e-4;  // steps 1.3e-4, 0.8e-4, then 0.6e-4
+    StepState prev, s;
+    prev.time = t1;
+    prev.dt = t1 - t0;
+    prev.y = at(t1);
+    prev.yFrom = at(t0);
+    s.time = t2;
+    s.dt = t2 - t1;
+    s.y = at(t2);
+    s.yFrom = prev.y;
+    const Eigen::VectorXd expected = at(t2 + dt);
+    const Eigen::VectorXd y = StepSolver::predictedModal(s, prev, dt, true);
+    EXPECT_LE((y - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+    // The linear extrapolation misses the curvature: c2 dt (dt + Δt_n); it is the start where
+    // the state before prev is not known.
+    const Eigen::VectorXd linear = StepSolver::predictedModal(s, prev, dt, false);
+    const Eigen::VectorXd missed = c2 * dt * (dt + s.dt);
+    EXPECT_LE((expected - linear - missed).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+    prev.yFrom.resize(0);
+    EXPECT_LE((StepSolver::predictedModal(s, prev, dt, true) - linear).cwiseAbs().maxCoeff(), 0.0);
+    prev.dt = 0.0;  // prev is the initial state
+    EXPECT_LE((StepSolver::predictedModal(s, prev, dt, true) - linear).cwiseAbs().maxCoeff(), 0.0);
+    s.dt = 0.0;  // s is the initial state
+    EXPECT_EQ(StepSolver::predictedModal(s, prev, dt, true), s.y);
+}
