@@ -10,6 +10,7 @@
 
 #include "lube/FilmNodeGeometry.hpp"
 #include "lube/ReynoldsSystem.hpp"
+#include "lube/ShearStressFactor.hpp"
 
 namespace flexehd::lube {
 
@@ -58,6 +59,7 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
     const double dVz = film.outer.axial - film.inner.axial;
     const double dVt = film.outer.circumferential - film.inner.circumferential;
     const double dV = std::hypot(dVz, dVt);
+    const ShearStressFactor shearFactor(opt.roughness);
 
     FilmLoads out;
     out.minFilm = std::numeric_limits<double>::infinity();
@@ -74,7 +76,9 @@ FilmLoads integrateFilm(const FilmGrid& g, const FilmState& film, const Lubrican
             const double dpdz = axialStencil(g, i, j).apply(p), dpdy = circumferentialStencil(g, i, j).apply(p);
 
             const double phi = opt.filmFraction ? (*opt.filmFraction)[k] : 1.0;
-            const double couette = phi * eta[k] / h;
+            double c, dcdh;
+            shearFactor.couette(h, c, dcdh);
+            const double couette = phi * eta[k] * c;
             const double tz = couette * dVz - 0.5 * h * dpdz;
             const double tt = couette * dVt - 0.5 * h * dpdy;
             const double pc = opt.contactPressure ? (*opt.contactPressure)[k] : 0.0;

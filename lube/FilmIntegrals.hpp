@@ -30,6 +30,9 @@ struct FilmIntegralOptions {
     double boundaryFriction = 0.0;     ///< μ_b of the asperity contact
     const Eigen::VectorXd* contactPressure = nullptr;  ///< p_c per node (Pa) or nullptr
     const Eigen::VectorXd* filmFraction = nullptr;     ///< φ per node in [0,1] or nullptr (= 1)
+    /// m, composite rms roughness σ of the Couette shear's stress factor φ_f(h/σ)
+    /// (ShearStressFactor, Patir & Cheng 1979); 0: smooth surfaces (φ_f = 1)
+    double roughness = 0.0;
 };
 
 struct FilmLoads {

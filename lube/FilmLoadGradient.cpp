@@ -11,6 +11,7 @@
 
 #include "lube/FilmNodeGeometry.hpp"
 #include "lube/ReynoldsSystem.hpp"
+#include "lube/ShearStressFactor.hpp"
 
 namespace flexehd::lube {
 
@@ -76,6 +77,7 @@ FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, cons
     const double dVz = film.outer.axial - film.inner.axial;
     const double dVt = film.outer.circumferential - film.inner.circumferential;
     const double dV = std::hypot(dVz, dVt);
+    const ShearStressFactor shearFactor(opt.roughness);
     FilmLoadGradient G;
     G.pressure.setZero(6, n);
     G.thickness.setZero(6, n);
@@ -94,12 +96,14 @@ FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, cons
             const double phi = opt.filmFraction ? (*opt.filmFraction)[k] : 1.0;
             const double pk = p[k] - pAmb;
             const double eta = lub.viscosity(pk);
-            // Shear τ = φη(p)U/h − (h/2)∇p (FilmIntegrals.hpp); the viscosity's slope by a central
-            // difference (zero for a constant viscosity).
+            // Shear τ = φη(p)U c(h) − (h/2)∇p, c = φ_f/h (FilmIntegrals.hpp); the viscosity's slope
+            // by a central difference (zero for a constant viscosity).
+            double c, dcdh;
+            shearFactor.couette(h, c, dcdh);
             const double dp = 1e-6 * std::max(std::abs(pk), 1e5);
             const double detaDp = (lub.viscosity(pk + dp) - lub.viscosity(pk - dp)) / (2.0 * dp);
             // ∂/∂p_k: the pressure force, and the Couette shear through η(p_k).
-            add(G.pressure, k, -A * er + (phi * detaDp / h) * S * (dVz * ez + dVt * et), lever);
+            add(G.pressure, k, -A * er + (phi * detaDp * c) * S * (dVz * ez + dVt * et), lever);
             // ∂/∂p at the stencil nodes: −(h/2)∇p.
             const Stencil* stencils[2] = {&sz, &st};
             const Eigen::Vector3d dirs[2] = {ez, et};
@@ -110,8 +114,8 @@ FilmLoadGradient filmLoadGradient(const FilmGrid& g, const FilmState& film, cons
                 add(G.pressure, q.o, q.wo * f, lever);
                 add(G.pressure, q.p, q.wp * f, lever);
             }
-            // ∂/∂h_k: −φηU/h² − ∇p/2.
-            const double couette = -phi * eta / (h * h);
+            // ∂/∂h_k: φηU ∂c/∂h − ∇p/2 (smooth: −φηU/h² − ∇p/2).
+            const double couette = phi * eta * dcdh;
             add(G.thickness, k, S * ((couette * dVz - 0.5 * dpdz) * ez + (couette * dVt - 0.5 * dpdy) * et), lever);
             // ∂/∂p_c,k: the contact force and the boundary friction μ_b p_c (V/|V|).
             Eigen::Vector3d fc = -S * er;

