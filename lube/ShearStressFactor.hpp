@@ -23,7 +23,6 @@ public:
     double factor(double h) const;
     /// The Couette coefficient c = φ_f(h/σ)/h (1/m) of τ = φ η ΔV c, and its derivative ∂c/∂h.
     void couette(double h, double& c, double& dcdh) const;
-    double sigma() const { return sigma_; }
 
     /// φ_f(H) and dφ_f/dH of the film parameter H = h/σ ≥ 0, from the closed form.
     static void ofFilmParameter(double H, double& phi, double& dphidH);
