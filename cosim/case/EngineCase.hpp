@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "cosim/case/RingPackSpec.hpp"
+
 namespace flexehd::cosim {
 
 struct EngineSpec {
@@ -238,6 +240,7 @@ struct EngineCase {
     OutputSpec output;
     LinerSpec liner;      ///< liner geometry beyond the bore: assembly distortion
     ThermalSpec thermal;  ///< thermal displacements (none by default)
+    std::vector<RingSpec> rings;  ///< the ring pack, top ring first (none by default)
 
     /// The piston or the liner is a flexible (reduced) body.
     bool hasFlexibleBody() const {

@@ -44,7 +44,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     const YAML::Node root = loadCaseYaml(path, absolute);
     const YamlSection top(ctx, root, "",
                           {"name", "engine", "piston", "lubricant", "contact", "cylinder_pressure", "bodies", "grid",
-                           "time", "coupling", "output", "liner", "thermal"});
+                           "time", "coupling", "output", "liner", "thermal", "rings"});
     EngineCase c;
     c.path = absolute.string();
     c.name = text(top, "name", absolute.stem().string(), "a name (text)");
@@ -61,6 +61,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
 
     const YamlSection lubricant = readLubricant(top, c.engine, c.lubricant);
     readContact(top, c.contact);
+    readRings(top, engine, c);
     readCylinderPressure(top, c);
     readGrid(top, c.piston, c.grid);
     readTime(top, c.time);

@@ -17,6 +17,10 @@ void readPiston(const YamlSection& top, const EngineSpec& engine, PistonSpec& p)
 YamlSection readLubricant(const YamlSection& top, const EngineSpec& engine, LubricantSpec& l);
 /// contact.
 void readContact(const YamlSection& top, ContactSpec& c);
+/// rings: the ring pack, top ring first (none when absent), in the case file or in the YAML file it
+/// names; each groove placed on the ring belt (after engine, piston and contact: the roughness
+/// defaults to contact.sigma).
+void readRings(const YamlSection& top, const YamlSection& engine, EngineCase& c);
 /// cylinder_pressure (required): the table's path, and the table read and checked.
 void readCylinderPressure(const YamlSection& top, EngineCase& c);
 /// bodies: the piston's and the liner's model and the response (both rigid with

@@ -18,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // Case-file keys holding paths, relative to the file that gives them (docs/case-file.md).
-const char* const kPathKeys[] = {"cylinder_pressure", "output.directory", "bodies.piston.file", "bodies.liner.file"};
+const char* const kPathKeys[] = {"cylinder_pressure", "output.directory", "bodies.piston.file", "bodies.liner.file",
+                                 "rings"};
 
 bool isPathKey(const std::string& key) {
     for (const char* k : kPathKeys)

@@ -30,6 +30,7 @@
 #include "cosim/clearance/ThermalDisplacementFile.hpp"
 
 #include "ClearanceTestSupport.hpp"
+#include "MinimalCaseFile.hpp"
 
 using namespace flexehd;
 using namespace flexehd::cosim;
@@ -45,26 +46,12 @@ namespace fs = std::filesystem;
 
 
 namespace {
-const char* kCase = R"(engine:
-  bore: 0.086
-  stroke: 0.086
-  rod_length: 0.1435
-  speed_rpm: 1000
-  pin_tdc_depth: 0.0335
-piston:
-  mass: 0.3
-  pin_mass: 0.13
-  inertia: 2.4e-4
-  skirt_top: 0.0108
-  skirt_bottom: -0.025
-cylinder_pressure: p.csv
-)";
 
 std::string writeCase(const fs::path& dir, const std::string& extra, bool pinDepth = true) {
-    std::string text = kCase;
+    std::string text = flexehd::test::kMinimalCase;
     if (!pinDepth) text.erase(text.find("  pin_tdc_depth: 0.0335\n"), 24);
     writeFile(dir / "case.yaml", text + extra);
-    writeFile(dir / "p.csv", "0,1e5\n360,4e6\n720,1e5\n");
+    writeFile(dir / "p.csv", flexehd::test::kMinimalPressureTable);
     return (dir / "case.yaml").string();
 }
 }  // namespace

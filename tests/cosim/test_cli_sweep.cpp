@@ -143,6 +143,23 @@ TEST(StudyFile, FullFactorialListsAndRanges) {
     EXPECT_THAT(c, HasSubstr("cylinder_pressure: " + kSource + "/examples/engine86/cylinder_pressure.csv"));
 }
 
+// A ring-pack file named relative to the study is found from the variant's case, written elsewhere.
+TEST(StudyFile, ARingPackFileIsFoundFromTheVariantsCase) {
+    TempDir t("rings");
+    fs::copy_file(kSource + "/examples/engine86/rings.yaml", t.path / "pack.yaml");
+    const auto s = flexehd::cosim::readStudyFile(
+        writeStudy(t.path, "  rings: pack.yaml\nparameters:\n  engine.pin_offset: [0.0]\n"));
+    ASSERT_EQ(s.variants.size(), 1u);
+    const std::string text = flexehd::cosim::variantCaseText(s, s.variants[0]);
+    EXPECT_THAT(text, HasSubstr("rings: " + (t.path / "pack.yaml").string()));
+    fs::create_directories(t.path / "elsewhere");
+    const fs::path file = t.path / "elsewhere" / "variant.yaml";
+    std::ofstream(file) << text;
+    flexehd::cosim::CaseFileOptions noBodyFiles;
+    noBodyFiles.checkBodyFiles = false;
+    EXPECT_EQ(flexehd::cosim::readCaseFile(file.string(), noBodyFiles).rings.size(), 3u);
+}
+
 // Every study the examples ship names case-file keys only, and every variant's case reads
 // (values in their ranges; the bodies' files are not looked for).
 TEST(StudyFile, ShippedExampleStudiesGiveValidCases) {

@@ -1,0 +1,173 @@
+// The case key `rings`: the ring pack read from the case file or from the file it names, the
+// tension as a load per unit circumference, the rings placed on the ring belt, and the errors.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cosim/casefile/CaseFile.hpp"
+#include "cosim/run/CaseRun.hpp"
+
+#include "MinimalCaseFile.hpp"
+#include "TestFiles.hpp"
+
+using namespace flexehd::cosim;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+using flexehd::test::errorOf;
+using flexehd::test::scratchDir;
+using flexehd::test::writeFile;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+
+// Two rings as a case file's list; the tests edit it.
+const char* kTwoRings = R"(rings:
+  - name: top
+    kind: compression
+    height: 1.15e-3
+    radial_width: 3.2e-3
+    face: {crown_height: 8.0e-6, vertex_offset: 0.0}
+    tangential_force: 9.0
+    closed_gap: 0.25e-3
+    mass: 7.5e-3
+    groove: {lower_flank: 0.0253, side_clearance: 0.05e-3, back_clearance: 0.6e-3}
+  - name: oil
+    kind: oil_control
+    height: 2.43e-3
+    radial_width: 2.6e-3
+    lands: {width: 0.4e-3, separation: 2.03e-3, crown_height: 4.0e-6}
+    elastic_pressure: 1.0e6
+    closed_gap: 0.3e-3
+    mass: 6.5e-3
+    roughness: 0.2e-6
+    groove: {lower_flank: 0.0138, side_clearance: 0.07e-3, back_clearance: 1.2e-3}
+)";
+
+using Edits = std::vector<std::pair<std::string, std::string>>;
+
+// DIR/case.yaml: kMinimalCase and `rings` (kTwoRings), with the edits applied (each must be found).
+std::string caseWith(const fs::path& dir, const Edits& edits = {}, const std::string& rings = kTwoRings) {
+    std::string text = std::string(flexehd::test::kMinimalCase) + rings;
+    for (const auto& [from, to] : edits) {
+        const auto pos = text.find(from);
+        if (pos == std::string::npos) throw std::logic_error("test ring text lacks: " + from);
+        text.replace(pos, from.size(), to);
+    }
+    writeFile(dir / "case.yaml", text);
+    writeFile(dir / "p.csv", flexehd::test::kMinimalPressureTable);
+    return (dir / "case.yaml").string();
+}
+
+std::string caseError(const fs::path& dir, const Edits& edits) {
+    const std::string path = caseWith(dir, edits);
+    return errorOf([&] { readCaseFile(path); });
+}
+
+}  // namespace
+
+TEST(CaseFileRings, ThePackIsReadWithItsTensionPerUnitCircumference) {
+    const fs::path dir = scratchDir();
+    const EngineCase c = readCaseFile(caseWith(dir));
+    ASSERT_EQ(c.rings.size(), 2u);
+    const RingSpec& top = c.rings[0];
+    EXPECT_EQ(top.name, "top");
+    EXPECT_EQ(top.kind, RingKind::Compression);
+    EXPECT_EQ(top.face.crownHeight, 8.0e-6);
+    EXPECT_TRUE(top.face.table.empty());
+    // The tangential force F_t holds each half of the ring against the radial load w per unit
+    // length on the half circumference: 2 F_t = w D.
+    EXPECT_NEAR(top.tensionPerLength, 2.0 * 9.0 / 0.086, 1e-12);
+    EXPECT_EQ(top.roughness, c.contact.sigma);  // the skirt's by default
+    EXPECT_NEAR(top.top(), 0.0253 + 1.15e-3, 1e-15);
+    EXPECT_NEAR(top.grooveTop(), 0.0253 + 1.2e-3, 1e-15);
+    const RingSpec& oil = c.rings[1];
+    EXPECT_EQ(oil.kind, RingKind::OilControl);
+    ASSERT_TRUE(oil.lands.has_value());
+    EXPECT_EQ(oil.lands->separation, 2.03e-3);
+    // The elastic pressure acts on the two lands' faces.
+    EXPECT_NEAR(oil.tensionPerLength, 1.0e6 * 2.0 * 0.4e-3, 1e-9);
+    EXPECT_EQ(oil.roughness, 0.2e-6);
+    EXPECT_TRUE(readCaseFile(caseWith(dir, {}, "")).rings.empty());
+}
+
+TEST(CaseFileRings, TheShippedPackReadsFromItsFileOnTheExamplePiston) {
+    const fs::path dir = scratchDir();
+    const std::string pack = std::string(FLEXEHD_SOURCE_DIR) + "/examples/engine86/rings.yaml";
+    const EngineCase c = readCaseFile(caseWith(dir, {}, "rings: " + pack + "\n"));
+    ASSERT_EQ(c.rings.size(), 3u);
+    EXPECT_EQ(c.rings[0].name, "top");
+    EXPECT_EQ(c.rings[1].kind, RingKind::Scraper);
+    EXPECT_EQ(c.rings[1].face.table.size(), 7u);
+    EXPECT_EQ(c.rings[2].kind, RingKind::OilControl);
+    // In the grooves of meshes/piston.geo: 1.2, 1.5 and 2.5 mm wide.
+    EXPECT_NEAR(c.rings[0].grooveTop() - c.rings[0].groove.lowerFlank, 1.2e-3, 1e-12);
+    EXPECT_NEAR(c.rings[1].grooveTop() - c.rings[1].groove.lowerFlank, 1.5e-3, 1e-12);
+    EXPECT_NEAR(c.rings[2].grooveTop() - c.rings[2].groove.lowerFlank, 2.5e-3, 1e-12);
+    // Errors in the named file name that file.
+    writeFile(dir / "pack.yaml", "rings:\n  - name: top\n    kind: compresion\n");
+    EXPECT_THAT(errorOf([&] { readCaseFile(caseWith(dir, {}, "rings: pack.yaml\n")); }),
+                AllOf(StartsWith((dir / "pack.yaml").string() + ": rings[0].kind"), HasSubstr("compression")));
+    EXPECT_THAT(errorOf([&] { readCaseFile(caseWith(dir, {}, "rings: none.yaml\n")); }),
+                AllOf(HasSubstr("rings"), HasSubstr("cannot read the ring-pack file"), HasSubstr("none.yaml")));
+    writeFile(dir / "bad.yaml", "rings: [\n");
+    EXPECT_THAT(errorOf([&] { readCaseFile(caseWith(dir, {}, "rings: bad.yaml\n")); }),
+                HasSubstr("YAML syntax error"));
+}
+
+TEST(CaseFileRings, BadRingsAreRefusedNamingTheKey) {
+    const fs::path dir = scratchDir();
+    const std::string file = (dir / "case.yaml").string();
+    auto error = [&](const std::string& from, const std::string& to) { return caseError(dir, {{from, to}}); };
+    EXPECT_THAT(error("height: 1.15e-3", "height: -1.15e-3"), StartsWith(file + ": rings[0].height"));
+    EXPECT_THAT(error("height: 1.15e-3", "height: 1.15"), AllOf(StartsWith(file + ": rings[0].height"),
+                                                                 HasSubstr("check the units")));
+    EXPECT_THAT(error("kind: compression", "kind: piston"), StartsWith(file + ": rings[0].kind"));
+    EXPECT_THAT(error("closed_gap: 0.25e-3", "closed_gap: 0.25e-3\n    tension: 3"),
+                AllOf(StartsWith(file + ": rings[0].tension"), HasSubstr("tangential_force")));
+    EXPECT_THAT(error("tangential_force: 9.0", "tangential_force: 9.0\n    elastic_pressure: 1e5"),
+                AllOf(StartsWith(file + ": rings[0].elastic_pressure"), HasSubstr("one of them")));
+    EXPECT_THAT(error("name: oil", "name: top"), AllOf(StartsWith(file + ": rings[1].name"), HasSubstr("two rings")));
+    // The face.
+    EXPECT_THAT(error("vertex_offset: 0.0", "vertex_offset: 0.6e-3"),
+                AllOf(StartsWith(file + ": rings[0].face.vertex_offset"), HasSubstr("height/2")));
+    EXPECT_THAT(error("face: {crown_height: 8.0e-6, vertex_offset: 0.0}",
+                      "face: {table: [[-0.5e-3, 1e-6], [0.2e-3, 0.0], [0.1e-3, 2e-6]]}"),
+                AllOf(StartsWith(file + ": rings[0].face.table[2]"), HasSubstr("ascending")));
+    EXPECT_THAT(error("face: {crown_height: 8.0e-6, vertex_offset: 0.0}", "face: {table: [[-0.5e-3, 1e-6]]}"),
+                StartsWith(file + ": rings[0].face.table"));
+    EXPECT_THAT(error("face: {crown_height: 8.0e-6, vertex_offset: 0.0}",
+                      "face: {crown_height: 8.0e-6, table: [[-0.5e-3, 1e-6], [0.5e-3, 0.0]]}"),
+                HasSubstr("one of them"));
+    EXPECT_THAT(error("face: {crown_height: 8.0e-6, vertex_offset: 0.0}", "lands: {width: 1e-4}"),
+                StartsWith(file + ": rings[0].lands"));
+    EXPECT_THAT(error("lands: {width: 0.4e-3, separation: 2.03e-3", "lands: {width: 0.4e-3, separation: 2.2e-3"),
+                AllOf(StartsWith(file + ": rings[1].lands.separation"), HasSubstr("do not fit")));
+    // The groove: the ring taller than it, off the ring belt, above the deck, overlapping.
+    EXPECT_THAT(error("side_clearance: 0.05e-3", "side_clearance: -0.01e-3"),
+                AllOf(StartsWith(file + ": rings[0].groove.side_clearance"), HasSubstr("taller")));
+    EXPECT_THAT(error("lower_flank: 0.0138", "lower_flank: 0.009"),
+                AllOf(StartsWith(file + ": rings[1].groove.lower_flank"), HasSubstr("piston.skirt_top = 0.0108")));
+    EXPECT_THAT(error("lower_flank: 0.0253", "lower_flank: 0.033"),
+                AllOf(StartsWith(file + ": rings[0].groove.lower_flank"), HasSubstr("above the deck")));
+    EXPECT_THAT(error("lower_flank: 0.0138", "lower_flank: 0.0240"),
+                AllOf(StartsWith(file + ": rings[1].groove.lower_flank"), HasSubstr("ring 'top'"),
+                      HasSubstr("may not overlap")));
+    EXPECT_THAT(error("back_clearance: 0.6e-3", "back_clerance: 0.6e-3"),
+                AllOf(StartsWith(file + ": rings[0].groove.back_clerance"), HasSubstr("did you mean 'back_clearance'")));
+    EXPECT_THAT(error("  pin_tdc_depth: 0.0335\n", ""), AllOf(HasSubstr("engine.pin_tdc_depth"),
+                                                               HasSubstr("required with rings")));
+}
+
+TEST(CaseFileRings, TheRunRefusesARingPackItDoesNotSimulate) {
+    const fs::path dir = scratchDir();
+    const EngineCase c = readCaseFile(caseWith(dir));
+    EXPECT_THAT(errorOf([&] { runCase(c); }), AllOf(HasSubstr("rings"), HasSubstr("does not simulate ring contacts")));
+    EXPECT_FALSE(fs::exists(c.output.directory + "/summary.json"));
+}
