@@ -46,7 +46,7 @@ struct RingSpec {
     double tensionPerLength = 0.0;
     double closedGap = 0.0;  ///< m
     double mass = 0.0;       ///< kg
-    double roughness = 0.0;  ///< m, Rq of the face (the skirt's contact.sigma by default)
+    double roughness = 0.0;  ///< m, composite rms roughness of the face and the liner (contact.sigma by default)
     RingGrooveSpec groove;
 
     /// Piston-frame z of the ring's upper edge, sitting on the groove's lower flank (m).

@@ -143,7 +143,7 @@ RingSpec readRing(const YamlSection& s, double bore, double sigma) {
     requireBelowBoreShare(s, "closed_gap", r.closedGap, bore);
     r.mass = number(s, "mass", kMass, Sign::Positive, 0.0, true);
     if (r.mass > 1.0) s.fail("mass", fmt::format("a ring of {:g} kg: check the units (kg; 6 g = 0.006)", r.mass));
-    r.roughness = number(s, "roughness", {"rms roughness of the face", "m"}, Sign::Positive, sigma);
+    r.roughness = number(s, "roughness", {"composite rms roughness of the face and the liner", "m"}, Sign::Positive, sigma);
     if (r.roughness > 1e-4)
         s.fail("roughness", fmt::format("an rms roughness of {:g} m: check the units (m; 0.3 um = 3e-07)", r.roughness));
     r.groove = readGroove(s, bore);

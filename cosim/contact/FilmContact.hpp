@@ -37,6 +37,7 @@ struct ContactStep {
     double a0 = 1.0, a1 = -1.0, a2 = 0.0;  ///< BDF2: ḟ = (a0 f + a1 fₙ + a2 fₙ₋₁)/dt
     double pistonVelocity = 0.0;      ///< m/s, the piston's axial velocity (+z towards the head)
     double linerOffset = 0.0;         ///< m, liner-frame z of the piston frame's origin
+    double cylinderPressure = 0.0;    ///< Pa, gauge (relative to the crankcase) at the step's end
     /// The liner's oil layer at the step's start and every contact's cover on it (null: no
     /// contact runs on a liner layer).
     const LinerOilState* oil = nullptr;

@@ -58,7 +58,9 @@ StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, d
     }
     ctx.crank = kin_.at(ctx.crankDeg);
     st.pistonVelocity = ctx.crank.velocity;
-    ctx.gas = dyn_.gasForce(pressure_(crankAngle720(ctx.crankDeg)));
+    const double cylinderPressure = pressure_(crankAngle720(ctx.crankDeg));
+    ctx.gas = dyn_.gasForce(cylinderPressure);
+    st.cylinderPressure = cylinderPressure - case_.engine.crankcasePressure;
     st.linerOffset = linerOffset_(ctx.crankDeg);
     st.oil = s.oil.layer ? &s.oil : nullptr;
     ctx.now = &s;

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace flexehd::cosim {
 
 RingRadialMotion::RingRadialMotion(lube::RingFilm film, std::optional<lube::GreenwoodTripp> asperity, double tension)
@@ -46,8 +48,9 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
     double lo = asperity_ ? 1e-4 * asperity_->sigma() : 1e-10, hi = 1e3 * gapNow;
     double flo = excess(lo), fhi = excess(hi);
     if (!(flo >= 0.0 && fhi <= 0.0))
-        throw std::runtime_error("RingRadialMotion: no radial balance of the ring between gaps " + std::to_string(lo) +
-                                 " and " + std::to_string(hi) + " m (load " + std::to_string(load) + " N/m)");
+        throw std::runtime_error(fmt::format("RingRadialMotion: no radial balance of the ring between gaps {:.4g} and "
+                                             "{:.4g} m (load {:.4g} N/m)",
+                                             lo, hi, load));
     // Bisection with a secant (regula falsi, Illinois) step: the bracket halves at worst.
     for (int it = 0; it < 200; ++it) {
         double h = hi - fhi * (hi - lo) / (fhi - flo);

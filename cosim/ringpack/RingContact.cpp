@@ -1,0 +1,146 @@
+#include "cosim/ringpack/RingContact.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "fem/Stopwatch.hpp"
+
+namespace flexehd::cosim {
+namespace {
+
+lube::RingFaceProfile faceProfile(const RingSpec& r) {
+    if (r.face.table.empty()) return lube::RingFaceProfile::barrel(r.height, r.face.crownHeight, r.face.vertexOffset);
+    return lube::RingFaceProfile::table(r.face.table);
+}
+
+lube::GreenwoodTripp asperityLaw(const EngineCase& c, const RingSpec& r) {
+    if (!(c.contact.compositeModulus > 0.0))
+        throw std::invalid_argument(fmt::format(
+            "ring '{}': the ring needs asperity contact (contact.composite_modulus > 0): without it nothing carries "
+            "the ring where the liner stops at the dead centres",
+            r.name));
+    return lube::GreenwoodTripp(r.roughness, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
+}
+
+const RingSpec& supported(const EngineCase& c, const RingSpec& r) {
+    auto refuse = [&](const std::string& what) {
+        throw std::invalid_argument(fmt::format("ring '{}': {} is not built for a ring contact yet", r.name, what));
+    };
+    if (r.kind == RingKind::OilControl) refuse("the oil-control ring (its two lands' films)");
+    if (c.lubricant.supply.model == OilSupplyModel::LinerLayer) refuse("a liner oil layer (lubricant.supply)");
+    if (c.hasFlexibleBody()) refuse("a flexible piston or liner");
+    return r;
+}
+
+}  // namespace
+
+RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes)
+    : ring_(supported(c, ring)),
+      top_(top),
+      circumference_(std::numbers::pi * c.engine.bore),
+      boundaryFriction_(c.contact.boundaryFriction),
+      asperity_(asperityLaw(c, ring)),
+      radial_(lube::RingFilm(faceProfile(ring), lube::Lubricant(c.lubricant.viscosity, c.lubricant.density), faceNodes,
+                             c.lubricant.cavitationPressure),
+              asperity_, ring.tensionPerLength) {}
+
+double RingContact::restingGap() const {
+    // The asperity load falls as the gap grows: bisection between a gap that carries more than the
+    // tension and one that carries less.
+    double lo = 1e-4 * asperity_.sigma(), hi = 10.0 * asperity_.sigma();
+    if (!(radial_.asperityLoad(lo) > ring_.tensionPerLength))
+        throw std::invalid_argument(fmt::format(
+            "ring '{}': its asperities carry at most {:.4g} N/m (at a gap of 1e-4 sigma), less than its tension of "
+            "{:.4g} N/m: check contact.beta, contact.asperity_density, contact.composite_modulus and the ring's "
+            "roughness and face",
+            ring_.name, radial_.asperityLoad(lo), ring_.tensionPerLength));
+    for (int it = 0; it < 200 && hi - lo > 1e-12 * hi; ++it) {
+        const double h = 0.5 * (lo + hi);
+        (radial_.asperityLoad(h) > ring_.tensionPerLength ? lo : hi) = h;
+    }
+    return 0.5 * (lo + hi);
+}
+
+ContactState RingContact::initialState(double linerOffset) const {
+    ContactState s;
+    s.linerOffset = linerOffset;
+    s.minGap = restingGap();
+    return s;
+}
+
+const RingRadialStep& RingContact::radialStep(const ContactStep& step, double gapNow) {
+    const double pressure = top_ ? step.cylinderPressure : 0.0;
+    const Cached key{gapNow, step.dt, step.pistonVelocity, pressure};
+    if (cachedFor_ && cachedFor_->gapNow == key.gapNow && cachedFor_->dt == key.dt &&
+        cachedFor_->velocity == key.velocity && cachedFor_->pressure == key.pressure)
+        return cached_;
+    lube::RingFilmState conditions;
+    conditions.slidingSpeed = -step.pistonVelocity;  // the liner relative to the ring, + towards the crown
+    conditions.pressureAbove = pressure;
+    conditions.pressureBelow = 0.0;
+    cachedFor_.reset();  // a failed step leaves no stale result behind
+    cached_ = radial_.step(gapNow, step.dt, conditions, pressure);
+    cachedFor_ = key;
+    return cached_;
+}
+
+void RingContact::evaluate(const ContactStep& step, const ContactState& now, const ContactState& /*before*/,
+                           const Eigen::Vector2d& /*x*/, const Eigen::VectorXd& /*y*/, ContactIterate& it,
+                           WorkTally& work) {
+    const fem::Stopwatch t0;
+    const RingRadialStep& r = radialStep(step, now.minGap);
+    it = ContactIterate{};
+    it.h = it.hRigid = it.hTotal = r.film.h;
+    it.p = r.film.p;
+    it.dhdt = Eigen::VectorXd::Constant(r.film.h.size(), r.squeezeRate);
+    it.minGap = r.minimumGap;
+    const double v = step.pistonVelocity;
+    const double hydro = circumference_ * r.film.friction;
+    const double boundary = -circumference_ * boundaryFriction_ * r.asperityLoad * (v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0);
+    it.loads.shearForce.z() = hydro;
+    it.loads.boundaryFrictionForce.z() = boundary;
+    it.loads.contactLoad = circumference_ * r.asperityLoad;
+    it.loads.viscousDissipation = -hydro * v;
+    it.loads.boundaryFrictionPower = -boundary * v;
+    it.loads.minFilm = r.minimumGap;
+    it.loads.maxPressure = r.film.p.size() ? r.film.p.maxCoeff() : 0.0;
+    it.action.fz = hydro + boundary;
+    work.film += t0.seconds();
+}
+
+void RingContact::linearize(const ContactStep& /*step*/, const ContactState& /*now*/, const Eigen::Vector2d& /*x*/,
+                            const ContactIterate& /*it*/, ContactJacobian& J, WorkTally& /*work*/) {
+    J = ContactJacobian{};
+    J.motionColumns = true;
+}
+
+ContactState RingContact::accepted(const ContactStep& step, const ContactState& /*now*/,
+                                   const ContactIterate& it) const {
+    ContactState s;
+    s.h = s.hRigid = s.hTotal = it.h;
+    s.p = it.p;
+    s.linerOffset = step.linerOffset;
+    s.minGap = it.minGap;
+    return s;
+}
+
+std::vector<ContactColumn> RingContact::columns() const {
+    const std::string column = "ring_" + ring_.name + "_", figure = "rings." + ring_.name + ".";
+    return {{column + "min_film_m", {{figure + "min_film_m", CycleStatistic::Minimum}}},
+            {column + "friction_force_n", {}},
+            {column + "friction_power_w", {{figure + "friction_power_mean_w", CycleStatistic::Mean}}},
+            {column + "boundary_friction_power_w", {{figure + "boundary_friction_power_mean_w", CycleStatistic::Mean}}}};
+}
+
+void RingContact::columnValues(const ContactIterate& it, std::vector<double>& values) const {
+    values.push_back(it.minGap);
+    values.push_back(it.action.fz);
+    values.push_back(it.loads.viscousDissipation + it.loads.boundaryFrictionPower);
+    values.push_back(it.loads.boundaryFrictionPower);
+}
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,70 @@
+#pragma once
+// RingContact: one piston ring as a film contact of the master (docs/ring-pack.md, "The rings in
+// the run"): the axisymmetric film across the ring's running face (lube::RingFilm, flooded) and
+// the ring's radial balance with it in each step (RingRadialMotion: tension and the gas pressure
+// behind the ring against the film and the asperities, the ring's radial squeeze in the film,
+// backward Euler), and its friction on the piston:
+//
+//   F_z = πD (f_hydro − μ_b W_asperity sign(v_p)),
+//
+// f_hydro the film's shear on the ring per unit circumference, W_asperity the asperity load per
+// unit circumference, v_p the piston's axial velocity. Round the bore its radial loads and its
+// friction's moments cancel: it adds F_z to the piston's axial equation and nothing to the
+// lateral force or the tilt moment. The top ring has the cylinder's gauge pressure above its
+// face and behind it, the rings below the crankcase's (the lands' gas is not modelled here).
+// Rigid bodies, a flooded supply, compression and scraper rings; the constructor refuses the
+// rest naming what is missing.
+#include <optional>
+
+#include "cosim/case/EngineCase.hpp"
+#include "cosim/contact/FilmContact.hpp"
+#include "cosim/ringpack/RingRadialMotion.hpp"
+
+namespace flexehd::cosim {
+
+class RingContact final : public FilmContact {
+public:
+    /// ring: its spec; top: the pack's top ring (the cylinder's pressure above and behind it);
+    /// faceNodes: the film's nodes across the face. Throws std::invalid_argument for what is not
+    /// built (an oil-control ring, a liner oil layer, flexible bodies) or without asperity contact
+    /// (contact.composite_modulus 0: nothing would carry the ring at the dead centres).
+    RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 101);
+
+    ContactState initialState(double linerOffset) const override;
+    void evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
+                  const Eigen::Vector2d& x, const Eigen::VectorXd& y, ContactIterate& it, WorkTally& work) override;
+    void addModalLoad(const ContactStep&, const ContactIterate&, Eigen::VectorXd&, WorkTally&) const override {}
+    double filmChange(const ContactStep&, const Eigen::VectorXd&, WorkTally&) const override { return 0.0; }
+    /// Its loads change neither with y nor with the rigid motion: the motion columns are given, empty.
+    void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x, const ContactIterate& it,
+                   ContactJacobian& J, WorkTally& work) override;
+    ContactState accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const override;
+
+    /// ring_<name>_min_film_m, _friction_force_n, _friction_power_w (the power the ring's friction
+    /// takes from the piston, −F_z v_p), _boundary_friction_power_w; summary.json
+    /// rings.<name>.min_film_m and the powers' cycle means.
+    std::vector<ContactColumn> columns() const override;
+    void columnValues(const ContactIterate& it, std::vector<double>& values) const override;
+
+    /// The minimum gap (m) where the asperities alone carry the ring's tension (the ring at rest).
+    double restingGap() const;
+
+private:
+    /// The radial step from h_min,n for the step's conditions; the last one is kept, since the
+    /// ring's film does not depend on the master's unknowns and every pass of a step asks it again.
+    const RingRadialStep& radialStep(const ContactStep& step, double gapNow);
+
+    RingSpec ring_;
+    bool top_;
+    double circumference_;  // πD (m)
+    double boundaryFriction_;
+    lube::GreenwoodTripp asperity_;
+    RingRadialMotion radial_;
+    struct Cached {
+        double gapNow, dt, velocity, pressure;
+    };
+    std::optional<Cached> cachedFor_;
+    RingRadialStep cached_;
+};
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,173 @@
+// A piston ring as a film contact (RingContact, docs/ring-pack.md): in steady sliding its radial
+// balance settles on the film of Martin's parabola; at rest on the gap where the asperities alone
+// carry its tension; with the cylinder's pressure above and behind the top ring on the gap where
+// the asperities and the film of the gas's leakage flow across the face carry tension and gas
+// load (both found independently by quadrature and bisection); and what is not built is refused.
+#include "cosim/ringpack/RingContact.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+#include "SmallEngineCase.hpp"
+#include "TestFiles.hpp"
+
+using namespace flexehd;
+using namespace flexehd::cosim;
+using ::testing::HasSubstr;
+
+namespace {
+
+// The case: the small engine with asperities that carry a ring's tension at a positive gap
+// (the example's β and η_s, a steel ring on a cast-iron liner).
+EngineCase ringCase() {
+    EngineCase c = test::smallCase();
+    c.contact.beta = 0.6e-3;
+    c.contact.asperityDensity = 1.111e8;
+    c.contact.compositeModulus = 1.0e11;
+    return c;
+}
+
+// A barrel-faced compression ring of height b, crown c (vertex radius (b/2)²/(2c)), tension T (N/m).
+RingSpec barrelRing(double b, double c, double T, double roughness) {
+    RingSpec r;
+    r.name = "test";
+    r.kind = RingKind::Compression;
+    r.height = b;
+    r.radialWidth = 3e-3;
+    r.face.crownHeight = c;
+    r.tensionPerLength = T;
+    r.closedGap = 0.25e-3;
+    r.mass = 7e-3;
+    r.roughness = roughness;
+    r.groove = {0.0253, 0.05e-3, 0.6e-3};
+    return r;
+}
+
+// Steps of dt at a constant piston velocity and cylinder pressure until the gap settles (its change
+// per step below 1e-9 of it); the last iterate.
+ContactIterate settle(RingContact& ring, double dt, double velocity, double pressure, double gap, int maxSteps) {
+    ContactStep step;
+    step.dt = dt;
+    step.pistonVelocity = velocity;
+    step.cylinderPressure = pressure;
+    ContactState now = ring.initialState(0.0);
+    now.minGap = gap;
+    ContactIterate it;
+    WorkTally work;
+    for (int k = 0; k < maxSteps; ++k) {
+        ring.evaluate(step, now, now, Eigen::Vector2d::Zero(), Eigen::VectorXd(), it, work);
+        const double change = std::abs(it.minGap - now.minGap);
+        now = ring.accepted(step, now, it);
+        if (change <= 1e-9 * now.minGap) break;
+    }
+    return it;
+}
+
+// The asperity load (N/m) of the barrel face at the minimum gap g: Simpson's rule over the face.
+double asperityLoad(const lube::GreenwoodTripp& law, double b, double c, double g) {
+    const int n = 4000;
+    const double dx = b / n;
+    double w = 0.0;
+    for (int i = 0; i <= n; ++i) {
+        const double s = (-0.5 * b + i * dx) / (0.5 * b);
+        w += (i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * law.pressure(g + c * s * s);
+    }
+    return w * dx / 3.0;
+}
+
+// The load (N/m) of the film through which the gas leaks from p above the face to 0 below it at
+// rest: the flow h³/(12η) dp/dx is the same across the face, so p(x) = p ∫₋^x h⁻³ / ∫₋^+ h⁻³.
+double leakageFilmLoad(double b, double c, double g, double p) {
+    const int n = 20000;
+    const double dx = b / n;
+    auto h3 = [&](int i) {
+        const double s = (-0.5 * b + i * dx) / (0.5 * b);
+        const double h = g + c * s * s;
+        return 1.0 / (h * h * h);
+    };
+    std::vector<double> cumulative(n + 1, 0.0);
+    for (int i = 1; i <= n; ++i) cumulative[i] = cumulative[i - 1] + 0.5 * (h3(i - 1) + h3(i)) * dx;
+    double w = 0.0;
+    for (int i = 1; i <= n; ++i) w += 0.5 * (cumulative[i - 1] + cumulative[i]) / cumulative[n] * p * dx;
+    return w;
+}
+
+}  // namespace
+
+// Martin's parabola (Hamrock, Fundamentals of Fluid Film Lubrication): a flooded face of vertex
+// radius R sliding at U carries w' = 4.896 η (U/2) R / h0 per unit length. With the tension T as
+// the load the ring settles at h0 = 4.896 η (U/2) R / T.
+TEST(RingContact, SteadySlidingSettlesOnMartinsFilm) {
+    const EngineCase c = ringCase();
+    const double b = 6e-3, crown = 4.5e-3, R = 0.25 * b * b / (2.0 * crown), U = 10.0, h0 = 3e-6;
+    const double eta = c.lubricant.viscosity, T = 4.896 * eta * 0.5 * U * R / h0;
+    // At h0 = 10 sigma the asperities carry nothing.
+    RingContact ring(c, barrelRing(b, crown, T, 0.3e-6), false, 6001);
+    // The face spans X = x/sqrt(2 R h0) = +-38.7: the inlet's truncation lowers the load by about
+    // 0.25 % (0.6 % at X = -20, 0.03 % at -200: RingFilm's test), the grid (dX = 0.013) by 1e-4.
+    const ContactIterate it = settle(ring, 1e-3, -U, 0.0, 1e-6, 3000);
+    std::printf("settled minimum film %.6g m (Martin %.6g m), squeeze %.3g m/s, friction %.4g N\n", it.minGap, h0,
+                it.dhdt[0], it.action.fz);
+    EXPECT_NEAR(it.minGap / h0, 1.0, 4e-3);
+    EXPECT_LT(std::abs(it.dhdt[0]), 1e-9);
+    EXPECT_GT(it.action.fz, 0.0);  // the piston moves down: the ring's friction pulls it up
+    EXPECT_EQ(it.loads.boundaryFrictionPower, 0.0);
+    EXPECT_GT(it.loads.viscousDissipation, 0.0);
+    EXPECT_EQ(it.action.fx, 0.0);
+    EXPECT_EQ(it.action.my, 0.0);
+}
+
+TEST(RingContact, AtRestTheAsperitiesCarryTheTensionAndTheTopRingsGasLoad) {
+    const EngineCase c = ringCase();
+    const double b = 1.15e-3, crown = 8e-6, T = 209.3, sigma = 0.3e-6;
+    const lube::GreenwoodTripp law(sigma, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
+    auto balance = [&](double load, double p) {  // the gap where asperities and leakage film carry `load`
+        double lo = 1e-10, hi = 10e-6;
+        for (int it = 0; it < 100; ++it) {
+            const double g = 0.5 * (lo + hi);
+            (asperityLoad(law, b, crown, g) + leakageFilmLoad(b, crown, g, p) > load ? lo : hi) = g;
+        }
+        return 0.5 * (lo + hi);
+    };
+    RingContact second(c, barrelRing(b, crown, T, sigma), false, 401);
+    const double atRest = balance(T, 0.0);
+    EXPECT_NEAR(second.restingGap() / atRest, 1.0, 1e-4);
+    const ContactIterate rest = settle(second, 1e-2, 0.0, 0.0, 3e-6, 2000);
+    std::printf("at rest: settled %.6g m, asperity balance %.6g m\n", rest.minGap, atRest);
+    EXPECT_NEAR(rest.minGap / atRest, 1.0, 1e-4);
+    EXPECT_LT(std::abs(rest.action.fz), 1e-12);
+    // 50 kPa in the cylinder: behind the top ring and above its face; the second ring sees none.
+    const double p = 5e4;
+    RingContact top(c, barrelRing(b, crown, T, sigma), true, 401);
+    const ContactIterate pressed = settle(top, 1e-2, 0.0, p, 3e-6, 2000);
+    const double gas = balance(T + p * b, p);
+    std::printf("top ring at %.3g Pa: settled %.6g m, balance %.6g m (the second ring %.6g m)\n", p, pressed.minGap,
+                gas, settle(second, 1e-2, 0.0, p, 3e-6, 2000).minGap);
+    EXPECT_NEAR(pressed.minGap / gas, 1.0, 2e-3);  // the leakage film on 401 nodes against 20000
+    EXPECT_LT(pressed.minGap, 0.9 * atRest);
+    EXPECT_NEAR(settle(second, 1e-2, 0.0, p, 3e-6, 2000).minGap / atRest, 1.0, 1e-4);
+}
+
+TEST(RingContact, WhatIsNotBuiltIsRefused) {
+    const EngineCase c = ringCase();
+    RingSpec oil = barrelRing(2.4e-3, 4e-6, 300.0, 0.2e-6);
+    oil.kind = RingKind::OilControl;
+    EXPECT_THAT(test::errorOf([&] { RingContact(c, oil, false); }), HasSubstr("oil-control ring"));
+    EngineCase smooth = c;
+    smooth.contact.compositeModulus = 0.0;
+    EXPECT_THAT(test::errorOf([&] { RingContact(smooth, barrelRing(1.15e-3, 8e-6, 200.0, 0.2e-6), true); }),
+                HasSubstr("composite_modulus"));
+    EngineCase flexible = c;
+    flexible.pistonBody.model = BodyModel::Flexible;
+    EXPECT_THAT(test::errorOf([&] { RingContact(flexible, barrelRing(1.15e-3, 8e-6, 200.0, 0.2e-6), true); }),
+                HasSubstr("flexible"));
+    EngineCase soft = c;
+    soft.contact.compositeModulus = 1e9;
+    EXPECT_THAT(test::errorOf([&] { RingContact(soft, barrelRing(1.15e-3, 8e-6, 200.0, 0.3e-6), true).restingGap(); }),
+                HasSubstr("less than its tension"));
+}
