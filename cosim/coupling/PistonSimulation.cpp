@@ -3,7 +3,7 @@
 #include "cosim/coupling/MemoryBudget.hpp"
 #include "cosim/coupling/RunProgress.hpp"
 
-#include "cosim/contact/CaseContacts.hpp"
+#include "cosim/coupling/CaseContacts.hpp"
 #include "cosim/coupling/StepSizeControl.hpp"
 #include "cosim/coupling/StepSolver.hpp"
 #include "lube/FilmIntegrals.hpp"

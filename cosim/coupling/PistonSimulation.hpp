@@ -1,7 +1,7 @@
 #pragma once
 // PistonSimulation: the co-simulation master (docs/coupling.md, docs/dynamics.md). Each time
 // step solves, at the new crank angle, the piston's secondary motion (PistonDynamics, BDF2 in
-// time) together with the films of its contacts (FilmContact: the case's, contact/CaseContacts,
+// time) together with the films of its contacts (FilmContact: the case's, coupling/CaseContacts,
 // and any added) and the elastic response of the flexible bodies (FlexibleBody) to their summed load, until
 //   * the Newton update of (e, β) is below 1e-5 of the clearance (the tilt times the skirt's
 //     reach from the pin), and the residual of each equation of motion below 1e-4 of the sum

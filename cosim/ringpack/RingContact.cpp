@@ -12,7 +12,9 @@
 namespace flexehd::cosim {
 namespace {
 
+// The film's face: the ring's, or one of the oil-control ring's two lands.
 lube::RingFaceProfile faceProfile(const RingSpec& r) {
+    if (r.lands) return lube::RingFaceProfile::barrel(r.lands->width, r.lands->crownHeight);
     if (r.face.table.empty()) return lube::RingFaceProfile::barrel(r.height, r.face.crownHeight, r.face.vertexOffset);
     return lube::RingFaceProfile::table(r.face.table);
 }
@@ -30,7 +32,7 @@ const RingSpec& supported(const EngineCase& c, const RingSpec& r) {
     auto refuse = [&](const std::string& what) {
         throw std::invalid_argument(fmt::format("ring '{}': {} is not built for a ring contact yet", r.name, what));
     };
-    if (r.kind == RingKind::OilControl) refuse("the oil-control ring (its two lands' films)");
+    if (r.kind == RingKind::OilControl && !r.lands) refuse("an oil-control ring without its lands");
     if (c.lubricant.supply.model == OilSupplyModel::LinerLayer) refuse("a liner oil layer (lubricant.supply)");
     if (c.hasFlexibleBody()) refuse("a flexible piston or liner");
     return r;
@@ -41,26 +43,27 @@ const RingSpec& supported(const EngineCase& c, const RingSpec& r) {
 RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes)
     : ring_(supported(c, ring)),
       top_(top),
+      faces_(ring.lands ? 2 : 1),
       circumference_(std::numbers::pi * c.engine.bore),
       boundaryFriction_(c.contact.boundaryFriction),
       asperity_(asperityLaw(c, ring)),
       radial_(lube::RingFilm(faceProfile(ring), lube::Lubricant(c.lubricant.viscosity, c.lubricant.density), faceNodes,
                              c.lubricant.cavitationPressure),
-              asperity_, ring.tensionPerLength) {}
+              asperity_, ring.tensionPerLength / (ring.lands ? 2 : 1)) {}
 
 double RingContact::restingGap() const {
     // The asperity load falls as the gap grows: bisection between a gap that carries more than the
     // tension and one that carries less.
-    double lo = 1e-4 * asperity_.sigma(), hi = 10.0 * asperity_.sigma();
-    if (!(radial_.asperityLoad(lo) > ring_.tensionPerLength))
+    double lo = -RingRadialMotion::kDeepestGap * asperity_.sigma(), hi = 10.0 * asperity_.sigma();
+    if (!(faces_ * radial_.asperityLoad(lo) > ring_.tensionPerLength))
         throw std::invalid_argument(fmt::format(
-            "ring '{}': its asperities carry at most {:.4g} N/m (at a gap of 1e-4 sigma), less than its tension of "
+            "ring '{}': its asperities carry at most {:.4g} N/m (at a gap of -2 sigma), less than its tension of "
             "{:.4g} N/m: check contact.beta, contact.asperity_density, contact.composite_modulus and the ring's "
             "roughness and face",
-            ring_.name, radial_.asperityLoad(lo), ring_.tensionPerLength));
+            ring_.name, faces_ * radial_.asperityLoad(lo), ring_.tensionPerLength));
     for (int it = 0; it < 200 && hi - lo > 1e-12 * hi; ++it) {
         const double h = 0.5 * (lo + hi);
-        (radial_.asperityLoad(h) > ring_.tensionPerLength ? lo : hi) = h;
+        (faces_ * radial_.asperityLoad(h) > ring_.tensionPerLength ? lo : hi) = h;
     }
     return 0.5 * (lo + hi);
 }
@@ -99,11 +102,12 @@ void RingContact::evaluate(const ContactStep& step, const ContactState& now, con
     it.dhdt = Eigen::VectorXd::Constant(r.film.h.size(), r.squeezeRate);
     it.minGap = r.minimumGap;
     const double v = step.pistonVelocity;
-    const double hydro = circumference_ * r.film.friction;
-    const double boundary = -circumference_ * boundaryFriction_ * r.asperityLoad * (v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0);
+    const double perFace = faces_ * circumference_;
+    const double hydro = perFace * r.film.friction;
+    const double boundary = -perFace * boundaryFriction_ * r.asperityLoad * (v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0);
     it.loads.shearForce.z() = hydro;
     it.loads.boundaryFrictionForce.z() = boundary;
-    it.loads.contactLoad = circumference_ * r.asperityLoad;
+    it.loads.contactLoad = perFace * r.asperityLoad;
     it.loads.viscousDissipation = -hydro * v;
     it.loads.boundaryFrictionPower = -boundary * v;
     it.loads.minFilm = r.minimumGap;

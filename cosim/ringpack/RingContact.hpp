@@ -12,8 +12,10 @@
 // friction's moments cancel: it adds F_z to the piston's axial equation and nothing to the
 // lateral force or the tilt moment. The top ring has the cylinder's gauge pressure above its
 // face and behind it, the rings below the crankcase's (the lands' gas is not modelled here).
-// Rigid bodies, a flooded supply, compression and scraper rings; the constructor refuses the
-// rest naming what is missing.
+// The oil-control ring runs on its two lands, alike: each a barrel film carrying half its
+// tension at the same minimum gap (the groove between them at the crankcase's pressure), their
+// loads summed. Rigid bodies and a flooded supply; the constructor refuses the rest naming what
+// is missing.
 #include <optional>
 
 #include "cosim/case/EngineCase.hpp"
@@ -26,7 +28,7 @@ class RingContact final : public FilmContact {
 public:
     /// ring: its spec; top: the pack's top ring (the cylinder's pressure above and behind it);
     /// faceNodes: the film's nodes across the face. Throws std::invalid_argument for what is not
-    /// built (an oil-control ring, a liner oil layer, flexible bodies) or without asperity contact
+    /// built (a liner oil layer, flexible bodies) or without asperity contact
     /// (contact.composite_modulus 0: nothing would carry the ring at the dead centres).
     RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 101);
 
@@ -56,6 +58,7 @@ private:
 
     RingSpec ring_;
     bool top_;
+    int faces_;             // running faces: 1, or the oil-control ring's 2 lands
     double circumference_;  // πD (m)
     double boundaryFriction_;
     lube::GreenwoodTripp asperity_;

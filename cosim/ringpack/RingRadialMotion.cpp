@@ -1,5 +1,6 @@
 #include "cosim/ringpack/RingRadialMotion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -12,32 +13,61 @@ RingRadialMotion::RingRadialMotion(lube::RingFilm film, std::optional<lube::Gree
     : film_(std::move(film)), asperity_(std::move(asperity)), tension_(tension) {
     if (!(tension >= 0.0) || !std::isfinite(tension))
         throw std::invalid_argument("RingRadialMotion: the tension must be >= 0 N/m, got " + std::to_string(tension));
+    if (!asperity_) return;
+    // The asperity load and its slope on nodes every 0.01σ from −kDeepestGap σ to the law's end
+    // (8σ: beyond it no asperity touches), for the cubic Hermite interpolant of asperityLoad.
+    const double sigma = asperity_->sigma();
+    tableLow_ = -kDeepestGap * sigma;
+    tableStep_ = 0.01 * sigma;
+    const int n = static_cast<int>(std::lround((8.0 + kDeepestGap) / 0.01));
+    tableLoad_.resize(static_cast<std::size_t>(n) + 1);
+    tableSlope_.resize(tableLoad_.size());
+    for (int k = 0; k <= n; ++k) {
+        const double h = tableLow_ + k * tableStep_;
+        tableLoad_[static_cast<std::size_t>(k)] = faceIntegral(h, false);
+        tableSlope_[static_cast<std::size_t>(k)] = faceIntegral(h, true);
+    }
 }
 
-double RingRadialMotion::asperityLoad(double h) const {
-    if (!asperity_) return 0.0;
+double RingRadialMotion::filmFloor() const { return asperity_ ? kFilmFloor * asperity_->sigma() : 1e-10; }
+
+double RingRadialMotion::faceIntegral(double h, bool slope) const {
     const lube::RingFaceProfile& f = film_.profile();
     const int n = 400;  // trapezoids across the face
     const double dx = (f.upper() - f.lower()) / n;
     double w = 0.0;
     for (int i = 0; i <= n; ++i) {
-        const double x = f.lower() + i * dx;
-        w += (i == 0 || i == n ? 0.5 : 1.0) * asperity_->pressure(h + f.drop(x)) * dx;
+        const double g = h + f.drop(f.lower() + i * dx);
+        w += (i == 0 || i == n ? 0.5 : 1.0) * (slope ? asperity_->pressureSlope(g) : asperity_->pressure(g)) * dx;
     }
     return w;
 }
 
+double RingRadialMotion::asperityLoad(double h) const {
+    if (!asperity_) return 0.0;
+    const double t = (h - tableLow_) / tableStep_;
+    if (t < 0.0) return faceIntegral(h, false);
+    const auto k = static_cast<std::size_t>(t);
+    if (k + 1 >= tableLoad_.size()) return 0.0;
+    const double s = t - static_cast<double>(k), s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * tableLoad_[k] + (s3 - 2 * s2 + s) * tableStep_ * tableSlope_[k] +
+           (-2 * s3 + 3 * s2) * tableLoad_[k + 1] + (s3 - s2) * tableStep_ * tableSlope_[k + 1];
+}
+
 RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::RingFilmState& conditions,
                                       double backPressure) const {
-    if (!(gapNow > 0.0) || !(dt > 0.0))
-        throw std::invalid_argument("RingRadialMotion::step: the last gap and the step must be positive");
+    if (!std::isfinite(gapNow) || !(dt > 0.0) || (!asperity_ && !(gapNow > 0.0)))
+        throw std::invalid_argument("RingRadialMotion::step: the step must be positive and the last gap finite (positive "
+                                    "without asperities)");
     const double load = tension_ + backPressure * (film_.profile().upper() - film_.profile().lower());
     RingRadialStep s;
     // The resistance W_film + W_asperity − load at the trial gap h (falls as h grows).
+    // The film sees the gap down to its floor (the asperities' mean planes may come closer).
+    const double floor = filmFloor();
     auto excess = [&](double h) {
         lube::RingFilmState c = conditions;
-        c.minimumGap = h;
-        c.squeezeRate = (h - gapNow) / dt;
+        c.minimumGap = std::max(h, floor);
+        c.squeezeRate = (c.minimumGap - std::max(gapNow, floor)) / dt;
         s.film = film_.solve(c);
         s.minimumGap = h;
         s.squeezeRate = c.squeezeRate;
@@ -45,18 +75,42 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
         s.asperityLoad = asperityLoad(h);
         return s.filmLoad + s.asperityLoad - load;
     };
-    double lo = asperity_ ? 1e-4 * asperity_->sigma() : 1e-10, hi = 1e3 * gapNow;
-    double flo = excess(lo), fhi = excess(hi);
-    if (!(flo >= 0.0 && fhi <= 0.0))
-        throw std::runtime_error(fmt::format("RingRadialMotion: no radial balance of the ring between gaps {:.4g} and "
-                                             "{:.4g} m (load {:.4g} N/m)",
-                                             lo, hi, load));
-    // Bisection with a secant (regula falsi, Illinois) step: the bracket halves at worst.
+    // The bracket: from the last gap outwards in growing steps, within [lowest, highest].
+    const double lowest = asperity_ ? -kDeepestGap * asperity_->sigma() : floor;
+    const double highest = 1e3 * std::max(gapNow, floor);
+    const double scale = asperity_ ? asperity_->sigma() : std::max(gapNow, floor);
+    double lo = std::clamp(gapNow, lowest, highest), hi = lo;
+    double flo = excess(lo), fhi = flo;
+    for (double step = 0.01 * scale; flo < 0.0 || fhi > 0.0; step *= 4.0) {
+        const bool down = flo < 0.0;  // the balance lies below: too little resistance at lo
+        if ((down && lo <= lowest) || (!down && hi >= highest))
+            throw std::runtime_error(fmt::format("RingRadialMotion: no radial balance of the ring between gaps {:.4g} "
+                                                 "and {:.4g} m (load {:.4g} N/m)",
+                                                 lowest, highest, load));
+        if (down) {
+            hi = lo;
+            fhi = flo;
+            lo = std::max(lo - step, lowest);
+            flo = excess(lo);
+        } else {
+            lo = hi;
+            flo = fhi;
+            hi = std::min(hi + step, highest);
+            fhi = excess(hi);
+        }
+    }
+    if (flo == 0.0 || fhi == 0.0) {
+        excess(flo == 0.0 ? lo : hi);
+        return s;
+    }
+    // Regula falsi with the Illinois modification (superlinear), bisection where the secant
+    // leaves the bracket.
+    const double resolution = 1e-12 * std::max(scale, std::abs(hi));
     for (int it = 0; it < 200; ++it) {
         double h = hi - fhi * (hi - lo) / (fhi - flo);
-        if (!(h > lo && h < hi) || it % 3 == 2) h = 0.5 * (lo + hi);
+        if (!(h > lo && h < hi)) h = 0.5 * (lo + hi);
         const double f = excess(h);
-        if (std::abs(f) <= 1e-10 * load || hi - lo <= 1e-12 * hi) return s;
+        if (std::abs(f) <= 1e-10 * load || hi - lo <= resolution) return s;
         if (f > 0.0) {
             lo = h;
             flo = f;

@@ -181,11 +181,6 @@ std::vector<std::string> columnNames(const std::vector<ContactColumn>& columns) 
 }  // namespace
 
 CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<ContactBuilder>& contacts) {
-    if (!c.rings.empty())
-        throw std::runtime_error(fmt::format(
-            "{}: rings: the ring pack ({} rings) is read and checked, but the run does not simulate ring contacts yet "
-            "(docs/case-file.md, \"rings\"); remove the rings section to run the skirt alone",
-            c.path, c.rings.size()));
     const fem::Stopwatch total;
     const std::string dir = c.output.directory;
     std::filesystem::create_directories(dir);

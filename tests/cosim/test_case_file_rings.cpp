@@ -165,9 +165,11 @@ TEST(CaseFileRings, BadRingsAreRefusedNamingTheKey) {
                                                                HasSubstr("required with rings")));
 }
 
-TEST(CaseFileRings, TheRunRefusesARingPackItDoesNotSimulate) {
+TEST(CaseFileRings, TheRunRefusesRingsWhereTheirContactIsNotBuilt) {
     const fs::path dir = scratchDir();
-    const EngineCase c = readCaseFile(caseWith(dir));
-    EXPECT_THAT(errorOf([&] { runCase(c); }), AllOf(HasSubstr("rings"), HasSubstr("does not simulate ring contacts")));
-    EXPECT_FALSE(fs::exists(c.output.directory + "/summary.json"));
+    const EngineCase c = readCaseFile(caseWith(
+        dir, {{"rings:\n", "lubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: 3e-6}}\n"
+                             "rings:\n"}}));
+    EXPECT_THAT(errorOf([&] { runCase(c); }),
+                AllOf(StartsWith(c.path + ": rings[0]: ring 'top'"), HasSubstr("liner oil layer")));
 }

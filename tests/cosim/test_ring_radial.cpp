@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -71,12 +72,38 @@ TEST(RingRadialMotion, WithoutGasAndSlidingTheFilmSettlesOnTheAsperities) {
     EXPECT_NEAR(h / hStar, 1.0, 1e-5);
 }
 
+// The asperity load from its table against Simpson's rule of the Greenwood–Tripp pressure over
+// the face, between the table's nodes, from mean planes 2σ apart into each other to 8σ apart.
+TEST(RingRadialMotion, TheAsperityLoadTableFollowsTheLaw) {
+    const lube::RingFaceProfile face = lube::RingFaceProfile::barrel(1.5e-3, 5e-6, 0.1e-3);
+    const lube::GreenwoodTripp law(0.3e-6, 0.6e-3, 1.111e8, 49.1e9);
+    const RingRadialMotion ring(lube::RingFilm(face, lube::Lubricant(0.01), 51), law, 150.0);
+    double worst = 0.0;
+    for (double lambda = -1.996; lambda < 6.0; lambda += 0.0731) {
+        const double h = lambda * 0.3e-6;
+        const int n = 4000;
+        const double dx = (face.upper() - face.lower()) / n;
+        double w = 0.0;
+        for (int i = 0; i <= n; ++i)
+            w += (i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * law.pressure(h + face.drop(face.lower() + i * dx));
+        w *= dx / 3.0;
+        worst = std::max(worst, std::abs(ring.asperityLoad(h) / w - 1.0));
+    }
+    std::printf("largest relative difference of the tabulated asperity load %.3g\n", worst);
+    EXPECT_LT(worst, 1e-4);
+}
+
 TEST(RingRadialMotion, BadInputIsNamed) {
     const lube::RingFaceProfile face = lube::RingFaceProfile::barrel(1.5e-3, 5e-6);
     EXPECT_THROW(RingRadialMotion(lube::RingFilm(face, lube::Lubricant(0.01), 51), std::nullopt, -1.0),
                  std::invalid_argument);
     const RingRadialMotion ring(lube::RingFilm(face, lube::Lubricant(0.01), 51), std::nullopt, 100.0);
     EXPECT_THROW(ring.step(0.0, 1e-3, lube::RingFilmState{}, 0.0), std::invalid_argument);
+    // With asperities the mean planes may overlap (a gap below zero), but the gap must be a number.
+    const RingRadialMotion rough(lube::RingFilm(face, lube::Lubricant(0.01), 51),
+                                 lube::GreenwoodTripp(0.3e-6, 0.6e-3, 1.111e8, 49.1e9), 100.0);
+    EXPECT_THROW(rough.step(std::nan(""), 1e-3, lube::RingFilmState{}, 0.0), std::invalid_argument);
+    EXPECT_THROW(rough.step(1e-6, 0.0, lube::RingFilmState{}, 0.0), std::invalid_argument);
 }
 
 // The ring's travel across its groove under a constant lifting force from rest on the lower flank:

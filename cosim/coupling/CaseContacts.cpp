@@ -1,8 +1,13 @@
-#include "cosim/contact/CaseContacts.hpp"
+#include "cosim/coupling/CaseContacts.hpp"
 
 #include "cosim/contact/LinerOffsetRange.hpp"
 #include "cosim/contact/OilControlRingBand.hpp"
 #include "cosim/contact/SkirtContact.hpp"
+#include "cosim/ringpack/RingContact.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 
 namespace flexehd::cosim {
@@ -27,6 +32,14 @@ std::vector<std::unique_ptr<FilmContact>> caseContacts(const EngineCase& c, cons
         ring && skirt->linerFootprint() ? oilControlRing(*ring, *skirt, linerOffset) : nullptr;
     contacts.push_back(std::move(skirt));
     if (band) contacts.push_back(std::move(band));
+    // The ring pack, top ring first (the cylinder's pressure above and behind it).
+    for (std::size_t i = 0; i < c.rings.size(); ++i) {
+        try {
+            contacts.push_back(std::make_unique<RingContact>(c, c.rings[i], i == 0));
+        } catch (const std::invalid_argument& e) {
+            throw std::runtime_error(fmt::format("{}: rings[{}]: {}", c.path, i, e.what()));
+        }
+    }
     return contacts;
 }
 
