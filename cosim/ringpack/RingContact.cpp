@@ -75,7 +75,7 @@ ContactState RingContact::initialState(double linerOffset) const {
     return s;
 }
 
-const RingRadialStep& RingContact::radialStep(const ContactStep& step, double gapNow) {
+const RingRadialStep& RingContact::radialStep(const ContactStep& step, double gapNow, double guess) {
     const double pressure = top_ ? step.cylinderPressure : 0.0;
     const Cached key{gapNow, step.dt, step.pistonVelocity, pressure};
     if (cachedFor_ && cachedFor_->gapNow == key.gapNow && cachedFor_->dt == key.dt &&
@@ -86,16 +86,18 @@ const RingRadialStep& RingContact::radialStep(const ContactStep& step, double ga
     conditions.pressureAbove = pressure;
     conditions.pressureBelow = 0.0;
     cachedFor_.reset();  // a failed step leaves no stale result behind
-    cached_ = radial_.step(gapNow, step.dt, conditions, pressure);
+    cached_ = radial_.step(gapNow, step.dt, conditions, pressure, guess);
     cachedFor_ = key;
     return cached_;
 }
 
-void RingContact::evaluate(const ContactStep& step, const ContactState& now, const ContactState& /*before*/,
+void RingContact::evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
                            const Eigen::Vector2d& /*x*/, const Eigen::VectorXd& /*y*/, ContactIterate& it,
                            WorkTally& work) {
     const fem::Stopwatch t0;
-    const RingRadialStep& r = radialStep(step, now.minGap);
+    // The balance looked for from the last two gaps' linear extrapolation (steps of like size).
+    const double guess = std::isfinite(before.minGap) ? 2.0 * now.minGap - before.minGap : now.minGap;
+    const RingRadialStep& r = radialStep(step, now.minGap, guess);
     it = ContactIterate{};
     it.h = it.hRigid = it.hTotal = r.film.h;
     it.p = r.film.p;

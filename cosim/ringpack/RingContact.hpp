@@ -54,7 +54,7 @@ public:
 private:
     /// The radial step from h_min,n for the step's conditions; the last one is kept, since the
     /// ring's film does not depend on the master's unknowns and every pass of a step asks it again.
-    const RingRadialStep& radialStep(const ContactStep& step, double gapNow);
+    const RingRadialStep& radialStep(const ContactStep& step, double gapNow, double guess);
 
     RingSpec ring_;
     bool top_;

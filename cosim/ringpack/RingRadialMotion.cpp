@@ -55,7 +55,7 @@ double RingRadialMotion::asperityLoad(double h) const {
 }
 
 RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::RingFilmState& conditions,
-                                      double backPressure) const {
+                                      double backPressure, double guess) const {
     if (!std::isfinite(gapNow) || !(dt > 0.0) || (!asperity_ && !(gapNow > 0.0)))
         throw std::invalid_argument("RingRadialMotion::step: the step must be positive and the last gap finite (positive "
                                     "without asperities)");
@@ -75,13 +75,14 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
         s.asperityLoad = asperityLoad(h);
         return s.filmLoad + s.asperityLoad - load;
     };
-    // The bracket: from the last gap outwards in growing steps, within [lowest, highest].
+    // The bracket: from the guess (or the last gap) outwards in growing steps, within [lowest, highest].
     const double lowest = asperity_ ? -kDeepestGap * asperity_->sigma() : floor;
     const double highest = 1e3 * std::max(gapNow, floor);
     const double scale = asperity_ ? asperity_->sigma() : std::max(gapNow, floor);
-    double lo = std::clamp(gapNow, lowest, highest), hi = lo;
+    const bool guessed = std::isfinite(guess);
+    double lo = std::clamp(guessed ? guess : gapNow, lowest, highest), hi = lo;
     double flo = excess(lo), fhi = flo;
-    for (double step = 0.01 * scale; flo < 0.0 || fhi > 0.0; step *= 4.0) {
+    for (double step = (guessed ? 1e-3 : 1e-2) * scale; flo < 0.0 || fhi > 0.0; step *= 4.0) {
         const bool down = flo < 0.0;  // the balance lies below: too little resistance at lo
         if ((down && lo <= lowest) || (!down && hi >= highest))
             throw std::runtime_error(fmt::format("RingRadialMotion: no radial balance of the ring between gaps {:.4g} "

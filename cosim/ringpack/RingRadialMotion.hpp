@@ -11,6 +11,7 @@
 // lube::RingFilm, the asperity load by the Greenwood–Tripp law over its nodes). h_min is the
 // separation of the surfaces' mean planes: below zero the asperities carry what the film cannot
 // (down to −2σ); the film sees the gap down to a floor of 0.05σ (its minimum, not a result).
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -37,7 +38,9 @@ public:
     /// `conditions` (its gap and squeeze rate are the unknowns) and the gauge pressure behind the
     /// ring (Pa). Throws std::runtime_error when no balance exists between −2σ (without asperities
     /// the film's floor) and 1e3 h_min,n.
-    RingRadialStep step(double gapNow, double dt, const lube::RingFilmState& conditions, double backPressure) const;
+    /// guess: where to start looking for the balance (NaN: at h_min,n).
+    RingRadialStep step(double gapNow, double dt, const lube::RingFilmState& conditions, double backPressure,
+                        double guess = std::numeric_limits<double>::quiet_NaN()) const;
 
     /// The asperity load (N/m) at the minimum gap h (m): the Greenwood–Tripp pressure over the
     /// face (trapezoidal rule, 400 intervals), interpolated by cubic Hermite on its values and
