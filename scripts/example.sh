@@ -33,6 +33,10 @@ echo "== reducing the piston and the liner"
 
 echo "== HD: rigid piston and liner"
 "$flexehd" run "$root/examples/engine86/hd.yaml"
+echo "== HD with the ring pack (examples/engine86/rings.yaml)"
+"$flexehd" run "$root/examples/engine86/hd_rings.yaml"
+/usr/bin/python3 "$root/scripts/plot_results.py" "$out/hd_rings" --compare "$out/hd" \
+  --labels "HD with rings" "HD, skirt alone" --out "$out/plots_rings"
 echo "== EHD: flexible piston"
 "$flexehd" run "$root/examples/engine86/case.yaml"
 echo "== thermal state of piston and liner (templug calibration, thermal expansion)"
@@ -76,7 +80,7 @@ fi
 echo
 echo "Results: $out/{hd,ehd,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
 echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil) with the starved run's"
-echo "wear maps, $out/plots_oil_supply/;"
+echo "wear maps, $out/plots_oil_supply/; the ring pack's friction and films (HD) in $out/plots_rings/;"
 echo "temperatures and thermal expansion in $out/thermal/ (piston.vtu, liner.vtu)."
 echo "ParaView: open $out/ehd/film.pvd (film grid: pressure, film thickness, contact, shear) and"
 echo "$out/ehd/piston.pvd (Warp By Vector: 'displacement_m' with a scale of about 20, 'elastic_displacement_m' 100-200)."

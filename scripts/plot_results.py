@@ -351,6 +351,40 @@ def plot_oil(runs, out_dir):
                   ("oil_in_m3_per_s", 1e9, "oil into the films\nat their edges (mm³/s)")], height=8.5)
 
 
+def ring_names(sel):
+    """The rings of a run, from its ring_<name>_min_film_m columns, in column order."""
+    return [c[len("ring_"):-len("_min_film_m")] for c in sel
+            if c.startswith("ring_") and c.endswith("_min_film_m")]
+
+
+def plot_rings(runs, out_dir):
+    """Per run with a ring pack: the friction power of the skirt and of each ring, and each
+    ring's minimum film, over the crank angle."""
+    for label, sel, cycle, _ in runs:
+        rings = ring_names(sel)
+        if not rings:
+            continue
+        fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 6.5))
+        skirt = cycle_mean(sel, "dissipated_power_w")
+        axes[0].plot(sel["crank_deg"], sel["dissipated_power_w"], color=COLORS[0], lw=1.3,
+                     label=f"skirt (cycle mean {skirt:.2f} W)")
+        for k, ring in enumerate(rings, start=1):
+            color = COLORS[k % len(COLORS)]
+            column = f"ring_{ring}_friction_power_w"
+            axes[0].plot(sel["crank_deg"], sel[column], color=color, lw=1.1,
+                         label=f"{ring} (cycle mean {cycle_mean(sel, column):.2f} W)")
+            axes[1].plot(sel["crank_deg"], sel[f"ring_{ring}_min_film_m"] * 1e6, color=color, lw=1.1, label=ring)
+        axes[1].axhline(0.0, color="0.5", lw=0.6)
+        axes[0].set_ylabel("friction power (W)\ntaken from the piston")
+        axes[1].set_ylabel("ring minimum gap (µm)\n< 0: asperities overlap")
+        axes[0].set_title(f"Piston rings and skirt: {label}" + cycle_note([(label, sel, cycle, None)]), pad=14)
+        for ax in axes:
+            ax.legend(loc="best", fontsize=8)
+        decorate_crank_axis(axes)
+        fig.tight_layout()
+        save(fig, out_dir, f"rings_{safe_name(label)}.png")
+
+
 def cycle_note(runs):
     cycles = {f"{c}{note}" for _, _, (c, note), _ in runs}
     return f", cycle {cycles.pop()}" if len(cycles) == 1 else ", cycles " + ", ".join(
@@ -360,7 +394,7 @@ def cycle_note(runs):
 def main(argv=None):
     parser = argparse.ArgumentParser(
         description="Plot history.csv of flexehd results directories as PNG figures "
-                    "(secondary motion, friction, film).")
+                    "(secondary motion, friction, film, oil, the ring pack).")
     parser.add_argument("results", metavar="RESULTS_DIR", help="results directory of a run (holds history.csv)")
     parser.add_argument("--compare", metavar="OTHER_RESULTS_DIR", nargs="+", default=[],
                         help="results directories of further runs, overlaid (e.g. EHD against HD)")
@@ -390,6 +424,7 @@ def main(argv=None):
         plot_contact(runs, out_dir)
         plot_film(runs, out_dir)
         plot_oil(runs, out_dir)
+        plot_rings(runs, out_dir)
         for label, _, _, d in runs:
             plot_film_maps(label, d, out_dir)
     except (PlotError, OSError) as e:

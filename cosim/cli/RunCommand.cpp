@@ -35,16 +35,25 @@ cosim::EngineCase caseOf(const RunArgs& a) {
 
 void printResult(const cosim::CaseRunResult& r, const std::string& dir) {
     const nlohmann::json& doc = r.summary;
-    fmt::print("lateral {:+.1f} .. {:+.1f} um, tilt {:+.3f} .. {:+.3f} mrad, friction {:.1f} W mean (FMEP {:.3f} kPa), "
-               "min film {:.2f} um, {} cycle{}{} in {:.1f} s\nresults: {}\n",
+    fmt::print("lateral {:+.1f} .. {:+.1f} um, tilt {:+.3f} .. {:+.3f} mrad, {}friction {:.1f} W mean (FMEP {:.3f} kPa), "
+               "min film {:.2f} um, {} cycle{}{} in {:.1f} s\n",
                doc.value("lateral_min_m", 0.0) * 1e6, doc.value("lateral_max_m", 0.0) * 1e6,
                doc.value("tilt_min_rad", 0.0) * 1e3, doc.value("tilt_max_rad", 0.0) * 1e3,
-               doc.value("friction_power_mean_w", 0.0), doc.value("fmep_pa", 0.0) * 1e-3,
+               doc.contains("rings") ? "skirt " : "", doc.value("friction_power_mean_w", 0.0),
+               doc.value("fmep_pa", 0.0) * 1e-3,
                doc.value("min_film_m", 0.0) * 1e6, r.cycles, r.cycles == 1 ? "" : "s",
                r.cycles < 2  ? " (periodicity not checked: it needs two cycles)"
                : r.periodic ? " (periodic)"
                             : " (NOT periodic within the tolerance)",
-               r.seconds, dir);
+               r.seconds);
+    if (doc.contains("rings")) {  // the ring pack: each ring's friction and the assembly's FMEP
+        std::string rings;
+        for (const auto& [name, ring] : doc["rings"].items())
+            rings += fmt::format("{}{} {:.1f} W", rings.empty() ? "" : ", ", name,
+                                 ring.value("friction_power_mean_w", 0.0));
+        fmt::print("rings: {} mean; piston assembly FMEP {:.3f} kPa\n", rings, doc.value("fmep_total_pa", 0.0) * 1e-3);
+    }
+    fmt::print("results: {}\n", dir);
     if (doc.contains("cycle_to_cycle")) {  // not periodic: how much the cycles after the first differ
         const nlohmann::json& cc = doc["cycle_to_cycle"];
         const auto& cycles = cc["cycles"];

@@ -10,8 +10,10 @@
 namespace flexehd::cosim {
 
 /// How a cycle figure is formed from a column over the last cycle's records: its least or largest
-/// value, or its time mean (trapezoidal over the steps, as the skirt's mean friction power).
-enum class CycleStatistic { Minimum, Maximum, Mean };
+/// value, its time mean (trapezoidal over the steps, as the skirt's mean friction power), or — of
+/// a friction power column — its energy over the cycle per swept volume, the contact's friction
+/// mean effective pressure (summed with the skirt's into summary.json's `fmep_total_pa`).
+enum class CycleStatistic { Minimum, Maximum, Mean, Fmep };
 
 /// One figure of summary.json: its key (dotted for nested objects, with its unit, e.g.
 /// "band.friction_power_mean_w") and how it is formed.

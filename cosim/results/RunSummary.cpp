@@ -148,8 +148,13 @@ Json::json_pointer pointer(const std::string& dotted) {
     return Json::json_pointer(p);
 }
 
+// The cylinder's swept volume (m³).
+double sweptVolume(const EngineCase& c) {
+    return 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
+}
+
 // A figure of column k of the records' contact values over the cycle (at least two records).
-double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleStatistic statistic) {
+double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleStatistic statistic, double volume) {
     double least = cycle.front().contactValues[k], largest = least, integral = 0.0;
     for (std::size_t i = 1; i < cycle.size(); ++i) {
         const double v = cycle[i].contactValues[k];
@@ -162,20 +167,31 @@ double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleSt
         case CycleStatistic::Minimum: return least;
         case CycleStatistic::Maximum: return largest;
         case CycleStatistic::Mean: return duration > 0.0 ? integral / duration : cycle.front().contactValues[k];
+        case CycleStatistic::Fmep: return integral / volume;
     }
     return 0.0;
 }
 
-// The further contacts' figures (ContactColumns.hpp) of the last cycle, when it has two records.
+// The further contacts' figures (ContactColumns.hpp) of the last cycle, when it has two records;
+// with contacts' friction mean effective pressures, their sum with the skirt's as fmep_total_pa.
 void addContactFigures(const RunSummaryInput& in, Json& d) {
     if (in.cycle.size() < 2) return;
     const std::vector<ContactColumn> columns = in.sim.contactColumns();
+    const double volume = sweptVolume(in.c);
+    bool fmep = false;
+    double total = d.contains("fmep_pa") ? d["fmep_pa"].get<double>() : 0.0;
     for (std::size_t k = 0; k < columns.size(); ++k)
         for (const ColumnFigure& f : columns[k].figures) {
             if (d.contains(pointer(f.key)))
                 throw std::logic_error("summary.json: the contact figure '" + f.key + "' repeats a key");
-            d[pointer(f.key)] = columnFigure(in.cycle, k, f.statistic);
+            const double value = columnFigure(in.cycle, k, f.statistic, volume);
+            d[pointer(f.key)] = value;
+            if (f.statistic == CycleStatistic::Fmep) {
+                fmep = true;
+                total += value;
+            }
         }
+    if (fmep) d["fmep_total_pa"] = total;
 }
 
 // A run that did not become periodic: each cycle figure's mean, least, largest value and standard
@@ -212,8 +228,7 @@ nlohmann::json runSummary(const RunSummaryInput& in) {
     const SkirtContact& skirt = in.sim.contact<SkirtContact>();
     for (int i = 0; i < 3; ++i) s.centred[std::size_t(i)] = skirt.centredClearance(in.sim.linerOffset(crankDeg[i]));
     if (in.cycle.size() >= 2) {
-        const double volume = 0.25 * std::numbers::pi * in.c.engine.bore * in.c.engine.bore * in.c.engine.stroke;
-        s.m = cycleMetrics(in.cycle, in.sim.dynamics(), volume);
+        s.m = cycleMetrics(in.cycle, in.sim.dynamics(), sweptVolume(in.c));
     }
     Json d = Json::object();
     for (const Entry& e : entries()) {

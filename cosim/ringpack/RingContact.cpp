@@ -138,7 +138,8 @@ std::vector<ContactColumn> RingContact::columns() const {
     const std::string column = "ring_" + ring_.name + "_", figure = "rings." + ring_.name + ".";
     return {{column + "min_film_m", {{figure + "min_film_m", CycleStatistic::Minimum}}},
             {column + "friction_force_n", {}},
-            {column + "friction_power_w", {{figure + "friction_power_mean_w", CycleStatistic::Mean}}},
+            {column + "friction_power_w",
+             {{figure + "friction_power_mean_w", CycleStatistic::Mean}, {figure + "fmep_pa", CycleStatistic::Fmep}}},
             {column + "boundary_friction_power_w", {{figure + "boundary_friction_power_mean_w", CycleStatistic::Mean}}}};
 }
 

@@ -44,7 +44,7 @@ public:
 
     /// ring_<name>_min_film_m, _friction_force_n, _friction_power_w (the power the ring's friction
     /// takes from the piston, −F_z v_p), _boundary_friction_power_w; summary.json
-    /// rings.<name>.min_film_m and the powers' cycle means.
+    /// rings.<name>.min_film_m, the powers' cycle means and the ring's fmep_pa.
     std::vector<ContactColumn> columns() const override;
     void columnValues(const ContactIterate& it, std::vector<double>& values) const override;
 

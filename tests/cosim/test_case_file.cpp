@@ -226,6 +226,16 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     const EngineCase flooded = readCaseFile(source("examples/engine86/mass_conserving.yaml"), noBodyFiles());
     const EngineCase starved = readCaseFile(source("examples/engine86/starved.yaml"), noBodyFiles());
     const EngineCase starvedEhd = readCaseFile(source("examples/engine86/starved_ehd.yaml"), noBodyFiles());
+    const EngineCase rings = readCaseFile(source("examples/engine86/hd_rings.yaml"), noBodyFiles());
+    // The HD run with the ring pack: hd.yaml but for its rings and output.
+    EXPECT_EQ(rings.rings.size(), 3u);
+    EXPECT_TRUE(hd.rings.empty());
+    EXPECT_EQ(rings.piston.profile.size(), hd.piston.profile.size());
+    EXPECT_EQ(rings.contact.compositeModulus, hd.contact.compositeModulus);
+    EXPECT_EQ(rings.lubricant.viscosity, hd.lubricant.viscosity);
+    EXPECT_EQ(rings.cylinderPressureFile, hd.cylinderPressureFile);
+    EXPECT_EQ(rings.time.maxCycles, hd.time.maxCycles);
+    EXPECT_EQ(rings.grid.axialNodes, hd.grid.axialNodes);
     // The EHD run on the starved layer: case.yaml's bodies, starved.yaml's film and supply.
     EXPECT_EQ(starvedEhd.pistonBody.file, ehd.pistonBody.file);
     EXPECT_EQ(starvedEhd.pistonBody.model, BodyModel::Flexible);

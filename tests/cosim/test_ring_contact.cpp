@@ -9,6 +9,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -232,6 +233,10 @@ TEST(RingContact, TheExamplePackRunsWithTheExampleEngine) {
     // The film at the crank angle nearest each of these.
     std::map<int, std::map<std::string, double>> at;
     std::map<int, double> nearest;
+    std::map<std::string, double> energy;  // J: each ring's friction power over the cycle (trapezoidal)
+    double lastTime = 0.0;
+    std::map<std::string, double> lastPower;
+    bool first = true;
     const int angles[] = {0, 90, 180, 270, 450, 540, 630, 720};
     std::string line;
     while (std::getline(history, line)) {
@@ -241,6 +246,14 @@ TEST(RingContact, TheExamplePackRunsWithTheExampleEngine) {
         std::string cell;
         while (std::getline(l, cell, ',')) v.push_back(std::stod(cell));
         const double crank = v[static_cast<std::size_t>(column["crank_deg"])];
+        const double time = v[static_cast<std::size_t>(column["time_s"])];
+        for (const char* ring : {"top", "second", "oil_control"}) {
+            const double power = v[static_cast<std::size_t>(column[std::string("ring_") + ring + "_friction_power_w"])];
+            if (!first) energy[ring] += 0.5 * (power + lastPower[ring]) * (time - lastTime);
+            lastPower[ring] = power;
+        }
+        lastTime = time;
+        first = false;
         for (int a : angles)
             if (!nearest.count(a) || std::abs(crank - a) < nearest[a]) {
                 nearest[a] = std::abs(crank - a);
@@ -255,6 +268,20 @@ TEST(RingContact, TheExamplePackRunsWithTheExampleEngine) {
         for (int mid : {90, 270, 450, 630})
             for (int dead : {0, 180, 540, 720}) EXPECT_GT(at[mid][ring], at[dead][ring]) << ring << " " << mid << " " << dead;
     }
+    // The friction mean effective pressures: each ring's cycle energy over the swept volume, and
+    // the assembly's the skirt's and the rings' sum.
+    std::ifstream summaryFile(dir / "out" / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(summaryFile);
+    const double swept = 0.25 * std::numbers::pi * 0.086 * 0.086 * 0.086;
+    double total = summary["fmep_pa"].get<double>();
+    for (const char* ring : {"top", "second", "oil_control"}) {
+        const double fmep = summary["rings"][ring]["fmep_pa"].get<double>();
+        EXPECT_NEAR(fmep, energy[ring] / swept, 1e-6 * fmep) << ring;
+        total += fmep;
+    }
+    std::printf("FMEP: skirt %.0f Pa, assembly %.0f Pa\n", summary["fmep_pa"].get<double>(),
+                summary["fmep_total_pa"].get<double>());
+    EXPECT_NEAR(summary["fmep_total_pa"].get<double>(), total, 1e-9 * total);
     EXPECT_GT(at[270]["second"], 5.0 * at[90]["second"]);  // upstroke (compression) against downstroke (intake)
     EXPECT_GT(at[630]["second"], 5.0 * at[450]["second"]);
 }
