@@ -42,7 +42,9 @@ RingFilm::RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes, doub
     for (int i = 0; i < nodes; ++i) drop_[i] = profile_.drop(x_[i]);
 }
 
-RingFilmResult RingFilm::solve(const RingFilmState& s) const { return solveWith(s, 0.0, nullptr); }
+RingFilmResult RingFilm::solve(const RingFilmState& s, std::vector<char>* cavitated) const {
+    return solveWith(s, 0.0, nullptr, cavitated);
+}
 
 RingFilmResult RingFilm::step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction) const {
     if (std::isnan(s.supplyFilm))
@@ -53,7 +55,8 @@ RingFilmResult RingFilm::step(const RingFilmState& s, double dt, const Eigen::Ve
     return solveWith(s, dt, &previousFraction);
 }
 
-RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous) const {
+RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous,
+                                   std::vector<char>* cavitated) const {
     if (!(s.minimumGap > 0.0) || !std::isfinite(s.minimumGap))
         throw std::invalid_argument("RingFilm: the minimum gap must be positive, got " + std::to_string(s.minimumGap));
     if (!std::isfinite(s.slidingSpeed) || !std::isfinite(s.squeezeRate) || !std::isfinite(s.pressureBelow) ||
@@ -72,7 +75,7 @@ RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eige
     r.x = x_;
     r.h = drop_.array() + s.minimumGap;
     if (starved) solveStarved(s, dt, previous, r);
-    else solveFlooded(s, r);
+    else solveFlooded(s, r, cavitated);
     for (int i = 0; i + 1 < n; ++i) {  // trapezoids between nodes
         const double hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
         r.load += 0.5 * (r.p[i] + r.p[i + 1]) * dx;
@@ -123,7 +126,7 @@ void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::Vect
     r.inflow = res.boundaryFlow.sum() / circumference;
 }
 
-void RingFilm::solveFlooded(const RingFilmState& s, RingFilmResult& r) const {
+void RingFilm::solveFlooded(const RingFilmState& s, RingFilmResult& r, std::vector<char>* cavitated) const {
     const int n = static_cast<int>(x_.size());
     const double eta = lubricant_.referenceViscosity(), dx = x_[1] - x_[0];
     // Faces f = i + ½: conductance c_f = h_f³/(12 η Δx), Couette flux (U/2) h_f; node i's balance
@@ -136,8 +139,11 @@ void RingFilm::solveFlooded(const RingFilmState& s, RingFilmResult& r) const {
     }
     const double pLow = std::max(s.pressureBelow, pcav_), pHigh = std::max(s.pressureAbove, pcav_);
     // Primal–dual active set: nodes held at p_cav where the free solution falls below it; released
-    // where the balance asks for more pressure than p_cav. The partition settles in a few passes.
-    std::vector<char> held(static_cast<std::size_t>(n), 0);
+    // where the balance asks for more pressure than p_cav. The partition settles in a few passes,
+    // from none held or from the caller's last one (the same solution: the problem's is unique).
+    std::vector<char> own;
+    std::vector<char>& held = cavitated ? *cavitated : own;
+    if (held.size() != static_cast<std::size_t>(n)) held.assign(static_cast<std::size_t>(n), 0);
     std::vector<double> a(static_cast<std::size_t>(n)), b(static_cast<std::size_t>(n)), up(static_cast<std::size_t>(n)),
         rhs(static_cast<std::size_t>(n)), p(static_cast<std::size_t>(n));
     auto balance = [&](int i, const std::vector<double>& pv) {  // A p − b at node i

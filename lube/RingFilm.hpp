@@ -51,8 +51,10 @@ public:
     RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes = 201, double cavitationPressure = 0.0);
 
     /// Throws std::invalid_argument on a non-positive gap or non-finite input, std::runtime_error
-    /// when the film solve fails.
-    RingFilmResult solve(const RingFilmState& s) const;
+    /// when the film solve fails. cavitated (flooded film): the nodes held at the cavitation
+    /// pressure, the solve's start where it has one flag per node (e.g. the last solve's) and its
+    /// outcome on return — the solution is the same, found in fewer passes from a near one.
+    RingFilmResult solve(const RingFilmState& s, std::vector<char>* cavitated = nullptr) const;
     /// Mass-conserving (s.supplyFilm given): one backward-Euler step of dt (s) of the film's
     /// content from the last step's film fraction across the face (its gap h_min − dt ḣ_min):
     /// the oil's change is dt × the edges' inflow.
@@ -63,8 +65,9 @@ public:
 private:
     /// The film's pressure and fraction for a given supply (JFO on a grid across the face).
     void solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous, RingFilmResult& r) const;
-    RingFilmResult solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous) const;
-    void solveFlooded(const RingFilmState& s, RingFilmResult& r) const;
+    RingFilmResult solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous,
+                             std::vector<char>* cavitated = nullptr) const;
+    void solveFlooded(const RingFilmState& s, RingFilmResult& r, std::vector<char>* cavitated) const;
 
     RingFaceProfile profile_;
     Lubricant lubricant_;

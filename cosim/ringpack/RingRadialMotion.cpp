@@ -64,11 +64,12 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
     // The resistance W_film + W_asperity − load at the trial gap h (falls as h grows).
     // The film sees the gap down to its floor (the asperities' mean planes may come closer).
     const double floor = filmFloor();
+    std::vector<char> cavitated;  // each trial's film starts from the last trial's cavitated set
     auto excess = [&](double h) {
         lube::RingFilmState c = conditions;
         c.minimumGap = std::max(h, floor);
         c.squeezeRate = (c.minimumGap - std::max(gapNow, floor)) / dt;
-        s.film = film_.solve(c);
+        s.film = film_.solve(c, &cavitated);
         s.minimumGap = h;
         s.squeezeRate = c.squeezeRate;
         s.filmLoad = s.film.load;

@@ -216,6 +216,33 @@ TEST(RingFilm, FloodedClosingStepIsTheReynoldsFilm) {
     EXPECT_NEAR(jfo.load, reynolds.load, 1e-9 * reynolds.load);
 }
 
+// A warm start of the cavitated set (a near one, or a wrong one) leads to the same film as a
+// cold start: the discrete complementarity problem has one solution.
+TEST(RingFilm, TheCavitatedSetsWarmStartGivesTheSameFilm) {
+    const RingFilm film(RingFaceProfile::barrel(1.15e-3, 8e-6), Lubricant(0.01), 101);
+    RingFilmState s;
+    s.minimumGap = 0.5e-6;
+    s.slidingSpeed = 8.0;
+    s.pressureAbove = 2e5;
+    const RingFilmResult cold = film.solve(s);
+    std::vector<char> near;
+    RingFilmState other = s;
+    other.minimumGap = 0.55e-6;
+    film.solve(other, &near);  // the set of a nearby film
+    std::vector<char> wrong(101, 1);  // every node held
+    for (std::vector<char>* start : {&near, &wrong}) {
+        const RingFilmResult warm = film.solve(s, start);
+        EXPECT_LE((warm.p - cold.p).cwiseAbs().maxCoeff(), 1e-9 * cold.p.cwiseAbs().maxCoeff());
+        EXPECT_NEAR(warm.load, cold.load, 1e-12 * cold.load);
+        EXPECT_NEAR(warm.friction, cold.friction, 1e-12 * std::abs(cold.friction));
+        int held = 0;
+        for (int i = 0; i < 101; ++i) held += (*start)[static_cast<std::size_t>(i)];
+        EXPECT_GT(held, 0);  // the film cavitates past its rupture
+        for (int i = 1; i + 1 < 101; ++i)
+            EXPECT_EQ((*start)[static_cast<std::size_t>(i)] != 0, cold.p[i] <= 0.0) << i;
+    }
+}
+
 TEST(RingFilm, FaceProfilesAndBadInput) {
     const RingFaceProfile barrel = RingFaceProfile::barrel(1.5e-3, 6e-6, 0.15e-3);
     EXPECT_DOUBLE_EQ(barrel.drop(0.15e-3), 0.0);
