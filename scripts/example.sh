@@ -39,6 +39,10 @@ echo "== HD with the ring pack (examples/engine86/rings.yaml)"
   --labels "HD with rings" "HD, skirt alone" --out "$out/plots_rings"
 echo "== EHD: flexible piston"
 "$flexehd" run "$root/examples/engine86/case.yaml"
+echo "== EHD with the ring pack"
+"$flexehd" run "$root/examples/engine86/ehd_rings.yaml"
+/usr/bin/python3 "$root/scripts/plot_results.py" "$out/ehd_rings" --compare "$out/ehd" \
+  --labels "EHD with rings" "EHD, skirt alone" --out "$out/plots_rings_ehd"
 echo "== thermal state of piston and liner (templug calibration, thermal expansion)"
 "$flexehd" thermal "$root/examples/engine86/thermal.yaml" | tail -n 4
 echo "== HD with the thermal state: cold clearance 75 um, hot running clearance 20-40 um"
@@ -80,7 +84,8 @@ fi
 echo
 echo "Results: $out/{hd,ehd,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
 echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil) with the starved run's"
-echo "wear maps, $out/plots_oil_supply/; the ring pack's friction and films (HD) in $out/plots_rings/;"
+echo "wear maps, $out/plots_oil_supply/; the ring pack's friction and films in $out/plots_rings/ (HD) and"
+echo "$out/plots_rings_ehd/ (EHD);"
 echo "temperatures and thermal expansion in $out/thermal/ (piston.vtu, liner.vtu)."
 echo "ParaView: open $out/ehd/film.pvd (film grid: pressure, film thickness, contact, shear) and"
 echo "$out/ehd/piston.pvd (Warp By Vector: 'displacement_m' with a scale of about 20, 'elastic_displacement_m' 100-200)."

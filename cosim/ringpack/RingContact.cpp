@@ -34,7 +34,7 @@ const RingSpec& supported(const EngineCase& c, const RingSpec& r) {
     };
     if (r.kind == RingKind::OilControl && !r.lands) refuse("an oil-control ring without its lands");
     if (c.lubricant.supply.model == OilSupplyModel::LinerLayer) refuse("a liner oil layer (lubricant.supply)");
-    if (c.hasFlexibleBody()) refuse("a flexible piston or liner");
+    if (c.linerBody.model == BodyModel::Flexible) refuse("a flexible liner (the rings' pressure on its modes)");
     return r;
 }
 

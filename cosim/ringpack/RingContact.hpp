@@ -14,8 +14,8 @@
 // face and behind it, the rings below the crankcase's (the lands' gas is not modelled here).
 // The oil-control ring runs on its two lands, alike: each a barrel film carrying half its
 // tension at the same minimum gap (the groove between them at the crankcase's pressure), their
-// loads summed. Rigid bodies and a flooded supply; the constructor refuses the rest naming what
-// is missing.
+// loads summed. A flooded supply, a rigid or flexible piston (the rings' groove loads do not
+// enter its modes) and a rigid liner; the constructor refuses the rest naming what is missing.
 #include <optional>
 
 #include "cosim/case/EngineCase.hpp"
@@ -28,7 +28,7 @@ class RingContact final : public FilmContact {
 public:
     /// ring: its spec; top: the pack's top ring (the cylinder's pressure above and behind it);
     /// faceNodes: the film's nodes across the face. Throws std::invalid_argument for what is not
-    /// built (a liner oil layer, flexible bodies) or without asperity contact
+    /// built (a liner oil layer, a flexible liner) or without asperity contact
     /// (contact.composite_modulus 0: nothing would carry the ring at the dead centres).
     RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 101);
 

@@ -236,6 +236,12 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     EXPECT_EQ(rings.cylinderPressureFile, hd.cylinderPressureFile);
     EXPECT_EQ(rings.time.maxCycles, hd.time.maxCycles);
     EXPECT_EQ(rings.grid.axialNodes, hd.grid.axialNodes);
+    const EngineCase ehdRings = readCaseFile(source("examples/engine86/ehd_rings.yaml"), noBodyFiles());
+    EXPECT_EQ(ehdRings.rings.size(), 3u);
+    EXPECT_EQ(ehdRings.pistonBody.file, ehd.pistonBody.file);
+    EXPECT_EQ(ehdRings.pistonBody.model, BodyModel::Flexible);
+    EXPECT_EQ(ehdRings.grid.axialNodes, ehd.grid.axialNodes);
+    EXPECT_EQ(ehdRings.piston.profile.size(), ehd.piston.profile.size());
     // The EHD run on the starved layer: case.yaml's bodies, starved.yaml's film and supply.
     EXPECT_EQ(starvedEhd.pistonBody.file, ehd.pistonBody.file);
     EXPECT_EQ(starvedEhd.pistonBody.model, BodyModel::Flexible);
