@@ -32,8 +32,8 @@ void tridiagonalSolve(const std::vector<double>& a, const std::vector<double>& b
 
 }  // namespace
 
-RingFilm::RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes, double cavitationPressure)
-    : profile_(std::move(profile)), lubricant_(lubricant), pcav_(cavitationPressure) {
+RingFilm::RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes, double cavitationPressure, double roughness)
+    : profile_(std::move(profile)), lubricant_(lubricant), pcav_(cavitationPressure), shear_(roughness) {
     if (nodes < 5) throw std::invalid_argument("RingFilm: at least 5 nodes across the face, got " + std::to_string(nodes));
     if (lubricant_.pressureDependent())
         throw std::invalid_argument("RingFilm: a constant-property lubricant only (no pressure-dependent viscosity)");
@@ -76,6 +76,9 @@ RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eige
     r.h = drop_.array() + s.minimumGap;
     if (starved) solveStarved(s, dt, previous, r);
     else solveFlooded(s, r, cavitated);
+    // The Couette shear sees the nominal gap (the film's may be floored): Patir & Cheng's factor
+    // φ_f(h/σ)/h of the rough surfaces (docs/lube.md §5), 1/h when smooth.
+    const double nominal = std::isnan(s.nominalGap) ? s.minimumGap : s.nominalGap;
     for (int i = 0; i + 1 < n; ++i) {  // trapezoids between nodes
         const double hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
         r.load += 0.5 * (r.p[i] + r.p[i + 1]) * dx;
@@ -83,7 +86,9 @@ RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eige
         // Reynolds condition cavitates both nodes), and the Poiseuille flow.
         const bool cavitated = !starved && r.p[i] <= pcav_ && r.p[i + 1] <= pcav_;
         const double phi = cavitated ? 0.0 : 0.5 * (r.fraction[i] + r.fraction[i + 1]);
-        r.friction += (phi * eta * s.slidingSpeed / hm - 0.5 * hm * dpdx) * dx;
+        double couette = 0.0, slope = 0.0;
+        shear_.couette(nominal + 0.5 * (drop_[i] + drop_[i + 1]), couette, slope);
+        r.friction += (phi * eta * s.slidingSpeed * couette - 0.5 * hm * dpdx) * dx;
     }
     return r;
 }

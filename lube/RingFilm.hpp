@@ -20,6 +20,7 @@
 
 #include "lube/Lubricant.hpp"
 #include "lube/RingFaceProfile.hpp"
+#include "lube/ShearStressFactor.hpp"
 
 namespace flexehd::lube {
 
@@ -34,6 +35,9 @@ struct RingFilmState {
     /// layer's flux U t, the film fraction φ < 1 where the film is partial; steady (solve) or a
     /// backward-Euler step of its content from the last step's film fraction (step).
     double supplyFilm = std::numeric_limits<double>::quiet_NaN();
+    /// The minimum gap the Couette shear sees (m; NaN: minimumGap): the separation of the rough
+    /// surfaces' mean planes where the film is solved at a floor above it (≤ 0: they overlap).
+    double nominalGap = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RingFilmResult {
@@ -47,8 +51,11 @@ struct RingFilmResult {
 
 class RingFilm {
 public:
-    /// nodes across the face (≥ 5); a constant-property lubricant (its reference viscosity).
-    RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes = 201, double cavitationPressure = 0.0);
+    /// nodes across the face (≥ 5); a constant-property lubricant (its reference viscosity);
+    /// roughness: the composite rms σ of face and liner for the Couette shear's stress factor
+    /// (lube::ShearStressFactor; 0: smooth surfaces).
+    RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes = 201, double cavitationPressure = 0.0,
+             double roughness = 0.0);
 
     /// Throws std::invalid_argument on a non-positive gap or non-finite input, std::runtime_error
     /// when the film solve fails. cavitated (flooded film): the nodes held at the cavitation
@@ -72,6 +79,7 @@ private:
     RingFaceProfile profile_;
     Lubricant lubricant_;
     double pcav_;
+    ShearStressFactor shear_;
     Eigen::VectorXd x_, drop_;  // per node
 };
 

@@ -48,7 +48,7 @@ RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, in
       boundaryFriction_(c.contact.boundaryFriction),
       asperity_(asperityLaw(c, ring)),
       radial_(lube::RingFilm(faceProfile(ring), lube::Lubricant(c.lubricant.viscosity, c.lubricant.density), faceNodes,
-                             c.lubricant.cavitationPressure),
+                             c.lubricant.cavitationPressure, ring.roughness),
               asperity_, ring.tensionPerLength / (ring.lands ? 2 : 1)) {}
 
 double RingContact::restingGap() const {

@@ -68,6 +68,7 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
     auto excess = [&](double h) {
         lube::RingFilmState c = conditions;
         c.minimumGap = std::max(h, floor);
+        c.nominalGap = h;
         c.squeezeRate = (c.minimumGap - std::max(gapNow, floor)) / dt;
         s.film = film_.solve(c, &cavitated);
         s.minimumGap = h;

@@ -243,6 +243,40 @@ TEST(RingFilm, TheCavitatedSetsWarmStartGivesTheSameFilm) {
     }
 }
 
+// The Couette shear between rough surfaces (Patir & Cheng's factor, docs/lube.md §5) on a flat
+// face, where the film carries no pressure: the friction per unit circumference is η U b φ_f(H)/h
+// at the nominal gap, whatever floor the film is solved at, and where the mean planes overlap
+// the factor's limit at h → 0. (The cavitation pressure below the edges' keeps the parallel
+// film whole: at p = p_cav the Reynolds condition counts a film cavitated.)
+TEST(RingFilm, TheRoughCouetteShearFollowsTheNominalGapNotTheFloor) {
+    const double b = 1e-3, sigma = 0.4e-6, eta = 0.01, U = 5.0, pcav = -0.5e5;
+    const RingFilm film(RingFaceProfile::table({{-0.5 * b, 0.0}, {0.5 * b, 0.0}}), Lubricant(eta), 21, pcav, sigma);
+    auto friction = [&](double nominal, double floor) {
+        RingFilmState s;
+        s.minimumGap = floor;
+        s.nominalGap = nominal;
+        s.slidingSpeed = U;
+        return film.solve(s).friction;
+    };
+    for (double H : {0.5, 1.5, 4.0}) {
+        double phi = 0.0, slope = 0.0;
+        ShearStressFactor::ofFilmParameter(H, phi, slope);
+        const double expected = eta * U * b * phi / (H * sigma);
+        EXPECT_NEAR(friction(H * sigma, 0.05 * sigma), expected, 1e-8 * expected) << H;
+        EXPECT_NEAR(friction(H * sigma, 0.2 * sigma), expected, 1e-8 * expected) << H;
+    }
+    double phi = 0.0, slope = 0.0;
+    ShearStressFactor::ofFilmParameter(1e-7, phi, slope);
+    const double touching = eta * U * b * phi / (1e-7 * sigma);
+    EXPECT_NEAR(friction(-0.3 * sigma, 0.05 * sigma), touching, 1e-4 * touching);
+    // Smooth surfaces: η U b / h.
+    const RingFilm smooth(RingFaceProfile::table({{-0.5 * b, 0.0}, {0.5 * b, 0.0}}), Lubricant(eta), 21, pcav);
+    RingFilmState s;
+    s.minimumGap = 1e-6;
+    s.slidingSpeed = U;
+    EXPECT_NEAR(smooth.solve(s).friction, eta * U * b / 1e-6, 1e-12 * eta * U * b / 1e-6);
+}
+
 TEST(RingFilm, FaceProfilesAndBadInput) {
     const RingFaceProfile barrel = RingFaceProfile::barrel(1.5e-3, 6e-6, 0.15e-3);
     EXPECT_DOUBLE_EQ(barrel.drop(0.15e-3), 0.0);
