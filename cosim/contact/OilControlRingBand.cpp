@@ -74,7 +74,7 @@ ContactState OilControlRingBand::accepted(const ContactStep& step, const Contact
 }
 
 std::vector<ContactColumn> OilControlRingBand::columns() const {
-    return {{"oil_control_ring_drain_m3_per_s", {{"oil_control_ring.drain_mean_m3_per_s", CycleStatistic::Mean}}}};
+    return {{"oil_control_ring_drain_m3_per_s", {{kDrainFigure, CycleStatistic::Mean}}}};
 }
 
 void OilControlRingBand::columnValues(const ContactIterate& it, std::vector<double>& values) const {

@@ -31,6 +31,8 @@ public:
     /// oil_control_ring_drain_m3_per_s: the net flow the ring returns to the crankcase (what it
     /// scrapes less what it lays down; < 0: it lays down more than it meets).
     std::vector<ContactColumn> columns() const override;
+    /// Its summary.json figure: the drain's cycle mean (m³/s).
+    static constexpr const char* kDrainFigure = "oil_control_ring.drain_mean_m3_per_s";
     void columnValues(const ContactIterate& it, std::vector<double>& values) const override;
 
     bool carriesOil() const override { return true; }

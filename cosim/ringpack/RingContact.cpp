@@ -1,5 +1,6 @@
 #include "cosim/ringpack/RingContact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -134,13 +135,27 @@ ContactState RingContact::accepted(const ContactStep& step, const ContactState& 
     return s;
 }
 
+const std::vector<std::string>& RingContact::figureNames() {
+    static const std::vector<std::string> names{"min_film_m", "friction_power_mean_w", "fmep_pa",
+                                                "boundary_friction_power_mean_w"};
+    return names;
+}
+
+bool RingContact::isFigureKey(const std::string& key) {
+    const std::string prefix = "rings.";
+    const auto dot = key.find('.', prefix.size());
+    if (key.rfind(prefix, 0) != 0 || dot == std::string::npos || dot == prefix.size()) return false;
+    const std::string figure = key.substr(dot + 1);
+    return std::find(figureNames().begin(), figureNames().end(), figure) != figureNames().end();
+}
+
 std::vector<ContactColumn> RingContact::columns() const {
     const std::string column = "ring_" + ring_.name + "_", figure = "rings." + ring_.name + ".";
-    return {{column + "min_film_m", {{figure + "min_film_m", CycleStatistic::Minimum}}},
+    const std::vector<std::string>& f = figureNames();
+    return {{column + "min_film_m", {{figure + f[0], CycleStatistic::Minimum}}},
             {column + "friction_force_n", {}},
-            {column + "friction_power_w",
-             {{figure + "friction_power_mean_w", CycleStatistic::Mean}, {figure + "fmep_pa", CycleStatistic::Fmep}}},
-            {column + "boundary_friction_power_w", {{figure + "boundary_friction_power_mean_w", CycleStatistic::Mean}}}};
+            {column + "friction_power_w", {{figure + f[1], CycleStatistic::Mean}, {figure + f[2], CycleStatistic::Fmep}}},
+            {column + "boundary_friction_power_w", {{figure + f[3], CycleStatistic::Mean}}}};
 }
 
 void RingContact::columnValues(const ContactIterate& it, std::vector<double>& values) const {

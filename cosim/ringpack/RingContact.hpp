@@ -17,6 +17,8 @@
 // loads summed. A flooded supply, a rigid or flexible piston (the rings' groove loads do not
 // enter its modes) and a rigid liner; the constructor refuses the rest naming what is missing.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
@@ -50,6 +52,11 @@ public:
 
     /// The minimum gap (m) where the asperities alone carry the ring's tension (the ring at rest).
     double restingGap() const;
+
+    /// The summary.json figures of every ring, under rings.<name>.<figure>.
+    static const std::vector<std::string>& figureNames();
+    /// Whether `key` names a ring's figure: rings.<name>.<one of figureNames()>.
+    static bool isFigureKey(const std::string& key);
 
 private:
     /// The radial step from h_min,n for the step's conditions; the last one is kept, since the

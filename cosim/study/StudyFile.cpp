@@ -1,5 +1,7 @@
 #include "cosim/study/StudyFile.hpp"
+#include "cosim/contact/OilControlRingBand.hpp"
 #include "cosim/results/RunSummary.hpp"
+#include "cosim/ringpack/RingContact.hpp"
 #include "cosim/io/YamlKeys.hpp"
 #include "cosim/io/YamlSection.hpp"
 
@@ -268,8 +270,15 @@ Study readStudyFile(const std::string& path, const std::string& directoryOverrid
         for (const auto& o : top["outputs"]) {
             const std::string k = r.text(o, "outputs");
             const std::vector<std::string>& keys = runSummaryKeys();
-            if (std::find(keys.begin(), keys.end(), k) == keys.end())
-                r.fail("outputs", o, "'" + k + "' is not a summary.json key; valid: " + joined(keys));
+            // The contacts' figures: the ring pack's (rings.<name>.<figure>, fmep_total_pa) and the
+            // oil-control ring band's.
+            const bool contactFigure =
+                RingContact::isFigureKey(k) || k == "fmep_total_pa" || k == OilControlRingBand::kDrainFigure;
+            if (!contactFigure && std::find(keys.begin(), keys.end(), k) == keys.end())
+                r.fail("outputs", o,
+                       "'" + k + "' is not a summary.json key; valid: " + joined(keys) +
+                           ", fmep_total_pa, " + OilControlRingBand::kDrainFigure +
+                           " and rings.<name>.<figure> with a figure of " + joined(RingContact::figureNames()));
             s.outputs.push_back(k);
         }
     } else {

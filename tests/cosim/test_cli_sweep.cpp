@@ -143,6 +143,21 @@ TEST(StudyFile, FullFactorialListsAndRanges) {
     EXPECT_THAT(c, HasSubstr("cylinder_pressure: " + kSource + "/examples/engine86/cylinder_pressure.csv"));
 }
 
+// The contacts' figures are outputs a study can collect: the rings', the assembly's FMEP, the
+// oil-control band's drain; a misspelt figure is refused naming the valid ones.
+TEST(StudyFile, ContactFiguresAreOutputs) {
+    TempDir t("contact_outputs");
+    const auto s = flexehd::cosim::readStudyFile(writeStudy(
+        t.path, "parameters:\n  engine.pin_offset: [0.0]\noutputs: [fmep_pa, fmep_total_pa, rings.top.fmep_pa, "
+                "rings.oil_control.min_film_m, oil_control_ring.drain_mean_m3_per_s]\n"));
+    EXPECT_EQ(s.outputs.size(), 5u);
+    EXPECT_THAT(studyError(t.path, "parameters:\n  engine.pin_offset: [0.0]\noutputs: [rings.top.fmep]\n"),
+                AllOf(HasSubstr("'rings.top.fmep' is not a summary.json key"), HasSubstr("fmep_total_pa"),
+                      HasSubstr("boundary_friction_power_mean_w")));
+    EXPECT_THAT(studyError(t.path, "parameters:\n  engine.pin_offset: [0.0]\noutputs: [rings..fmep_pa]\n"),
+                HasSubstr("is not a summary.json key"));
+}
+
 // A ring-pack file named relative to the study is found from the variant's case, written elsewhere.
 TEST(StudyFile, ARingPackFileIsFoundFromTheVariantsCase) {
     TempDir t("rings");
