@@ -82,7 +82,7 @@ if [[ "${FLEXEHD_EXAMPLE_STARVED_EHD:-0}" == 1 ]]; then
   echo "$out/plots_starved_ehd/."
 fi
 echo
-echo "Results: $out/{hd,ehd,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
+echo "Results: $out/{hd,hd_rings,ehd,ehd_rings,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
 echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil) with the starved run's"
 echo "wear maps, $out/plots_oil_supply/; the ring pack's friction and films in $out/plots_rings/ (HD) and"
 echo "$out/plots_rings_ehd/ (EHD);"
