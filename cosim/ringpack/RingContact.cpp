@@ -29,6 +29,17 @@ lube::GreenwoodTripp asperityLaw(const EngineCase& c, const RingSpec& r) {
     return lube::GreenwoodTripp(r.roughness, c.contact.beta, c.contact.asperityDensity, c.contact.compositeModulus);
 }
 
+// The film's nodes across the face: 101 (a barrel's parabola), and on a tabulated face at least 8
+// per shortest table interval (its edge rounding or chamfer, where a taper face runs).
+int nodesAcross(const RingSpec& r, int faceNodes) {
+    if (faceNodes > 0) return faceNodes;
+    if (r.face.table.empty()) return 101;
+    double shortest = r.height;
+    for (std::size_t k = 1; k < r.face.table.size(); ++k)
+        shortest = std::min(shortest, r.face.table[k].first - r.face.table[k - 1].first);
+    return std::max(101, static_cast<int>(std::ceil(8.0 * r.height / shortest)) + 1);
+}
+
 const RingSpec& supported(const EngineCase& c, const RingSpec& r) {
     auto refuse = [&](const std::string& what) {
         throw std::invalid_argument(fmt::format("ring '{}': {} is not built for a ring contact yet", r.name, what));
@@ -48,7 +59,8 @@ RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, in
       circumference_(std::numbers::pi * c.engine.bore),
       boundaryFriction_(c.contact.boundaryFriction),
       asperity_(asperityLaw(c, ring)),
-      radial_(lube::RingFilm(faceProfile(ring), lube::Lubricant(c.lubricant.viscosity, c.lubricant.density), faceNodes,
+      radial_(lube::RingFilm(faceProfile(ring), lube::Lubricant(c.lubricant.viscosity, c.lubricant.density),
+                             nodesAcross(ring, faceNodes),
                              c.lubricant.cavitationPressure, ring.roughness),
               asperity_, ring.tensionPerLength / (ring.lands ? 2 : 1)) {}
 

@@ -29,10 +29,11 @@ namespace flexehd::cosim {
 class RingContact final : public FilmContact {
 public:
     /// ring: its spec; top: the pack's top ring (the cylinder's pressure above and behind it);
-    /// faceNodes: the film's nodes across the face. Throws std::invalid_argument for what is not
+    /// faceNodes: the film's nodes across the face (0: 101 on a barrel face, on a tabulated one at
+    /// least 8 per its shortest interval: docs/ring-pack.md). Throws std::invalid_argument for what is not
     /// built (a liner oil layer, a flexible liner) or without asperity contact
     /// (contact.composite_modulus 0: nothing would carry the ring at the dead centres).
-    RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 101);
+    RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 0);
 
     ContactState initialState(double linerOffset) const override;
     void evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
