@@ -1,5 +1,7 @@
 #include "cosim/results/CycleMetrics.hpp"
 
+#include <numbers>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -47,6 +49,10 @@ CycleMetrics cycleMetrics(const std::vector<StepRecord>& c, const PistonDynamics
     m.fmep = m.frictionEnergy / volume;
     m.meanIterations = double(iterations) / double(c.size());
     return m;
+}
+
+double sweptVolume(const EngineSpec& engine) {
+    return 0.25 * std::numbers::pi * engine.bore * engine.bore * engine.stroke;
 }
 
 }  // namespace flexehd::cosim

@@ -33,5 +33,7 @@ struct CycleMetrics {
 
 /// Throws std::invalid_argument for fewer than two records. displacedVolume = π B² S / 4 (m³).
 CycleMetrics cycleMetrics(const std::vector<StepRecord>& cycle, const PistonDynamics& dynamics, double displacedVolume);
+/// The cylinder's swept volume π/4 D² s (m³): friction energy over it is the FMEP.
+double sweptVolume(const EngineSpec& engine);
 
 }  // namespace flexehd::cosim

@@ -1,12 +1,11 @@
 // CycleSeries: every completed cycle's figures (docs/results-format.md, `cycle_to_cycle`).
 #include "cosim/results/CycleSeries.hpp"
 
-#include <numbers>
 
 namespace flexehd::cosim {
 
 CycleSeries::CycleSeries(const EngineCase& c, const PistonDynamics& dynamics)
-    : dynamics_(dynamics), displacedVolume_(0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke) {}
+    : dynamics_(dynamics), displacedVolume_(sweptVolume(c.engine)) {}
 
 void CycleSeries::cycleEnded(const CycleEnd& end) {
     if (!end.records || end.records->size() < 2) return;

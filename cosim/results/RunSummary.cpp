@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <optional>
 #include <stdexcept>
 
@@ -148,11 +147,6 @@ Json::json_pointer pointer(const std::string& dotted) {
     return Json::json_pointer(p);
 }
 
-// The cylinder's swept volume (m³).
-double sweptVolume(const EngineCase& c) {
-    return 0.25 * std::numbers::pi * c.engine.bore * c.engine.bore * c.engine.stroke;
-}
-
 // A figure of column k of the records' contact values over the cycle (at least two records).
 double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleStatistic statistic, double volume) {
     double least = cycle.front().contactValues[k], largest = least, integral = 0.0;
@@ -177,7 +171,7 @@ double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleSt
 void addContactFigures(const RunSummaryInput& in, Json& d) {
     if (in.cycle.size() < 2) return;
     const std::vector<ContactColumn> columns = in.sim.contactColumns();
-    const double volume = sweptVolume(in.c);
+    const double volume = sweptVolume(in.c.engine);
     bool fmep = false;
     double total = d.contains("fmep_pa") ? d["fmep_pa"].get<double>() : 0.0;
     for (std::size_t k = 0; k < columns.size(); ++k)
@@ -228,7 +222,7 @@ nlohmann::json runSummary(const RunSummaryInput& in) {
     const SkirtContact& skirt = in.sim.contact<SkirtContact>();
     for (int i = 0; i < 3; ++i) s.centred[std::size_t(i)] = skirt.centredClearance(in.sim.linerOffset(crankDeg[i]));
     if (in.cycle.size() >= 2) {
-        s.m = cycleMetrics(in.cycle, in.sim.dynamics(), sweptVolume(in.c));
+        s.m = cycleMetrics(in.cycle, in.sim.dynamics(), sweptVolume(in.c.engine));
     }
     Json d = Json::object();
     for (const Entry& e : entries()) {

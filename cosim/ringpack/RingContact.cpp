@@ -62,7 +62,7 @@ RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, in
       radial_(lube::RingFilm(faceProfile(ring), lube::Lubricant(c.lubricant.viscosity, c.lubricant.density),
                              nodesAcross(ring, faceNodes),
                              c.lubricant.cavitationPressure, ring.roughness),
-              asperity_, ring.tensionPerLength / (ring.lands ? 2 : 1)) {}
+              asperity_, ring.tensionPerLength / faces_) {}
 
 double RingContact::restingGap() const {
     // The asperity load falls as the gap grows: bisection between a gap that carries more than the
@@ -91,9 +91,7 @@ ContactState RingContact::initialState(double linerOffset) const {
 const RingRadialStep& RingContact::radialStep(const ContactStep& step, double gapNow, double guess) {
     const double pressure = top_ ? step.cylinderPressure : 0.0;
     const Cached key{gapNow, step.dt, step.pistonVelocity, pressure};
-    if (cachedFor_ && cachedFor_->gapNow == key.gapNow && cachedFor_->dt == key.dt &&
-        cachedFor_->velocity == key.velocity && cachedFor_->pressure == key.pressure)
-        return cached_;
+    if (cachedFor_ == key) return cached_;
     lube::RingFilmState conditions;
     conditions.slidingSpeed = -step.pistonVelocity;  // the liner relative to the ring, + towards the crown
     conditions.pressureAbove = pressure;

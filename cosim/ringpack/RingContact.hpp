@@ -73,6 +73,7 @@ private:
     RingRadialMotion radial_;
     struct Cached {
         double gapNow, dt, velocity, pressure;
+        bool operator==(const Cached&) const = default;
     };
     std::optional<Cached> cachedFor_;
     RingRadialStep cached_;
