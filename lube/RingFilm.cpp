@@ -1,18 +1,13 @@
 #include "lube/RingFilm.hpp"
 
-#include "lube/FilmGrid.hpp"
-#include "lube/JfoSolver.hpp"
-
+#include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
 namespace flexehd::lube {
 
 namespace {
-
-constexpr int kColumns = 3;  // θ columns of the mass-conserving film's grid (the solution does not depend on θ)
 
 // x = A⁻¹ d for the tridiagonal A (sub a, diagonal b, super c), by the Thomas algorithm.
 void tridiagonalSolve(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c,
@@ -28,6 +23,131 @@ void tridiagonalSolve(const std::vector<double>& a, const std::vector<double>& b
         d[i] = (d[i] - a[i] * d[i - 1]) / m;
     }
     for (std::size_t i = n - 1; i-- > 0;) d[i] -= cp[i] * d[i + 1];
+}
+
+// The mass balance of an inner node i of the mass-conserving film (the scheme of JfoSolver,
+// docs/lube.md §3b, in one dimension):
+//   F = D p_i − c₋ p_{i−1} − c₊ p_{i+1} + B φ_i − a₋ φ_{i−1} − a₊ φ_{i+1} − S = 0,
+// c± the faces' conductances, D = c₋ + c₊; the Couette flux of a face carried by its upwind
+// node's film fraction: B the outflow coefficients plus the storage Δx h/Δt, a± the inflow ones;
+// S the oil the node held, Δx φₙ hₙ/Δt (a step; 0 steady).
+struct JfoRow {
+    double cm, cp, am, ap, D, B, S;
+};
+
+// The row from its faces' conductances and Couette coefficients (U/2) h_f (below: face i − ½,
+// above: i + ½), the storage and the oil held.
+JfoRow jfoRow(double cBelow, double cAbove, double qBelow, double qAbove, double storage, double held) {
+    JfoRow w{cBelow, cAbove, 0.0, 0.0, cBelow + cAbove, storage, held};
+    if (-qBelow > 0.0) w.B += -qBelow;  // flow out through the face below
+    else w.am = qBelow;
+    if (qAbove > 0.0) w.B += qAbove;
+    else w.ap = -qAbove;
+    return w;
+}
+
+// The pressure of each cavitated node's gas (Jeng, ASLE Trans. 35 (1992) 707, starved ring
+// films: the partial film before the meniscus is at the leading side's gas pressure, after the
+// rupture at the trailing side's): a cavitated node below the full film's pressure peak is at the
+// lower edge's pressure, one above it at the upper edge's (neither below p_cav, the edges' values
+// p[0], p[n − 1]); with no full node the lower half at the lower edge's, the upper half at the
+// upper edge's. peak: the last solution's highest full node (−1: none yet, the full nodes' middle).
+void gasPressures(const std::vector<char>& cav, const Eigen::VectorXd& p, int peak, std::vector<double>& gas) {
+    const int n = static_cast<int>(cav.size());
+    if (peak < 0) {
+        int lo = n - 1, hi = 0;
+        for (int i = 1; i + 1 < n; ++i)
+            if (!cav[static_cast<std::size_t>(i)]) lo = std::min(lo, i), hi = std::max(hi, i);
+        peak = lo <= hi ? (lo + hi) / 2 : n / 2;
+    }
+    for (int i = 0; i < n; ++i) gas[static_cast<std::size_t>(i)] = i < peak ? p[0] : p[n - 1];
+}
+
+// The partition full film (unknown p, φ = 1) / cavitated (unknown φ, p = its gas pressure,
+// gasPressures) of the inner nodes, solved and updated until it settles (a primal–dual active
+// set, as JfoSolver's): full nodes with p below their gas pressure become cavitated (where an
+// outflow or storage can carry a partial film, B > 0), cavitated ones with φ > 1 full. Between
+// two cavitated nodes no pressure flow: the gas moves, not the oil. p and φ hold the edges'
+// pressures and fractions and receive the inner nodes'; cav the start (per node) and the outcome.
+// A partition's matrix is diagonally dominant by columns (a full node's column: Σ c against its
+// neighbours' −c; a cavitated node's: B against the −a of its outflow), so the Thomas algorithm
+// needs no interchanges and its growth is bounded (Higham, Accuracy and Stability of Numerical
+// Algorithms, 2nd ed., Thm 9.9).
+constexpr int kPeakPasses = 8;  // passes over which the gas pressures follow the pressure peak
+
+void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::VectorXd& p, Eigen::VectorXd& phi,
+                        std::vector<char>& cav) {
+    const int m = static_cast<int>(rows.size()), n = m + 2;
+    cav.front() = cav.back() = 0;
+    for (int i = 1; i <= m; ++i) {
+        const auto si = static_cast<std::size_t>(i);
+        cav[si] = cav[si] && rows[si - 1].B > 0.0;
+    }
+    const auto size = static_cast<std::size_t>(m);
+    std::vector<double> dl(size), dd(size), du(size), y(size);  // row k's sub, diagonal, super; rhs
+    std::vector<double> gas(static_cast<std::size_t>(n));
+    int peak = -1;  // the last pass's highest full node
+    const int passes = 4 * n;
+    for (int pass = 0; pass < passes; ++pass) {
+        gasPressures(cav, p, peak, gas);
+        for (int k = 0; k < m; ++k) {
+            const auto sk = static_cast<std::size_t>(k);
+            const JfoRow& w = rows[sk];
+            const int i = k + 1;
+            const auto si = static_cast<std::size_t>(i);
+            const bool c = cav[si];
+            const bool cavBelow = i > 1 && cav[si - 1], cavAbove = i < m && cav[si + 1];
+            dd[sk] = c ? w.B : w.D;
+            // p_i = its gas pressure (its pressure flow only through faces to full nodes and the
+            // edges), or φ_i = 1.
+            double known = c ? (w.D - (cavBelow ? w.cm : 0.0) - (cavAbove ? w.cp : 0.0)) * gas[si] : w.B;
+            if (i == 1) known -= w.cm * p[0] + w.am * phi[0];
+            else if (cavBelow) dl[sk] = -w.am, known -= c ? 0.0 : w.cm * gas[si - 1];
+            else dl[sk] = -w.cm, known -= w.am;
+            if (i == m) known -= w.cp * p[n - 1] + w.ap * phi[n - 1];
+            else if (cavAbove) du[sk] = -w.ap, known -= c ? 0.0 : w.cp * gas[si + 1];
+            else du[sk] = -w.cp, known -= w.ap;
+            y[sk] = w.S - known;
+        }
+        tridiagonalSolve(dl, dd, du, y);
+        for (double v : y)
+            if (!std::isfinite(v))
+                throw std::runtime_error("RingFilm: the mass-conserving film's balance is singular (pass " +
+                                         std::to_string(pass + 1) + ")");
+        bool changed = false;
+        // The peak follows the solution over the first passes, then stays (the partition's
+        // update with its gas pressures fixed settles like JfoSolver's).
+        const int lastPeak = peak;
+        if (pass < kPeakPasses) {
+            peak = -1;
+            for (int i = 1; i <= m; ++i)
+                if (!cav[static_cast<std::size_t>(i)] && (peak < 0 || y[static_cast<std::size_t>(i) - 1] > p[peak])) {
+                    p[i] = y[static_cast<std::size_t>(i) - 1];
+                    peak = i;
+                }
+            if (peak < 0) peak = n / 2;
+            changed = pass > 0 && peak != lastPeak;
+        }
+        for (int i = 1; i <= m; ++i) {
+            const auto si = static_cast<std::size_t>(i);
+            const double v = y[si - 1];
+            if (cav[si]) {
+                p[i] = gas[si], phi[i] = v;
+                if (v > 1.0) cav[si] = 0, changed = true;
+            } else {
+                p[i] = v, phi[i] = 1.0;
+                if (v < gas[si] && rows[si - 1].B > 0.0) cav[si] = 1, changed = true;
+            }
+        }
+        if (!changed) {  // settled: the balances hold to round-off; the bounds as JfoSolver clips them
+            for (int i = 1; i <= m; ++i)
+                p[i] = std::max(p[i], cav[static_cast<std::size_t>(i)] ? gas[static_cast<std::size_t>(i)] : pcav),
+                phi[i] = std::clamp(phi[i], 0.0, 1.0);
+            return;
+        }
+    }
+    throw std::runtime_error("RingFilm: the mass-conserving film's full/cavitated partition did not settle in " +
+                             std::to_string(passes) + " passes");
 }
 
 }  // namespace
@@ -46,13 +166,14 @@ RingFilmResult RingFilm::solve(const RingFilmState& s, std::vector<char>* cavita
     return solveWith(s, 0.0, nullptr, cavitated);
 }
 
-RingFilmResult RingFilm::step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction) const {
+RingFilmResult RingFilm::step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction,
+                             std::vector<char>* cavitated) const {
     if (std::isnan(s.supplyFilm))
         throw std::invalid_argument("RingFilm::step: a step of the film's content needs the supply film (mass-conserving)");
     if (!(dt > 0.0) || previousFraction.size() != x_.size())
         throw std::invalid_argument("RingFilm::step: a positive step and the previous film fraction on the " +
                                     std::to_string(x_.size()) + " nodes expected");
-    return solveWith(s, dt, &previousFraction);
+    return solveWith(s, dt, &previousFraction, cavitated);
 }
 
 RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous,
@@ -74,7 +195,7 @@ RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eige
     RingFilmResult r;
     r.x = x_;
     r.h = drop_.array() + s.minimumGap;
-    if (starved) solveStarved(s, dt, previous, r);
+    if (starved) solveStarved(s, dt, previous, r, cavitated);
     else solveFlooded(s, r, cavitated);
     // The Couette shear sees the nominal gap (the film's may be floored): Patir & Cheng's factor
     // φ_f(h/σ)/h of the rough surfaces (docs/lube.md §5), 1/h when smooth.
@@ -93,42 +214,49 @@ RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eige
     return r;
 }
 
-void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous,
-                            RingFilmResult& r) const {
+void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous, RingFilmResult& r,
+                            std::vector<char>* cavitated) const {
     const int n = static_cast<int>(x_.size());
-    FilmGrid g = FilmGrid::fullCircumference(1.0, std::vector<double>(x_.data(), x_.data() + n), kColumns);
-    g.setEdge(Edge::AxialLow, EdgeCondition::Pressure, std::max(s.pressureBelow, pcav_));
-    g.setEdge(Edge::AxialHigh, EdgeCondition::Pressure, std::max(s.pressureAbove, pcav_));
-    JfoOptions o;
-    o.method = JfoMethod::ActiveSet;
-    o.cavitationPressure = pcav_;
-    o.control.tolerance = 1e-12;
-    JfoSolver jfo(g, lubricant_, o);
-    FilmState f;
-    f.h.resize(g.size());
-    for (int k = 0; k < g.size(); ++k) f.h[k] = r.h[g.axialIndex(k)];
-    f.outer.axial = s.slidingSpeed;
+    const double eta = lubricant_.referenceViscosity();
     // The leading edge (where the liner comes from) takes in the layer's flux U t: its inlet
-    // fraction makes the Couette inflow (|U|/2) h_f φ_in carry it.
+    // fraction makes the Couette inflow (|U|/2) h_f φ_in carry it; the other edge's is 1.
     const int lead = s.slidingSpeed >= 0.0 ? 0 : n - 1, next = lead == 0 ? 1 : n - 2;
-    const double hf = 0.5 * (r.h[lead] + r.h[next]);
-    for (int j = 0; j < kColumns; ++j) jfo.setInletFraction(g.index(lead, j), std::min(1.0, 2.0 * s.supplyFilm / hf));
-    JfoState before;
-    if (previous) {  // the face moved by dt ḣ_min over the step
-        before.h = f.h.array() - dt * s.squeezeRate;
-        before.fraction.resize(g.size());
-        for (int k = 0; k < g.size(); ++k) before.fraction[k] = (*previous)[g.axialIndex(k)];
-    }
-    const JfoResult res = jfo.solve(f, previous ? dt : 0.0, previous ? &before : nullptr);
+    const double inlet = std::min(1.0, 2.0 * s.supplyFilm / (0.5 * (r.h[lead] + r.h[next])));
     r.p.resize(n);
     r.fraction.resize(n);
-    for (int i = 0; i < n; ++i) {
-        r.p[i] = res.pressure[g.index(i, 0)];
-        r.fraction[i] = res.fraction[g.index(i, 0)];
+    r.p[0] = std::max(s.pressureBelow, pcav_);
+    r.p[n - 1] = std::max(s.pressureAbove, pcav_);
+    r.fraction[0] = lead == 0 ? inlet : 1.0;
+    r.fraction[n - 1] = lead == n - 1 ? inlet : 1.0;
+    // Faces f = i + ½: conductance h_f³/(12 η Δx_f) and Couette coefficient (U/2) h_f.
+    std::vector<double> c(static_cast<std::size_t>(n - 1)), q(static_cast<std::size_t>(n - 1));
+    for (int f = 0; f + 1 < n; ++f) {
+        const double hf = 0.5 * (r.h[f] + r.h[f + 1]);
+        c[static_cast<std::size_t>(f)] = hf * hf * hf / (12.0 * eta * (x_[f + 1] - x_[f]));
+        q[static_cast<std::size_t>(f)] = 0.5 * s.slidingSpeed * hf;
     }
-    const double circumference = 2.0 * std::numbers::pi * g.radius();
-    r.oil = jfo.oilVolume(f, res.fraction) / circumference;
-    r.inflow = res.boundaryFlow.sum() / circumference;
+    // The balance of each inner node (docs/lube.md §3b); a step's content term with the face's
+    // last gap h_min − Δt ḣ_min.
+    std::vector<JfoRow> rows(static_cast<std::size_t>(n - 2));
+    for (int i = 1; i + 1 < n; ++i) {
+        const double width = 0.5 * (x_[i + 1] - x_[i - 1]);
+        const double storage = previous ? width * r.h[i] / dt : 0.0;
+        const double before = previous ? width * (*previous)[i] * (r.h[i] - dt * s.squeezeRate) / dt : 0.0;
+        const auto f = static_cast<std::size_t>(i);  // the face above node i
+        rows[f - 1] = jfoRow(c[f - 1], c[f], q[f - 1], q[f], storage, before);
+    }
+    std::vector<char> own;
+    std::vector<char>& cav = cavitated ? *cavitated : own;
+    if (cav.size() != static_cast<std::size_t>(n)) cav.assign(static_cast<std::size_t>(n), 0);
+    settleJfoPartition(rows, pcav_, r.p, r.fraction, cav);
+    r.oil = 0.0;
+    for (int i = 1; i + 1 < n; ++i) r.oil += 0.5 * (x_[i + 1] - x_[i - 1]) * r.fraction[i] * r.h[i];
+    // The edges' flows into the film with the scheme's face fluxes (Couette flux upwinded).
+    const double qLow = q.front(), qHigh = q.back();
+    r.inflowLow = c.front() * (r.p[0] - r.p[1]) + qLow * (qLow > 0.0 ? r.fraction[0] : r.fraction[1]);
+    r.inflowHigh =
+        -(c.back() * (r.p[n - 2] - r.p[n - 1]) + qHigh * (qHigh > 0.0 ? r.fraction[n - 2] : r.fraction[n - 1]));
+    r.inflow = r.inflowLow + r.inflowHigh;
 }
 
 void RingFilm::solveFlooded(const RingFilmState& s, RingFilmResult& r, std::vector<char>* cavitated) const {

@@ -6,13 +6,14 @@
 //   d/dx (h³/(12η) dp/dx) = (U/2) dh/dx + ∂h/∂t,   h(x) = h_min + drop(x),   p ≥ p_cav,
 //
 // U the liner's axial speed relative to the ring (positive towards the crown) and ∂h/∂t the
-// ring's radial squeeze rate (the whole face moves with h_min). Flooded, or fed by the liner's
-// oil layer: then mass-conserving (JFO, lube::JfoSolver's active set on a grid across the face,
-// steady: the squeeze rate must be 0). Flooded, discretised by finite volumes on
-// uniform nodes across the face (the conductances and Couette fluxes of ReynoldsSystem, in one
-// dimension), the complementarity problem solved by a primal–dual active set on the tridiagonal
-// system (a direct solve per partition); the load and the friction are per unit length of the
-// ring's circumference.
+// ring's radial squeeze rate (the whole face moves with h_min). Finite volumes on uniform nodes
+// across the face (the conductances and Couette fluxes of ReynoldsSystem, in one dimension); the
+// load and the friction are per unit length of the ring's circumference. Flooded: the Reynolds
+// condition, the complementarity problem solved by a primal–dual active set on the tridiagonal
+// system (a direct solve per partition). Fed by the liner's oil layer: mass-conserving (JFO, the
+// scheme of lube::JfoSolver in one dimension: the Couette flux carried by the upwind node's film
+// fraction), its full-film / cavitated partition solved the same way (a tridiagonal solve per
+// partition); steady (the squeeze rate must be 0) or a backward-Euler step.
 #include <Eigen/Core>
 
 #include <limits>
@@ -45,6 +46,9 @@ struct RingFilmResult {
     Eigen::VectorXd fraction; ///< film fraction φ across the face (1 with the Reynolds condition)
     double oil = 0.0;         ///< mass-conserving: the film's oil ∫ φ h dx per unit circumference (m²)
     double inflow = 0.0;      ///< mass-conserving: net flow into the film at its edges per unit circumference (m²/s)
+    /// mass-conserving: the flow into the film per unit circumference (m²/s, + into the film)
+    /// through the lower edge (x = profile.lower()) and the upper one; inflow is their sum
+    double inflowLow = 0.0, inflowHigh = 0.0;
     double load = 0.0;        ///< ∫ p dx: the film's radial force per unit circumference (N/m)
     double friction = 0.0;    ///< the film's axial shear force on the ring per unit circumference (N/m)
 };
@@ -58,20 +62,24 @@ public:
              double roughness = 0.0);
 
     /// Throws std::invalid_argument on a non-positive gap or non-finite input, std::runtime_error
-    /// when the film solve fails. cavitated (flooded film): the nodes held at the cavitation
-    /// pressure, the solve's start where it has one flag per node (e.g. the last solve's) and its
-    /// outcome on return — the solution is the same, found in fewer passes from a near one.
+    /// when the film solve fails. cavitated: the nodes held at the cavitation pressure (flooded
+    /// film), or cavitated with a partial film (mass-conserving), the solve's start where it has
+    /// one flag per node (e.g. the last solve's; else none) and its outcome on return — the
+    /// solution is the same, found in fewer passes from a near one.
     RingFilmResult solve(const RingFilmState& s, std::vector<char>* cavitated = nullptr) const;
     /// Mass-conserving (s.supplyFilm given): one backward-Euler step of dt (s) of the film's
     /// content from the last step's film fraction across the face (its gap h_min − dt ḣ_min):
-    /// the oil's change is dt × the edges' inflow.
-    RingFilmResult step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction) const;
+    /// the oil's change is dt × the edges' inflow. cavitated: as for solve.
+    RingFilmResult step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction,
+                        std::vector<char>* cavitated = nullptr) const;
 
     const RingFaceProfile& profile() const { return profile_; }
 
 private:
-    /// The film's pressure and fraction for a given supply (JFO on a grid across the face).
-    void solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous, RingFilmResult& r) const;
+    /// The film's pressure and fraction for a given supply (JFO across the face), its oil and the
+    /// edges' inflows.
+    void solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous, RingFilmResult& r,
+                      std::vector<char>* cavitated) const;
     RingFilmResult solveWith(const RingFilmState& s, double dt, const Eigen::VectorXd* previous,
                              std::vector<char>* cavitated = nullptr) const;
     void solveFlooded(const RingFilmState& s, RingFilmResult& r, std::vector<char>* cavitated) const;

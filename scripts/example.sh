@@ -4,7 +4,8 @@
 # at 1000 rpm, fully flooded): reduce the piston (and the liner) from meshes/, run the piston's
 # secondary motion with rigid bodies (HD) and with the flexible piston (EHD) until the cycle is
 # periodic, compute the thermal state (flexehd thermal) and run HD with it, run HD with the
-# mass-conserving film flooded and starved (a 3 um liner oil layer), and plot the comparisons
+# mass-conserving film flooded and starved (a 3 um liner oil layer), with the ring pack flooded
+# and on that layer, and plot the comparisons
 # (like the seed's Fig. 5; flooded vs starved). Results in out/engine86/.
 # FLEXEHD_EXAMPLE_LINER=1 also runs the flexible piston + flexible liner case;
 # FLEXEHD_EXAMPLE_RIGID_RATE=1 also EHD with the rigid film thickness's rate only in the squeeze
@@ -71,6 +72,10 @@ echo "== HD with the mass-conserving film: flooded, and on a 3 um liner oil laye
 /usr/bin/python3 "$root/scripts/plot_results.py" "$out/mass_conserving" --compare "$out/starved" "$out/hd" \
   --labels "flooded" "starved (3 um layer)" "flooded, Reynolds condition" --out "$out/plots_oil_supply"
 /usr/bin/python3 "$root/scripts/plot_wear.py" "$out/starved" --log 3 --out "$out/plots_oil_supply"
+echo "== HD with the ring pack on the 3 um liner oil layer (starved rings)"
+"$flexehd" run "$root/examples/engine86/starved_rings.yaml"
+/usr/bin/python3 "$root/scripts/plot_results.py" "$out/starved_rings" --compare "$out/hd_rings" "$out/starved" \
+  --labels "rings on the 3 um layer" "rings, flooded" "skirt alone on the layer" --out "$out/plots_rings_starved"
 if [[ "${FLEXEHD_EXAMPLE_STARVED_EHD:-0}" == 1 ]]; then
   echo "== EHD with the mass-conserving film on the 3 um liner oil layer (flexible piston, starved)"
   "$flexehd" run "$root/examples/engine86/starved_ehd.yaml"
@@ -82,10 +87,10 @@ if [[ "${FLEXEHD_EXAMPLE_STARVED_EHD:-0}" == 1 ]]; then
   echo "$out/plots_starved_ehd/."
 fi
 echo
-echo "Results: $out/{hd,hd_rings,ehd,ehd_rings,thermal_hd,mass_conserving,starved}/history.csv and summary.json; plots in"
+echo "Results: $out/{hd,hd_rings,ehd,ehd_rings,thermal_hd,mass_conserving,starved,starved_rings}/history.csv and summary.json; plots in"
 echo "$out/plots/ and, flooded against starved (friction, minimum film, lateral motion, oil) with the starved run's"
 echo "wear maps, $out/plots_oil_supply/; the ring pack's friction and films in $out/plots_rings/ (HD) and"
-echo "$out/plots_rings_ehd/ (EHD);"
+echo "$out/plots_rings_ehd/ (EHD), on the starved layer in $out/plots_rings_starved/;"
 echo "temperatures and thermal expansion in $out/thermal/ (piston.vtu, liner.vtu)."
 echo "ParaView: open $out/ehd/film.pvd (film grid: pressure, film thickness, contact, shear) and"
 echo "$out/ehd/piston.pvd (Warp By Vector: 'displacement_m' with a scale of about 20, 'elastic_displacement_m' 100-200)."

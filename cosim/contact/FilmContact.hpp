@@ -79,6 +79,7 @@ struct ContactIterate {
     Eigen::VectorXd inflowLow, inflowHigh;   ///< m³/s per grid column into the film through its lower / upper edge
     double sideInflow = 0.0;                 ///< m³/s into the film at its sides (< 0: leakage)
     double oilVolume = 0.0;                  ///< m³, oil in the film, Σ V φ h
+    double layerLeft = 0.0;  ///< m, a ring on the liner's layer: the layer it leaves behind (outflow / |U|)
 };
 
 /// The change of a contact's loads with the modal coordinates y at an iterate, affine in the

@@ -225,7 +225,12 @@ ContactState SkirtContact::accepted(const ContactStep& step, const ContactState&
 
 LinerCover SkirtContact::linerCover(double linerOffset) const {
     const lube::FilmGrid& g = film_.grid();
-    return {linerOffset + g.z(0), linerOffset + g.z(g.nAxial() - 1)};
+    if (!panelColumns_) {  // the columns the skirt's panels reach: it covers the liner there only
+        auto panels = std::make_shared<std::vector<char>>(static_cast<std::size_t>(g.nTheta()), 0);
+        for (int j = 0; j < g.nTheta(); ++j) (*panels)[static_cast<std::size_t>(j)] = g.kind(g.index(0, j)) != lube::NodeKind::Void;
+        panelColumns_ = std::move(panels);
+    }
+    return {linerOffset + g.z(0), linerOffset + g.z(g.nAxial() - 1), panelColumns_};
 }
 
 void SkirtContact::checkLoadMapping(const ContactIterate& it, double& worstDiff, double& largestForce) const {

@@ -106,6 +106,7 @@ private:
     std::function<double(double)> linerOffset_;
     SkirtFilm film_;
     std::unique_ptr<FilmEquation> equation_;  // Reynolds condition or mass-conserving
+    mutable std::shared_ptr<const std::vector<char>> panelColumns_;  // the liner columns its cover reaches
     std::optional<lube::GreenwoodTripp> contact_;
     std::optional<lube::ElasticFoundation> foundation_;  // hard contact below h = 0 (with contact_)
     std::unique_ptr<FlexibleSurface> piston_, liner_;

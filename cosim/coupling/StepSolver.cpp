@@ -183,8 +183,8 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
     for (int it = 0; it < maxIt; ++it) {
         try {
             ev = evaluate(ctx, x, y, true);
-        } catch (const std::runtime_error&) {
-            return fail("a film solve failed");  // the caller shortens the step
+        } catch (const std::runtime_error& e) {
+            return fail(std::string("a film solve failed: ") + e.what());  // the caller shortens the step
         }
         ++iterations;
         const double couplingRes = flexible ? couplingResidual(ctx, ev, y) : 0.0;

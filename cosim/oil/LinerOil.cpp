@@ -29,6 +29,7 @@ LinerOil::LinerOil(const OilSupplySpec& supply, const std::vector<LinerFootprint
             throw std::invalid_argument("LinerOil: the contacts on the liner's oil layer have " +
                                         std::to_string(width_.size()) + " and " + std::to_string(f.width.size()) +
                                         " columns; they must share the layer's columns");
+        for (std::size_t j = 0; j < width_.size(); ++j) width_[j] = std::max(width_[j], f.width[j]);
         zLow_ = std::min(zLow_, f.zLow);
         zHigh_ = std::max(zHigh_, f.zHigh);
         cell_ = std::min(cell_, f.cell);

@@ -46,7 +46,8 @@ struct LinerOilExchange {
 class LinerOil {
 public:
     /// The layer over the union of the footprints with 8 cells of margin on either side, the
-    /// finest of their cells and the first footprint's columns (every footprint has as many);
+    /// finest of their cells and the footprints' columns (every footprint has as many; a column's
+    /// width the widest any footprint gives it);
     /// zReplenish: the liner-frame z below which the replenishment restores the supply layer
     /// (−∞: never).
     LinerOil(const OilSupplySpec& supply, const std::vector<LinerFootprint>& footprints, double zReplenish);

@@ -28,9 +28,9 @@ void LinerOilLayer::fill(const std::function<double(double)>& thickness) {
     }
 }
 
-double LinerOilLayer::uncovered(int c, const LinerCovers& cover) const {
+double LinerOilLayer::uncovered(int c, int j, const LinerCovers& cover) const {
     const double z0 = zLow_ + c * cell_;
-    return cell_ - cover.covered(z0, z0 + cell_);
+    return cell_ - cover.covered(j, z0, z0 + cell_);
 }
 
 int LinerOilLayer::cellOf(double z) const {
@@ -45,17 +45,16 @@ double LinerOilLayer::volume(int j, double a, double b, const LinerCovers& cover
         const double z0 = zLow_ + c * cell_, z1 = z0 + cell_;
         const double lo = std::max(a, z0), hi = std::min(b, z1);
         if (!(hi > lo)) continue;
-        v += t(c, j) * (hi - lo - cover.covered(lo, hi)) * w;
+        v += t(c, j) * (hi - lo - cover.covered(j, lo, hi)) * w;
     }
     return v;
 }
 
 double LinerOilLayer::volume(const LinerCovers& cover) const {
     double v = 0.0;
-    for (int c = 0; c < nCells_; ++c) {
-        const double u = uncovered(c, cover);
-        for (int j = 0; j < columns(); ++j) v += t(c, j) * u * width(j);
-    }
+    for (int c = 0; c < nCells_; ++c)
+        for (int j = 0; j < columns(); ++j)
+            if (width(j) > 0.0) v += t(c, j) * uncovered(c, j, cover) * width(j);
     return v;
 }
 
@@ -71,7 +70,7 @@ void LinerOilLayer::deposit(int j, double a, double b, double v, const LinerCove
         const double z0 = zLow_ + c * cell_;
         const double o = overlap(a, b, z0, z0 + cell_);
         if (!(o > 0.0)) continue;
-        const double u = uncovered(c, before);
+        const double u = uncovered(c, j, before);
         t(c, j) = (t(c, j) * u + v * (o / (b - a)) / w) / (u + o);
     }
 }
@@ -81,7 +80,7 @@ double LinerOilLayer::addOutside(int j, double z, int outward, double v, const L
     if (!(w > 0.0) || v == 0.0) return 0.0;
     const double tiny = 1e-9 * cell_;
     for (int c = cellOf(z + outward * tiny); c >= 0 && c < nCells_; c += outward) {
-        const double u = uncovered(c, cover);
+        const double u = uncovered(c, j, cover);
         if (u < tiny) continue;
         if (v > 0.0) {
             t(c, j) += v / (w * u);
@@ -101,11 +100,10 @@ double LinerOilLayer::restore(double zBelow, const std::function<double(double)>
     for (int c = 0; c < nCells_; ++c) {
         const double zc = zLow_ + (c + 0.5) * cell_;
         if (!(zc < zBelow)) break;
-        const double u = uncovered(c, cover);
-        if (!(u > 0.0)) continue;
         const double tc = thickness(zc);
         for (int j = 0; j < columns(); ++j) {
-            if (!(width(j) > 0.0)) continue;
+            const double u = uncovered(c, j, cover);
+            if (!(width(j) > 0.0) || !(u > 0.0)) continue;
             added += (tc - t(c, j)) * u * width(j);
             t(c, j) = tc;
         }
@@ -115,10 +113,9 @@ double LinerOilLayer::restore(double zBelow, const std::function<double(double)>
 
 Eigen::VectorXd LinerOilLayer::meanThickness(const LinerCovers& cover) const {
     Eigen::VectorXd m(static_cast<Eigen::Index>(t_.size()));
-    for (int c = 0; c < nCells_; ++c) {
-        const double share = uncovered(c, cover) / cell_;
-        for (int j = 0; j < columns(); ++j) m[static_cast<Eigen::Index>(c) * columns() + j] = t(c, j) * share;
-    }
+    for (int c = 0; c < nCells_; ++c)
+        for (int j = 0; j < columns(); ++j)
+            m[static_cast<Eigen::Index>(c) * columns() + j] = t(c, j) * uncovered(c, j, cover) / cell_;
     return m;
 }
 

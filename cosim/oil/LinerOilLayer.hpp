@@ -55,7 +55,7 @@ public:
     Eigen::VectorXd meanThickness(const LinerCovers& cover) const;
 
 private:
-    double uncovered(int c, const LinerCovers& cover) const;
+    double uncovered(int c, int j, const LinerCovers& cover) const;
     double& t(int c, int j) { return t_[static_cast<std::size_t>(c) * width_.size() + static_cast<std::size_t>(j)]; }
     double t(int c, int j) const { return t_[static_cast<std::size_t>(c) * width_.size() + static_cast<std::size_t>(j)]; }
     int cellOf(double z) const;

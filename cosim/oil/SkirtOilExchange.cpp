@@ -2,6 +2,7 @@
 // column and edge (docs/coupling.md §6).
 #include "cosim/oil/SkirtOilExchange.hpp"
 
+#include "cosim/oil/EdgeTrade.hpp"
 #include "cosim/oil/OilSupply.hpp"
 
 #include <algorithm>
@@ -57,28 +58,7 @@ void SkirtOilExchange::inletFractions(const LinerOilLayer& layer, const LinerCov
 
 void SkirtOilExchange::exchange(LinerOilExchange& ex, double before, double after, const Eigen::VectorXd& inflowLow,
                                 const Eigen::VectorXd& inflowHigh) const {
-    double shortfall = 0.0;
-    for (int e = 0; e < 2; ++e) {
-        const int out = e == 0 ? -1 : 1;
-        const double a = before + zEdge_[e], b = after + zEdge_[e];
-        const double lo = std::min(a, b), hi = std::max(a, b);
-        const bool advancing = (b - a) * out > 0.0;
-        const Eigen::VectorXd& q = e == 0 ? inflowLow : inflowHigh;
-        for (int j = 0; j < grid_.nTheta(); ++j) {
-            if (!(width_[static_cast<std::size_t>(j)] > 0.0)) continue;
-            if (advancing) {  // what it covered, less what the film took in: the bank in front
-                const double bank = ex.was.volume(j, lo, hi, ex.before) - q[j] * ex.dt;
-                shortfall += ex.next.addOutside(j, b, out, bank, ex.after);
-            } else {          // the outflow, on the strip it uncovered
-                const double left = -q[j] * ex.dt;
-                if (hi > lo && left >= 0.0)
-                    ex.next.deposit(j, lo, hi, left, ex.before);
-                else
-                    shortfall += ex.next.addOutside(j, b, out, left, ex.after);
-            }
-        }
-    }
-    ex.shortfall += shortfall;
+    tradeAtEdges(ex, before, after, {zEdge_[0], zEdge_[1]}, width_, inflowLow, inflowHigh);
 }
 
 }  // namespace flexehd::cosim

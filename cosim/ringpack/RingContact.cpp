@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "cosim/oil/OilSupply.hpp"
 #include "fem/Stopwatch.hpp"
 
 namespace flexehd::cosim {
@@ -45,14 +47,25 @@ const RingSpec& supported(const EngineCase& c, const RingSpec& r) {
         throw std::invalid_argument(fmt::format("ring '{}': {} is not built for a ring contact yet", r.name, what));
     };
     if (r.kind == RingKind::OilControl && !r.lands) refuse("an oil-control ring without its lands");
-    if (c.lubricant.supply.model == OilSupplyModel::LinerLayer) refuse("a liner oil layer (lubricant.supply)");
     if (c.linerBody.model == BodyModel::Flexible) refuse("a flexible liner (the rings' pressure on its modes)");
     return r;
 }
 
+// On the liner's oil layer: the ring's cover (its height, on the groove's lower flank) round the
+// bore, over the liner-frame range it sweeps; cells of half its height, so that its trailing edge
+// never leaves oil in a cell its leading edge still takes from.
+std::optional<RingOilExchange> ringOil(const RingSpec& r, const LinerFootprint* layer) {
+    if (!layer) return std::nullopt;
+    LinerFootprint f = *layer;
+    f.zLow += r.groove.lowerFlank;
+    f.zHigh += r.top();
+    f.cell = 0.5 * r.height;
+    return RingOilExchange({r.groove.lowerFlank, r.top()}, std::move(f));
+}
+
 }  // namespace
 
-RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes)
+RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes, const LinerFootprint* layer)
     : ring_(supported(c, ring)),
       top_(top),
       faces_(ring.lands ? 2 : 1),
@@ -62,7 +75,15 @@ RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, in
       radial_(lube::RingFilm(faceProfile(ring), lube::Lubricant(c.lubricant.viscosity, c.lubricant.density),
                              nodesAcross(ring, faceNodes),
                              c.lubricant.cavitationPressure, ring.roughness),
-              asperity_, ring.tensionPerLength / faces_) {}
+              asperity_, ring.tensionPerLength / faces_, faces_),
+      oil_(ringOil(ring, layer)),
+      supply_(c.lubricant.supply),
+      nodes_(nodesAcross(ring, faceNodes)) {}
+
+std::optional<LinerFootprint> RingContact::linerFootprint() const {
+    if (!oil_) return std::nullopt;
+    return oil_->footprint();
+}
 
 double RingContact::restingGap() const {
     // The asperity load falls as the gap grows: bisection between a gap that carries more than the
@@ -85,21 +106,60 @@ ContactState RingContact::initialState(double linerOffset) const {
     ContactState s;
     s.linerOffset = linerOffset;
     s.minGap = restingGap();
+    if (!oil_) return s;
+    // Each face's film at rest holds the supply layer where the ring stands: φ = min(1, 2t/h).
+    const lube::RingFaceProfile& f = radial_.film().profile();
+    const double t = supplyLayerThickness(supply_, linerOffset + 0.5 * (ring_.groove.lowerFlank + ring_.top()));
+    const double gap = std::max(s.minGap, radial_.filmFloor());
+    s.fraction.resize(static_cast<Eigen::Index>(faces_) * nodes_);
+    for (int i = 0; i < nodes_; ++i) {
+        const double x = f.lower() + (f.upper() - f.lower()) * i / (nodes_ - 1);
+        const double phi = std::min(1.0, 2.0 * t / (gap + f.drop(x)));
+        for (int k = 0; k < faces_; ++k) s.fraction[k * nodes_ + i] = phi;
+    }
     return s;
 }
 
-const RingRadialStep& RingContact::radialStep(const ContactStep& step, double gapNow, double guess) {
+const RingRadialStep& RingContact::radialStep(const ContactStep& step, const ContactState& now, double guess) {
     const double pressure = top_ ? step.cylinderPressure : 0.0;
-    const Cached key{gapNow, step.dt, step.pistonVelocity, pressure};
+    const double U = -step.pistonVelocity;  // the liner relative to the ring, + towards the crown
+    std::optional<RingSupply> supply;
+    if (oil_ && step.oil && step.oil->layer) {
+        supply.emplace();
+        supply->film = oil_->supplyFilm(*step.oil, now.linerOffset, step.linerOffset, step.dt, U);
+        for (int k = 0; k < faces_; ++k) supply->previousFraction.push_back(now.fraction.segment(k * nodes_, nodes_));
+    }
+    const Cached key{now.minGap, step.dt, step.pistonVelocity, pressure, supply ? supply->film : -1.0};
     if (cachedFor_ == key) return cached_;
     lube::RingFilmState conditions;
-    conditions.slidingSpeed = -step.pistonVelocity;  // the liner relative to the ring, + towards the crown
+    conditions.slidingSpeed = U;
     conditions.pressureAbove = pressure;
     conditions.pressureBelow = 0.0;
     cachedFor_.reset();  // a failed step leaves no stale result behind
-    cached_ = radial_.step(gapNow, step.dt, conditions, pressure, guess);
+    cached_ = radial_.step(now.minGap, step.dt, conditions, pressure, guess, supply ? &*supply : nullptr);
     cachedFor_ = key;
     return cached_;
+}
+
+void RingContact::oilFlows(const ContactStep& step, const ContactState& now, const RingRadialStep& r,
+                           ContactIterate& it) const {
+    const double circumference = oil_->circumference();
+    it.fraction.resize(static_cast<Eigen::Index>(faces_) * nodes_);
+    it.oilVolume = 0.0;
+    for (int k = 0; k < faces_; ++k) {
+        const lube::RingFilmResult& f = r.faces[static_cast<std::size_t>(k)];
+        it.fraction.segment(k * nodes_, nodes_) = f.fraction;
+        it.oilVolume += circumference * f.oil;
+    }
+    // In through the ring's lower and upper edges; between the lands, what the one lets out and
+    // the other does not take in drains through the ring (its side flow).
+    const lube::RingFilmResult &low = r.faces.front(), &high = r.faces.back();
+    oil_->columnFlows(*step.oil, now.linerOffset, step.linerOffset, low.inflowLow, high.inflowHigh, it.inflowLow,
+                      it.inflowHigh);
+    it.sideInflow = faces_ > 1 ? circumference * (low.inflowHigh + high.inflowLow) : 0.0;
+    // What the trailing edge leaves, as the layer the liner carries away at |U|.
+    const double U = -step.pistonVelocity, out = U >= 0.0 ? -high.inflowHigh : -low.inflowLow;
+    it.layerLeft = std::abs(U) > 0.0 ? std::max(out, 0.0) / std::abs(U) : 0.0;
 }
 
 void RingContact::evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
@@ -108,15 +168,23 @@ void RingContact::evaluate(const ContactStep& step, const ContactState& now, con
     const fem::Stopwatch t0;
     // The balance looked for from the last two gaps' linear extrapolation (steps of like size).
     const double guess = std::isfinite(before.minGap) ? 2.0 * now.minGap - before.minGap : now.minGap;
-    const RingRadialStep& r = radialStep(step, now.minGap, guess);
+    const RingRadialStep& r = radialStep(step, now, guess);
     it = ContactIterate{};
-    it.h = it.hRigid = it.hTotal = r.film.h;
-    it.p = r.film.p;
-    it.dhdt = Eigen::VectorXd::Constant(r.film.h.size(), r.squeezeRate);
+    const lube::RingFilmResult& film = r.faces.front();
+    it.h = it.hRigid = it.hTotal = film.h;
+    it.p = film.p;
+    it.dhdt = Eigen::VectorXd::Constant(film.h.size(), r.squeezeRate);
     it.minGap = r.minimumGap;
+    if (oil_ && step.oil && step.oil->layer) oilFlows(step, now, r, it);
     const double v = step.pistonVelocity;
     const double perFace = faces_ * circumference_;
-    const double hydro = perFace * r.film.friction;
+    // The faces' shear: flooded one film for its alike faces, on the layer each its own.
+    double friction = 0.0, pMax = 0.0;
+    for (const lube::RingFilmResult& f : r.faces) {
+        friction += f.friction;
+        if (f.p.size()) pMax = std::max(pMax, f.p.maxCoeff());
+    }
+    const double hydro = circumference_ * friction * (faces_ / static_cast<double>(r.faces.size()));
     const double boundary = -perFace * boundaryFriction_ * r.asperityLoad * (v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0);
     it.loads.shearForce.z() = hydro;
     it.loads.boundaryFrictionForce.z() = boundary;
@@ -124,7 +192,7 @@ void RingContact::evaluate(const ContactStep& step, const ContactState& now, con
     it.loads.viscousDissipation = -hydro * v;
     it.loads.boundaryFrictionPower = -boundary * v;
     it.loads.minFilm = r.minimumGap;
-    it.loads.maxPressure = r.film.p.size() ? r.film.p.maxCoeff() : 0.0;
+    it.loads.maxPressure = pMax;
     it.action.fz = hydro + boundary;
     work.film += t0.seconds();
 }
@@ -135,14 +203,24 @@ void RingContact::linearize(const ContactStep& /*step*/, const ContactState& /*n
     J.motionColumns = true;
 }
 
-ContactState RingContact::accepted(const ContactStep& step, const ContactState& /*now*/,
-                                   const ContactIterate& it) const {
+ContactState RingContact::accepted(const ContactStep& step, const ContactState& now, const ContactIterate& it) const {
     ContactState s;
     s.h = s.hRigid = s.hTotal = it.h;
     s.p = it.p;
     s.linerOffset = step.linerOffset;
     s.minGap = it.minGap;
+    s.fraction = it.fraction;
+    s.oilBalance = now.oilBalance;
+    for (Eigen::Index j = 0; j < it.inflowLow.size(); ++j)
+        for (double q : {it.inflowLow[j], it.inflowHigh[j]})
+            (q > 0.0 ? s.oilBalance.edgeIn : s.oilBalance.edgeOut) += std::abs(q) * step.dt;
+    s.oilBalance.sideOut -= it.sideInflow * step.dt;
     return s;
+}
+
+void RingContact::exchangeOil(const ContactState& now, const ContactState& next, const ContactIterate& it,
+                              LinerOilExchange& ex) const {
+    if (oil_) oil_->exchange(ex, now.linerOffset, next.linerOffset, it.inflowLow, it.inflowHigh);
 }
 
 const std::vector<std::string>& RingContact::figureNames() {
@@ -162,10 +240,13 @@ bool RingContact::isFigureKey(const std::string& key) {
 std::vector<ContactColumn> RingContact::columns() const {
     const std::string column = "ring_" + ring_.name + "_", figure = "rings." + ring_.name + ".";
     const std::vector<std::string>& f = figureNames();
-    return {{column + "min_film_m", {{figure + f[0], CycleStatistic::Minimum}}},
+    std::vector<ContactColumn> all{
+            {column + "min_film_m", {{figure + f[0], CycleStatistic::Minimum}}},
             {column + "friction_force_n", {}},
             {column + "friction_power_w", {{figure + f[1], CycleStatistic::Mean}, {figure + f[2], CycleStatistic::Fmep}}},
             {column + "boundary_friction_power_w", {{figure + f[3], CycleStatistic::Mean}}}};
+    if (oil_) all.push_back({column + "oil_left_m", {}});
+    return all;
 }
 
 void RingContact::columnValues(const ContactIterate& it, std::vector<double>& values) const {
@@ -173,6 +254,7 @@ void RingContact::columnValues(const ContactIterate& it, std::vector<double>& va
     values.push_back(it.action.fz);
     values.push_back(it.loads.viscousDissipation + it.loads.boundaryFrictionPower);
     values.push_back(it.loads.boundaryFrictionPower);
+    if (oil_) values.push_back(it.layerLeft);
 }
 
 }  // namespace flexehd::cosim

@@ -14,14 +14,18 @@
 // face and behind it, the rings below the crankcase's (the lands' gas is not modelled here).
 // The oil-control ring runs on its two lands, alike: each a barrel film carrying half its
 // tension at the same minimum gap (the groove between them at the crankcase's pressure), their
-// loads summed. A flooded supply, a rigid or flexible piston (the rings' groove loads do not
-// enter its modes) and a rigid liner; the constructor refuses the rest naming what is missing.
+// loads summed. Flooded, or on the liner's oil layer (RingOilExchange): then each face's film is
+// mass-conserving, the lands in series (the second meets what the first leaves; what it does not
+// take in drains through the ring to the crankcase: the ring's side flow). A rigid or flexible
+// piston (the rings' groove loads do not enter its modes) and a rigid liner; the constructor
+// refuses the rest naming what is missing.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
+#include "cosim/ringpack/RingOilExchange.hpp"
 #include "cosim/ringpack/RingRadialMotion.hpp"
 
 namespace flexehd::cosim {
@@ -33,7 +37,10 @@ public:
     /// least 8 per its shortest interval: docs/ring-pack.md). Throws std::invalid_argument for what is not
     /// built (a liner oil layer, a flexible liner) or without asperity contact
     /// (contact.composite_modulus 0: nothing would carry the ring at the dead centres).
-    RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 0);
+    /// layer: on the liner's oil layer, its θ columns (widths round the whole bore) and the
+    /// liner offsets' range over a revolution as zLow, zHigh (null: a flooded liner).
+    RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 0,
+                const LinerFootprint* layer = nullptr);
 
     ContactState initialState(double linerOffset) const override;
     void evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
@@ -47,12 +54,19 @@ public:
 
     /// ring_<name>_min_film_m, _friction_force_n, _friction_power_w (the power the ring's friction
     /// takes from the piston, −F_z v_p), _boundary_friction_power_w; summary.json
-    /// rings.<name>.min_film_m, the powers' cycle means and the ring's fmep_pa.
+    /// rings.<name>.min_film_m, the powers' cycle means and the ring's fmep_pa; on the liner's
+    /// oil layer also _oil_left_m, the layer its trailing edge leaves (outflow / |U|).
     std::vector<ContactColumn> columns() const override;
     void columnValues(const ContactIterate& it, std::vector<double>& values) const override;
 
     /// The minimum gap (m) where the asperities alone carry the ring's tension (the ring at rest).
     double restingGap() const;
+
+    bool carriesOil() const override { return oil_.has_value(); }
+    std::optional<LinerFootprint> linerFootprint() const override;
+    LinerCover linerCover(double linerOffset) const override { return oil_ ? oil_->cover(linerOffset) : LinerCover{}; }
+    void exchangeOil(const ContactState& now, const ContactState& next, const ContactIterate& it,
+                     LinerOilExchange& ex) const override;
 
     /// The summary.json figures of every ring, under rings.<name>.<figure>.
     static const std::vector<std::string>& figureNames();
@@ -62,7 +76,9 @@ public:
 private:
     /// The radial step from h_min,n for the step's conditions; the last one is kept, since the
     /// ring's film does not depend on the master's unknowns and every pass of a step asks it again.
-    const RingRadialStep& radialStep(const ContactStep& step, double gapNow, double guess);
+    const RingRadialStep& radialStep(const ContactStep& step, const ContactState& now, double guess);
+    /// On the liner's oil layer: the iterate's film fractions, oil and flows.
+    void oilFlows(const ContactStep& step, const ContactState& now, const RingRadialStep& r, ContactIterate& it) const;
 
     RingSpec ring_;
     bool top_;
@@ -71,8 +87,11 @@ private:
     double boundaryFriction_;
     lube::GreenwoodTripp asperity_;
     RingRadialMotion radial_;
+    std::optional<RingOilExchange> oil_;
+    OilSupplySpec supply_;
+    int nodes_;  // the film's nodes across each face
     struct Cached {
-        double gapNow, dt, velocity, pressure;
+        double gapNow, dt, velocity, pressure, supply;
         bool operator==(const Cached&) const = default;
     };
     std::optional<Cached> cachedFor_;

@@ -9,10 +9,12 @@
 
 namespace flexehd::cosim {
 
-RingRadialMotion::RingRadialMotion(lube::RingFilm film, std::optional<lube::GreenwoodTripp> asperity, double tension)
-    : film_(std::move(film)), asperity_(std::move(asperity)), tension_(tension) {
+RingRadialMotion::RingRadialMotion(lube::RingFilm film, std::optional<lube::GreenwoodTripp> asperity, double tension,
+                                   int faces)
+    : film_(std::move(film)), asperity_(std::move(asperity)), tension_(tension), faces_(faces) {
     if (!(tension >= 0.0) || !std::isfinite(tension))
         throw std::invalid_argument("RingRadialMotion: the tension must be >= 0 N/m, got " + std::to_string(tension));
+    if (faces < 1) throw std::invalid_argument("RingRadialMotion: at least one face, got " + std::to_string(faces));
     if (!asperity_) return;
     // The asperity load and its slope on nodes every 0.01σ from −kDeepestGap σ to the law's end
     // (8σ: beyond it no asperity touches), for the cubic Hermite interpolant of asperityLoad.
@@ -54,8 +56,35 @@ double RingRadialMotion::asperityLoad(double h) const {
            (-2 * s3 + 3 * s2) * tableLoad_[k + 1] + (s3 - s2) * tableStep_ * tableSlope_[k + 1];
 }
 
+double RingRadialMotion::faceFilms(const lube::RingFilmState& c, double dt, const RingSupply* supply,
+                                   RingRadialStep& s, std::vector<std::vector<char>>& cavitated) const {
+    if (!supply) {  // flooded: the faces are alike
+        s.faces.resize(1);
+        s.faces[0] = film_.solve(c, &cavitated[0]);
+        return s.faces[0].load;
+    }
+    // In the order the liner meets them: U > 0 (the liner moving towards the crown) meets the
+    // bottom face first. The next face's supply: what the last one's trailing edge lets out.
+    s.faces.resize(static_cast<std::size_t>(faces_));
+    const bool upwards = c.slidingSpeed >= 0.0;
+    double load = 0.0, film = supply->film;
+    for (int k = 0; k < faces_; ++k) {
+        const auto f = static_cast<std::size_t>(upwards ? k : faces_ - 1 - k);
+        lube::RingFilmState fc = c;
+        fc.supplyFilm = film;
+        s.faces[f] = film_.step(fc, dt, supply->previousFraction[f], &cavitated[f]);
+        load += s.faces[f].load;
+        const double out = -(upwards ? s.faces[f].inflowHigh : s.faces[f].inflowLow);
+        film = std::abs(c.slidingSpeed) > 0.0 ? std::max(out, 0.0) / std::abs(c.slidingSpeed) : 0.0;
+    }
+    return load / faces_;
+}
+
 RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::RingFilmState& conditions,
-                                      double backPressure, double guess) const {
+                                      double backPressure, double guess, const RingSupply* supply) const {
+    if (supply && supply->previousFraction.size() != static_cast<std::size_t>(faces_))
+        throw std::invalid_argument(fmt::format("RingRadialMotion::step: {} faces' film fractions for {} faces",
+                                                supply->previousFraction.size(), faces_));
     if (!std::isfinite(gapNow) || !(dt > 0.0) || (!asperity_ && !(gapNow > 0.0)))
         throw std::invalid_argument("RingRadialMotion::step: the step must be positive and the last gap finite (positive "
                                     "without asperities)");
@@ -64,16 +93,16 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
     // The resistance W_film + W_asperity − load at the trial gap h (falls as h grows).
     // The film sees the gap down to its floor (the asperities' mean planes may come closer).
     const double floor = filmFloor();
-    std::vector<char> cavitated;  // each trial's film starts from the last trial's cavitated set
+    // Each trial's films start from the last trial's cavitated sets.
+    std::vector<std::vector<char>> cavitated(static_cast<std::size_t>(faces_));
     auto excess = [&](double h) {
         lube::RingFilmState c = conditions;
         c.minimumGap = std::max(h, floor);
         c.nominalGap = h;
         c.squeezeRate = (c.minimumGap - std::max(gapNow, floor)) / dt;
-        s.film = film_.solve(c, &cavitated);
+        s.filmLoad = faceFilms(c, dt, supply, s, cavitated);
         s.minimumGap = h;
         s.squeezeRate = c.squeezeRate;
-        s.filmLoad = s.film.load;
         s.asperityLoad = asperityLoad(h);
         return s.filmLoad + s.asperityLoad - load;
     };

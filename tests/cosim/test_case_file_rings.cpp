@@ -165,11 +165,12 @@ TEST(CaseFileRings, BadRingsAreRefusedNamingTheKey) {
                                                                HasSubstr("required with rings")));
 }
 
-TEST(CaseFileRings, TheRunRefusesRingsWhereTheirContactIsNotBuilt) {
+TEST(CaseFileRings, TheRunRefusesTheOilControlBandBesideThePacksOilControlRing) {
     const fs::path dir = scratchDir();
     const EngineCase c = readCaseFile(caseWith(
-        dir, {{"rings:\n", "lubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: 3e-6}}\n"
+        dir, {{"rings:\n", "lubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: 3e-6, "
+                             "oil_control_ring: {bottom: 0.0138, top: 0.0163, thickness: 3e-6}}}\n"
                              "rings:\n"}}));
     EXPECT_THAT(errorOf([&] { runCase(c); }),
-                AllOf(StartsWith(c.path + ": rings[0]: ring 'top'"), HasSubstr("liner oil layer")));
+                AllOf(StartsWith(c.path + ": lubricant.supply.oil_control_ring"), HasSubstr("oil-control ring 'oil'")));
 }

@@ -19,6 +19,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "RingCases.hpp"
 #include "SmallEngineCase.hpp"
 #include "TestFiles.hpp"
 
@@ -26,33 +27,10 @@ using namespace flexehd;
 using namespace flexehd::cosim;
 using ::testing::HasSubstr;
 
+using test::barrelRing;
+using test::ringCase;
+
 namespace {
-
-// The case: the small engine with asperities that carry a ring's tension at a positive gap
-// (the example's β and η_s, a steel ring on a cast-iron liner).
-EngineCase ringCase() {
-    EngineCase c = test::smallCase();
-    c.contact.beta = 0.6e-3;
-    c.contact.asperityDensity = 1.111e8;
-    c.contact.compositeModulus = 1.0e11;
-    return c;
-}
-
-// A barrel-faced compression ring of height b, crown c (vertex radius (b/2)²/(2c)), tension T (N/m).
-RingSpec barrelRing(double b, double c, double T, double roughness) {
-    RingSpec r;
-    r.name = "test";
-    r.kind = RingKind::Compression;
-    r.height = b;
-    r.radialWidth = 3e-3;
-    r.face.crownHeight = c;
-    r.tensionPerLength = T;
-    r.closedGap = 0.25e-3;
-    r.mass = 7e-3;
-    r.roughness = roughness;
-    r.groove = {0.0253, 0.05e-3, 0.6e-3};
-    return r;
-}
 
 // Steps of dt at a constant piston velocity and cylinder pressure until the gap settles (its change
 // per step below 1e-9 of it); the last iterate.

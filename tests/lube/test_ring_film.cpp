@@ -3,16 +3,21 @@
 // w' = 4.896 η u_m R / h0, rupture at x/√(2R h0) = 0.475 past the minimum, u_m = U/2 with the
 // ring at rest) with the measured order of convergence; the pure squeeze of the same face
 // (W' = 3√2 π η V R^1.5 / h0^1.5 for an approach speed V, full film); the face fed by a liner
-// oil layer (starved, mass-conserving) against its meniscus solution; and the face profiles.
+// oil layer (starved, mass-conserving) against its meniscus solution and against JfoSolver on a
+// grid of three θ columns across the face; and the face profiles.
 #include <gtest/gtest.h>
 #include <gmock/gmock.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "lube/FilmGrid.hpp"
+#include "lube/JfoSolver.hpp"
 #include "lube/RingFilm.hpp"
 
 using namespace flexehd::lube;
@@ -303,4 +308,254 @@ TEST(RingFilm, FaceProfilesAndBadInput) {
     EXPECT_THAT([&] { film.solve(s); }, ThrowsMessage<std::invalid_argument>(HasSubstr("squeeze rate must be 0")));
     EXPECT_THAT([&] { film.step(s, 1e-5, Eigen::VectorXd::Ones(7)); },
                 ThrowsMessage<std::invalid_argument>(HasSubstr("previous film fraction on the 51 nodes")));
+}
+
+namespace {
+
+// The mass-conserving film by JfoSolver's active set on a grid of three θ columns across the
+// face (the solution does not depend on θ), per unit circumference: the reference for RingFilm's
+// one-dimensional solve of the same scheme. Load by the trapezoidal rule as RingFilm's.
+struct JfoReference {
+    Eigen::VectorXd p, fraction;
+    double oil = 0.0, inflowLow = 0.0, inflowHigh = 0.0, load = 0.0;
+};
+
+JfoReference jfoOnThreeColumns(const RingFaceProfile& face, double eta, int n, double pcav, const RingFilmState& s,
+                               double dt, const Eigen::VectorXd* previous) {
+    constexpr int kColumns = 3;
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, face.lower(), face.upper());
+    Eigen::VectorXd h(n);
+    for (int i = 0; i < n; ++i) h[i] = s.minimumGap + face.drop(x[i]);
+    FilmGrid g = FilmGrid::fullCircumference(1.0, std::vector<double>(x.data(), x.data() + n), kColumns);
+    g.setEdge(Edge::AxialLow, EdgeCondition::Pressure, std::max(s.pressureBelow, pcav));
+    g.setEdge(Edge::AxialHigh, EdgeCondition::Pressure, std::max(s.pressureAbove, pcav));
+    JfoOptions o;
+    o.method = JfoMethod::ActiveSet;
+    o.cavitationPressure = pcav;
+    o.control.tolerance = 1e-12;
+    JfoSolver jfo(g, Lubricant(eta), o);
+    FilmState f;
+    f.h.resize(g.size());
+    for (int k = 0; k < g.size(); ++k) f.h[k] = h[g.axialIndex(k)];
+    f.outer.axial = s.slidingSpeed;
+    const int lead = s.slidingSpeed >= 0.0 ? 0 : n - 1, next = lead == 0 ? 1 : n - 2;
+    const double hf = 0.5 * (h[lead] + h[next]);
+    for (int j = 0; j < kColumns; ++j) jfo.setInletFraction(g.index(lead, j), std::min(1.0, 2.0 * s.supplyFilm / hf));
+    JfoState before;
+    if (previous) {
+        before.h = f.h.array() - dt * s.squeezeRate;
+        before.fraction.resize(g.size());
+        for (int k = 0; k < g.size(); ++k) before.fraction[k] = (*previous)[g.axialIndex(k)];
+    }
+    const JfoResult res = jfo.solve(f, previous ? dt : 0.0, previous ? &before : nullptr);
+    JfoReference r;
+    r.p.resize(n);
+    r.fraction.resize(n);
+    for (int i = 0; i < n; ++i) {
+        r.p[i] = res.pressure[g.index(i, 0)];
+        r.fraction[i] = res.fraction[g.index(i, 0)];
+    }
+    const double circumference = 2.0 * std::numbers::pi * g.radius();
+    r.oil = jfo.oilVolume(f, res.fraction) / circumference;
+    for (int j = 0; j < kColumns; ++j) {
+        r.inflowLow += res.boundaryFlow[g.index(0, j)] / circumference;
+        r.inflowHigh += res.boundaryFlow[g.index(n - 1, j)] / circumference;
+    }
+    for (int i = 0; i + 1 < n; ++i) r.load += 0.5 * (r.p[i] + r.p[i + 1]) * (x[1] - x[0]);
+    return r;
+}
+
+// The faces, sliding directions, supplies, edge pressures and cavitation pressures the
+// mass-conserving film is compared over; visit(face, film, state, label).
+constexpr int kNodes = 101;
+template <class Visit>
+void forStarvedCases(Visit visit) {
+    const std::vector<std::pair<const char*, RingFaceProfile>> faces = {
+        {"barrel", RingFaceProfile::barrel(1.2e-3, 8e-6)},
+        {"taper", RingFaceProfile::table({{-0.6e-3, 0.0}, {-0.2e-3, 0.0}, {0.6e-3, 5e-6}})}};
+    for (const auto& [name, face] : faces)
+        for (double pcav : {0.0, -0.3e5}) {
+            const RingFilm film(face, Lubricant(0.01), kNodes, pcav);
+            for (double U : {8.0, -8.0})
+                for (double t : {0.3e-6, 20e-6, 0.0})  // starved, flooding (2t above every gap), dry
+                    for (double above : {0.0, 1e5}) {
+                        RingFilmState s;
+                        s.minimumGap = 1e-6;
+                        s.slidingSpeed = U;
+                        s.supplyFilm = t;
+                        s.pressureAbove = above;
+                        char label[160];
+                        std::snprintf(label, sizeof label, "%s face, p_cav %g Pa, U %g m/s, supply %g m, p_above %g Pa",
+                                      name, pcav, U, t, above);
+                        visit(face, pcav, film, s, std::string(label));
+                    }
+        }
+}
+
+// A previous film fraction partly below 1: a partial film towards the lower edge.
+Eigen::VectorXd partialFraction(int n) {
+    Eigen::VectorXd phi(n);
+    for (int i = 0; i < n; ++i) phi[i] = std::min(1.0, 0.2 + 1.6 * i / (n - 1.0));
+    return phi;
+}
+
+constexpr double kStep = 1e-5, kSqueeze = -2e-3;  // a step (s) and its squeeze rate (m/s)
+
+// The result against the reference, each quantity relative to its scale: the pressure to the
+// largest pressure (at least 1 Pa), the flows to the Couette flux (|U|/2) h_max, the oil to the
+// full film's.
+void expectSameFilm(const RingFilmResult& r, const JfoReference& ref, double U, double tol, const std::string& label,
+                    double& worst) {
+    const double pScale = std::max(1.0, ref.p.cwiseAbs().maxCoeff());
+    const double qScale = 0.5 * std::abs(U) * r.h.maxCoeff();
+    const double oilScale = r.h.sum() * (r.x[1] - r.x[0]);
+    const double loadScale = pScale * (r.x[r.x.size() - 1] - r.x[0]);
+    const double e[] = {(r.p - ref.p).cwiseAbs().maxCoeff() / pScale, (r.fraction - ref.fraction).cwiseAbs().maxCoeff(),
+                        std::abs(r.load - ref.load) / loadScale, std::abs(r.oil - ref.oil) / oilScale,
+                        std::abs(r.inflowLow - ref.inflowLow) / qScale,
+                        std::abs(r.inflowHigh - ref.inflowHigh) / qScale,
+                        std::abs(r.inflow - (ref.inflowLow + ref.inflowHigh)) / qScale};
+    const char* what[] = {"pressure", "fraction", "load", "oil", "inflow low", "inflow high", "inflow"};
+    for (int k = 0; k < 7; ++k) {
+        EXPECT_LE(e[k], tol) << what[k] << ", " << label;
+        worst = std::max(worst, e[k]);
+    }
+}
+
+}  // namespace
+
+// RingFilm's one-dimensional mass-conserving solve is JfoSolver's scheme: where the gas on both
+// sides is at the cavitation pressure it gives the film of JfoSolver's active set on three θ
+// columns across the face, steady and in a step. (Otherwise JfoSolver holds every partial node at
+// p_cav, the ring film its partial regions at their side's gas pressure: a case of its own below.)
+TEST(RingFilm, MassConservingFilmEqualsJfoSolverOnTheFace) {
+    double worstSteady = 0.0, worstStep = 0.0;
+    int cases = 0;
+    forStarvedCases([&](const RingFaceProfile& face, double pcav, const RingFilm& film, RingFilmState s,
+                        const std::string& label) {
+        if (pcav != 0.0 || s.pressureAbove != 0.0) return;
+        const int n = kNodes;
+        expectSameFilm(film.solve(s), jfoOnThreeColumns(face, 0.01, n, pcav, s, 0.0, nullptr), s.slidingSpeed, 1e-9,
+                       "steady, " + label, worstSteady);
+        s.squeezeRate = kSqueeze;
+        const Eigen::VectorXd before = partialFraction(n);
+        expectSameFilm(film.step(s, kStep, before), jfoOnThreeColumns(face, 0.01, n, pcav, s, kStep, &before),
+                       s.slidingSpeed, 1e-9, "step, " + label, worstStep);
+        ++cases;
+    });
+    std::printf("%d cases: largest relative difference steady %.3g, step %.3g\n", cases, worstSteady, worstStep);
+}
+
+// A step's change of the film's oil is the step times the inflow at the two edges, to round-off:
+// oil − oil_n = Δt (q_low + q_high), oil_n = ∫ φₙ hₙ dx on the same nodes, hₙ = h − Δt ḣ.
+TEST(RingFilm, MassConservingStepBalancesTheOilWithTheEdgesInflow) {
+    double worst = 0.0;
+    forStarvedCases([&](const RingFaceProfile&, double, const RingFilm& film, RingFilmState s,
+                        const std::string& label) {
+        s.squeezeRate = kSqueeze;
+        const int n = kNodes;
+        const Eigen::VectorXd before = partialFraction(n);
+        const RingFilmResult r = film.step(s, kStep, before);
+        double oilBefore = 0.0;
+        for (int i = 1; i + 1 < n; ++i)
+            oilBefore += 0.5 * (r.x[i + 1] - r.x[i - 1]) * before[i] * (r.h[i] - kStep * s.squeezeRate);
+        const double scale = std::max(r.oil, kStep * 0.5 * std::abs(s.slidingSpeed) * r.h.maxCoeff());
+        const double imbalance = std::abs((r.oil - oilBefore) - kStep * (r.inflowLow + r.inflowHigh)) / scale;
+        EXPECT_LE(imbalance, 1e-13) << label;
+        EXPECT_DOUBLE_EQ(r.inflow, r.inflowLow + r.inflowHigh) << label;
+        worst = std::max(worst, imbalance);
+    });
+    std::printf("largest step imbalance %.3g of the film's oil\n", worst);
+}
+
+// The partition of a nearby step, or a wrong one (every node cavitated), as the start gives the
+// same mass-conserving film as a cold start, and returns the same partition; a start of the
+// wrong size is ignored.
+TEST(RingFilm, MassConservingWarmStartGivesTheSameFilm) {
+    const RingFilm film(RingFaceProfile::barrel(1.2e-3, 8e-6), Lubricant(0.01), 101);
+    RingFilmState s;
+    s.minimumGap = 1e-6;
+    s.slidingSpeed = 8.0;
+    s.supplyFilm = 1.5e-6;
+    s.pressureAbove = 1e5;
+    auto expectSame = [](const RingFilmResult& a, const RingFilmResult& b) {
+        EXPECT_LE((a.p - b.p).cwiseAbs().maxCoeff(), 1e-12 * b.p.cwiseAbs().maxCoeff());
+        EXPECT_LE((a.fraction - b.fraction).cwiseAbs().maxCoeff(), 1e-12);
+        EXPECT_NEAR(a.load, b.load, 1e-12 * b.load);
+        EXPECT_NEAR(a.oil, b.oil, 1e-12 * b.oil);
+        EXPECT_NEAR(a.inflow, b.inflow, 1e-12 * std::abs(b.inflowLow));
+        EXPECT_NEAR(a.friction, b.friction, 1e-12 * std::abs(b.friction));
+    };
+    // Steady.
+    std::vector<char> coldSet;
+    const RingFilmResult cold = film.solve(s, &coldSet);
+    RingFilmState other = s;
+    other.minimumGap = 1.1e-6;
+    std::vector<char> near, wrong(101, 1), sized(7, 1);
+    film.solve(other, &near);
+    for (std::vector<char>* start : {&near, &wrong, &sized}) {
+        expectSame(film.solve(s, start), cold);
+        EXPECT_EQ(*start, coldSet);
+    }
+    int held = 0;
+    for (char c : coldSet) held += c;
+    EXPECT_GT(held, 10) << "the starved film is partial over much of the face";
+    // A step.
+    s.squeezeRate = kSqueeze;
+    other.squeezeRate = kSqueeze;
+    const Eigen::VectorXd before = cold.fraction;
+    std::vector<char> coldStep;
+    const RingFilmResult stepCold = film.step(s, kStep, before, &coldStep);
+    expectSame(film.step(s, kStep, before), stepCold);
+    std::vector<char> nearStep, wrongStep(101, 1);
+    film.step(other, kStep, before, &nearStep);
+    for (std::vector<char>* start : {&nearStep, &wrongStep}) {
+        expectSame(film.step(s, kStep, before, start), stepCold);
+        EXPECT_EQ(*start, coldStep);
+    }
+}
+
+// The partial regions of a starved face hold the gas of the side they open to (Jeng 1992): with
+// the gas on both sides at P, the film is the one with the gas at 0, every pressure raised by P
+// (p_cav below both) — its fractions and flows the same.
+TEST(RingFilm, MassConservingFilmIsTheSameOnAnyCommonGasPressure) {
+    const RingFilm film(RingFaceProfile::barrel(1.2e-3, 8e-6), Lubricant(0.01), kNodes, -0.3e5);
+    const RingFilm zero(RingFaceProfile::barrel(1.2e-3, 8e-6), Lubricant(0.01), kNodes, 0.0);
+    for (double U : {8.0, -8.0})
+        for (double t : {0.3e-6, 1.5e-6, 20e-6}) {
+            RingFilmState s;
+            s.minimumGap = 1e-6;
+            s.slidingSpeed = U;
+            s.supplyFilm = t;
+            s.squeezeRate = kSqueeze;
+            const Eigen::VectorXd before = partialFraction(kNodes);
+            const RingFilmResult a = zero.step(s, kStep, before);
+            s.pressureAbove = s.pressureBelow = 2e5;
+            const RingFilmResult b = film.step(s, kStep, before);
+            const double width = a.x[kNodes - 1] - a.x[0];
+            EXPECT_LE((b.p.array() - 2e5 - a.p.array()).abs().maxCoeff(), 1e-9 * a.p.maxCoeff()) << U << " " << t;
+            EXPECT_LE((b.fraction - a.fraction).cwiseAbs().maxCoeff(), 1e-12) << U << " " << t;
+            EXPECT_NEAR(b.load, a.load + 2e5 * width, 1e-9 * b.load) << U << " " << t;
+            EXPECT_NEAR(b.inflowLow, a.inflowLow, 1e-9 * std::abs(a.inflowLow) + 1e-18) << U << " " << t;
+            EXPECT_NEAR(b.inflowHigh, a.inflowHigh, 1e-9 * std::abs(a.inflowHigh) + 1e-18) << U << " " << t;
+        }
+}
+
+// The gas above a starved face is no oil: where the film ruptures towards the upper edge (the
+// liner moving up past the ring, the upper edge trailing), the partial film there is at the
+// gas's pressure, and the steady film lets out through that edge just the layer's flux U t it
+// took in at the lower one, whatever the gas pressure.
+TEST(RingFilm, GasAboveAStarvedFaceDrivesNoOilIn) {
+    const RingFilm film(RingFaceProfile::barrel(1.2e-3, 8e-6), Lubricant(0.01), kNodes);
+    for (double above : {0.0, 1e5, 2e6}) {
+        RingFilmState s;
+        s.minimumGap = 1e-6;
+        s.slidingSpeed = 8.0;
+        s.supplyFilm = 0.3e-6;
+        s.pressureAbove = above;
+        const RingFilmResult r = film.solve(s);
+        EXPECT_NEAR(r.inflowLow, s.slidingSpeed * s.supplyFilm, 1e-12 * s.slidingSpeed * s.supplyFilm) << above;
+        EXPECT_NEAR(r.inflowHigh, -r.inflowLow, 1e-12 * r.inflowLow) << above;
+        EXPECT_NEAR(r.p[kNodes - 2], above, 1e-12 * std::max(1.0, above)) << "the partial film at the gas's pressure";
+    }
 }
