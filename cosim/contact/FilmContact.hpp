@@ -80,6 +80,7 @@ struct ContactIterate {
     double sideInflow = 0.0;                 ///< m³/s into the film at its sides (< 0: leakage)
     double oilVolume = 0.0;                  ///< m³, oil in the film, Σ V φ h
     double layerLeft = 0.0;  ///< m, a ring on the liner's layer: the layer it leaves behind (outflow / |U|)
+    Eigen::VectorXd linerLoad;  ///< Pa, a ring on a flexible liner: its pressure on the liner, on its load grid
 };
 
 /// The change of a contact's loads with the modal coordinates y at an iterate, affine in the

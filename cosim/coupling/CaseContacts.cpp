@@ -53,11 +53,12 @@ std::vector<std::unique_ptr<FilmContact>> caseContacts(const EngineCase& c, cons
         layer ? std::optional<LinerFootprint>(ringColumns(*skirt, linerOffset)) : std::nullopt;
     contacts.push_back(std::move(skirt));
     if (band) contacts.push_back(std::move(band));
+    const LinerOffsetRange offsets = linerOffsetRange(linerOffset);
     // The ring pack, top ring first (the cylinder's pressure above and behind it).
     for (std::size_t i = 0; i < c.rings.size(); ++i) {
         try {
-            contacts.push_back(
-                std::make_unique<RingContact>(c, c.rings[i], i == 0, 0, columns ? &*columns : nullptr));
+            contacts.push_back(std::make_unique<RingContact>(c, c.rings[i], i == 0, 0, columns ? &*columns : nullptr,
+                                                             bodies.liner, offsets.low, offsets.high));
         } catch (const std::invalid_argument& e) {
             throw std::runtime_error(fmt::format("{}: rings[{}]: {}", c.path, i, e.what()));
         }

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cosim/mapping/FlexibleBodyLoader.hpp"
 #include "cosim/oil/OilSupply.hpp"
 #include "fem/Stopwatch.hpp"
 
@@ -47,7 +48,6 @@ const RingSpec& supported(const EngineCase& c, const RingSpec& r) {
         throw std::invalid_argument(fmt::format("ring '{}': {} is not built for a ring contact yet", r.name, what));
     };
     if (r.kind == RingKind::OilControl && !r.lands) refuse("an oil-control ring without its lands");
-    if (c.linerBody.model == BodyModel::Flexible) refuse("a flexible liner (the rings' pressure on its modes)");
     return r;
 }
 
@@ -65,7 +65,8 @@ std::optional<RingOilExchange> ringOil(const RingSpec& r, const LinerFootprint* 
 
 }  // namespace
 
-RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes, const LinerFootprint* layer)
+RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes, const LinerFootprint* layer,
+                         std::shared_ptr<const FlexibleBody> liner, double offsetLow, double offsetHigh)
     : ring_(supported(c, ring)),
       top_(top),
       faces_(ring.lands ? 2 : 1),
@@ -78,7 +79,19 @@ RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, in
               asperity_, ring.tensionPerLength / faces_, faces_),
       oil_(ringOil(ring, layer)),
       supply_(c.lubricant.supply),
-      nodes_(nodesAcross(ring, faceNodes)) {}
+      nodes_(nodesAcross(ring, faceNodes)) {
+    if (!liner) return;
+    // The load grid: kLoadRows rows across the ring's height, the case grid's θ columns, sliding
+    // with the piston over the liner (two rows of margin).
+    loadGrid_ = std::make_unique<lube::FilmGrid>(lube::FilmGrid::fullCircumference(
+        0.5 * c.engine.bore, lube::FilmGrid::uniform(ring.groove.lowerFlank, ring.top(), kLoadRows),
+        c.grid.circumferentialNodes));
+    const double margin = 2.0 * ring.height / (kLoadRows - 1);
+    linerSurface_ = facingSurface(c, std::move(liner), c.linerBody, "liner", FlexibleSurface::Side::Liner, *loadGrid_,
+                                  offsetLow + ring.groove.lowerFlank - margin, offsetHigh + ring.top() + margin);
+}
+
+RingContact::~RingContact() = default;
 
 std::optional<LinerFootprint> RingContact::linerFootprint() const {
     if (!oil_) return std::nullopt;
@@ -176,6 +189,7 @@ void RingContact::evaluate(const ContactStep& step, const ContactState& now, con
     it.dhdt = Eigen::VectorXd::Constant(film.h.size(), r.squeezeRate);
     it.minGap = r.minimumGap;
     if (oil_ && step.oil && step.oil->layer) oilFlows(step, now, r, it);
+    if (linerSurface_) linerLoad(r, it.linerLoad);
     const double v = step.pistonVelocity;
     const double perFace = faces_ * circumference_;
     // The faces' shear: flooded one film for its alike faces, on the layer each its own.
@@ -195,6 +209,43 @@ void RingContact::evaluate(const ContactStep& step, const ContactState& now, con
     it.loads.maxPressure = pMax;
     it.action.fz = hydro + boundary;
     work.film += t0.seconds();
+}
+
+void RingContact::linerLoad(const RingRadialStep& r, Eigen::VectorXd& load) const {
+    // Each face's nodes at their piston-frame z: a face across the ring's height about its middle,
+    // or the lands about it, half their separation below and above; flooded, the one film stands
+    // for every land.
+    const lube::FilmGrid& g = *loadGrid_;
+    const lube::RingFaceProfile& f = radial_.film().profile();
+    const double middle = 0.5 * (ring_.groove.lowerFlank + ring_.top()), row = ring_.height / (kLoadRows - 1);
+    Eigen::VectorXd force = Eigen::VectorXd::Zero(kLoadRows);  // N/m of circumference per row
+    for (int k = 0; k < faces_; ++k) {
+        const lube::RingFilmResult& film = r.faces[std::min<std::size_t>(static_cast<std::size_t>(k), r.faces.size() - 1)];
+        const double centre = faces_ > 1 ? middle + (k == 0 ? -0.5 : 0.5) * ring_.lands->separation
+                                         : middle - 0.5 * (f.lower() + f.upper());
+        const Eigen::Index n = film.x.size();
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const double dx = i == 0 ? 0.5 * (film.x[1] - film.x[0])
+                              : i == n - 1 ? 0.5 * (film.x[n - 1] - film.x[n - 2])
+                                           : 0.5 * (film.x[i + 1] - film.x[i - 1]);
+            const double pressure = film.p[i] + asperity_.pressure(r.minimumGap + f.drop(film.x[i]));
+            const double z = centre + film.x[i];
+            const int j = std::clamp(static_cast<int>(std::lround((z - ring_.groove.lowerFlank) / row)), 0, kLoadRows - 1);
+            force[j] += pressure * dx;
+        }
+    }
+    load.resize(g.size());
+    for (int k = 0; k < g.size(); ++k) load[k] = force[g.axialIndex(k)] / g.axialWidth(g.axialIndex(k));
+}
+
+void RingContact::addModalLoad(const ContactStep& step, const ContactIterate& it, Eigen::VectorXd& f,
+                               WorkTally& work) const {
+    if (!linerSurface_) return;
+    const fem::Stopwatch t0;
+    Eigen::VectorXd fl;
+    linerSurface_->modalForce(it.linerLoad, step.linerOffset, fl);
+    f.tail(fl.size()) += fl;
+    work.mapping += t0.seconds();
 }
 
 void RingContact::linearize(const ContactStep& /*step*/, const ContactState& /*now*/, const Eigen::Vector2d& /*x*/,

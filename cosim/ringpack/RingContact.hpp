@@ -17,14 +17,21 @@
 // loads summed. Flooded, or on the liner's oil layer (RingOilExchange): then each face's film is
 // mass-conserving, the lands in series (the second meets what the first leaves; what it does not
 // take in drains through the ring to the crankcase: the ring's side flow). A rigid or flexible
-// piston (the rings' groove loads do not enter its modes) and a rigid liner; the constructor
-// refuses the rest naming what is missing.
+// piston (the rings' groove loads do not enter its modes); a rigid or flexible liner: on a
+// flexible one the ring's film and asperity pressure, lumped onto a load grid of kLoadRows rows
+// across the ring's height round the bore, is a modal load on the liner, and the ring's film does
+// not see the liner's deformation (the ring, free to move radially, follows the bore's local
+// radius; its conformability to the bore's distortion round it is not modelled).
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
+#include "cosim/mapping/FlexibleBody.hpp"
+#include "cosim/mapping/FlexibleSurface.hpp"
+#include "lube/FilmGrid.hpp"
 #include "cosim/ringpack/RingOilExchange.hpp"
 #include "cosim/ringpack/RingRadialMotion.hpp"
 
@@ -34,18 +41,24 @@ class RingContact final : public FilmContact {
 public:
     /// ring: its spec; top: the pack's top ring (the cylinder's pressure above and behind it);
     /// faceNodes: the film's nodes across the face (0: 101 on a barrel face, on a tabulated one at
-    /// least 8 per its shortest interval: docs/ring-pack.md). Throws std::invalid_argument for what is not
-    /// built (a liner oil layer, a flexible liner) or without asperity contact
-    /// (contact.composite_modulus 0: nothing would carry the ring at the dead centres).
+    /// least 8 per its shortest interval: docs/ring-pack.md). Throws std::invalid_argument for an
+    /// oil-control ring without lands or without asperity contact (contact.composite_modulus 0:
+    /// nothing would carry the ring at the dead centres).
     /// layer: on the liner's oil layer, its θ columns (widths round the whole bore) and the
     /// liner offsets' range over a revolution as zLow, zHigh (null: a flooded liner).
+    /// liner: the flexible liner (null: rigid), its load grid sliding over the liner offsets
+    /// [offsetLow, offsetHigh] (m) of a revolution.
     RingContact(const EngineCase& c, const RingSpec& ring, bool top, int faceNodes = 0,
-                const LinerFootprint* layer = nullptr);
+                const LinerFootprint* layer = nullptr, std::shared_ptr<const FlexibleBody> liner = nullptr,
+                double offsetLow = 0.0, double offsetHigh = 0.0);
+    ~RingContact() override;
 
     ContactState initialState(double linerOffset) const override;
     void evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
                   const Eigen::Vector2d& x, const Eigen::VectorXd& y, ContactIterate& it, WorkTally& work) override;
-    void addModalLoad(const ContactStep&, const ContactIterate&, Eigen::VectorXd&, WorkTally&) const override {}
+    /// On a flexible liner: the ring's pressure on the liner's rows of f.
+    void addModalLoad(const ContactStep& step, const ContactIterate& it, Eigen::VectorXd& f,
+                      WorkTally& work) const override;
     double filmChange(const ContactStep&, const Eigen::VectorXd&, WorkTally&) const override { return 0.0; }
     /// Its loads change neither with y nor with the rigid motion: the motion columns are given, empty.
     void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x, const ContactIterate& it,
@@ -61,6 +74,11 @@ public:
 
     /// The minimum gap (m) where the asperities alone carry the ring's tension (the ring at rest).
     double restingGap() const;
+
+    /// The rows of the load grid on a flexible liner across the ring's height.
+    static constexpr int kLoadRows = 9;
+    /// The load grid (piston-frame z rows, θ columns round the bore; null on a rigid liner).
+    const lube::FilmGrid* loadGrid() const { return loadGrid_.get(); }
 
     bool carriesOil() const override { return oil_.has_value(); }
     std::optional<LinerFootprint> linerFootprint() const override;
@@ -79,6 +97,9 @@ private:
     const RingRadialStep& radialStep(const ContactStep& step, const ContactState& now, double guess);
     /// On the liner's oil layer: the iterate's film fractions, oil and flows.
     void oilFlows(const ContactStep& step, const ContactState& now, const RingRadialStep& r, ContactIterate& it) const;
+    /// On a flexible liner: the faces' film and asperity pressure lumped onto the load grid's rows
+    /// (each row the force of its part of the ring's height over its width), round the bore.
+    void linerLoad(const RingRadialStep& r, Eigen::VectorXd& load) const;
 
     RingSpec ring_;
     bool top_;
@@ -90,6 +111,8 @@ private:
     std::optional<RingOilExchange> oil_;
     OilSupplySpec supply_;
     int nodes_;  // the film's nodes across each face
+    std::unique_ptr<lube::FilmGrid> loadGrid_;      // on a flexible liner
+    std::unique_ptr<FlexibleSurface> linerSurface_;
     struct Cached {
         double gapNow, dt, velocity, pressure, supply;
         bool operator==(const Cached&) const = default;
