@@ -41,9 +41,23 @@ struct JfoTopology {
     std::vector<char> otherFilm;      // per adjacency entry: the other node is a Film node
     std::vector<int> boundaryFaces;   // faces with one Film and one Fixed or Void node
     std::vector<double> area;  // control-volume area per node (m²)
+    std::vector<int> filmRows;   // the Film nodes, ascending
+    std::vector<int> ringStart;  // per axial index i: where its Film nodes start in filmRows
+    std::vector<int> otherNodes; // the Fixed and Void nodes
 
     explicit JfoTopology(const FilmGrid& g) {
         for (int k = 0; k < g.size(); ++k) area.push_back(g.area(k));
+        ringStart.assign(static_cast<std::size_t>(g.nAxial()) + 1, 0);
+        for (int k = 0; k < g.size(); ++k) {
+            if (g.kind(k) != NodeKind::Film) {
+                otherNodes.push_back(k);
+                continue;
+            }
+            filmRows.push_back(k);
+            ++ringStart[static_cast<std::size_t>(g.axialIndex(k)) + 1];
+        }
+        for (int i = 0; i < g.nAxial(); ++i)
+            ringStart[static_cast<std::size_t>(i) + 1] += ringStart[static_cast<std::size_t>(i)];
         forEachFace(g, [&](int a, int b, bool axial, double L, double d) {
             if (g.kind(a) != NodeKind::Film && g.kind(b) != NodeKind::Film) return;
             faces.push_back({a, b, axial, L, d});
@@ -77,16 +91,23 @@ struct JfoTopology {
     }
 };
 
-inline std::vector<JfoFace> buildFaces(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta) {
-    std::vector<JfoFace> faces;
+inline void buildFaces(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta,
+                       std::vector<JfoFace>& faces) {
+    faces.clear();
     faces.reserve(t.faces.size());
     const double Uz = film.sumAxial(), Ut = film.sumCircumferential();
     for (const JfoTopology::FaceGeometry& f : t.faces) {
         const double hf = faceValue(g, film.h, f.a, f.b);
         faces.push_back({f.a, f.b, hf * hf * hf * f.L / (12.0 * eta * f.d), 0.5 * (f.axial ? Uz : Ut) * hf * f.L});
     }
-    return faces;
 }
+
+// The per-solve arrays of a JfoNetwork; a solver keeps one to reuse their memory.
+struct JfoNetworkStorage {
+    std::vector<JfoFace> faces;
+    std::vector<double> c, qo;  // per adjacency entry
+    std::vector<double> D, B;   // per node: Σ c_f, and the Couette outflow plus storage
+};
 
 // The discrete JFO problem of one solve (docs/lube.md, the JFO scheme): the faces, the node → face
 // adjacency and the storage terms; the balance of a node and the scaled mass residual.
@@ -95,19 +116,14 @@ public:
     // Balance of node k: F = D p_k − S + B φ_k − Sin (see the header).
     struct Balance { double D, S, B, Sin; };
 
+    // storage: arrays to reuse (nullptr: the network's own).
     JfoNetwork(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta, double dt,
-               const JfoState* previous, const std::vector<double>& inlet, double pcav)
+               const JfoState* previous, const std::vector<double>& inlet, double pcav,
+               JfoNetworkStorage* storage = nullptr)
         : g_(g), film_(film), dt_(dt), previous_(previous), inlet_(inlet), pcav_(pcav),
-          faces_(buildFaces(t, g, film, eta)), t_(t), area_(t.area.data()) {
-        // Per adjacency entry, contiguous per node: the face's conductance and its Couette
-        // coefficient out of the node (the loops below read these, not the faces).
-        c_.resize(t.adj.size());
-        qo_.resize(t.adj.size());
-        for (std::size_t q = 0; q < t.adj.size(); ++q) {
-            const JfoFace& f = faces_[static_cast<std::size_t>(t.adj[q])];
-            c_[q] = f.c;
-            qo_[q] = t.outward[q] ? f.q : -f.q;
-        }
+          s_(storage ? *storage : own_), t_(t), area_(t.area.data()) {
+        buildFaces(t, g, film, eta, s_.faces);
+        fillAdjacency();
     }
 
     // visit(m, c, qo) for each face of node k: its other node m, Poiseuille coefficient c and the
@@ -116,9 +132,9 @@ public:
     void forFaces(int k, Visit visit) const {
         const int* other = t_.other.data();
         for (int q = t_.start[static_cast<std::size_t>(k)]; q < t_.start[static_cast<std::size_t>(k) + 1]; ++q)
-            visit(other[q], c_[static_cast<std::size_t>(q)], qo_[static_cast<std::size_t>(q)]);
+            visit(other[q], c_[q], qo_[q]);
     }
-    const std::vector<JfoFace>& faces() const { return faces_; }
+    const std::vector<JfoFace>& faces() const { return s_.faces; }
     const JfoTopology& topology() const { return t_; }
     // Storage V h/dt of node k and the oil V φ_prev h_prev/dt it held (0, 0 when steady).
     double storage(int k) const { return dt_ > 0.0 ? area_[k] * film_.h[k] / dt_ : 0.0; }
@@ -129,22 +145,21 @@ public:
     double area(int k) const { return area_[k]; }
     double inlet(int m) const { return inlet_[static_cast<std::size_t>(m)]; }
 
+    // D and B do not depend on the iterate: summed once per solve (fillAdjacency), in this order.
     Balance balance(int k, const double* p, const double* phi) const {
-        Balance bl{0.0, 0.0, 0.0, 0.0};
+        const auto sk = static_cast<std::size_t>(k);
+        Balance bl{D_[sk], 0.0, B_[sk], 0.0};
         const int* other = t_.other.data();
         const char* film = t_.otherFilm.data();
-        for (int q = t_.start[static_cast<std::size_t>(k)]; q < t_.start[static_cast<std::size_t>(k) + 1]; ++q) {
-            const double c = c_[static_cast<std::size_t>(q)], qo = qo_[static_cast<std::size_t>(q)];
+        const double* cs = c_;
+        const double* qos = qo_;
+        for (int q = t_.start[sk]; q < t_.start[sk + 1]; ++q) {
+            const double qo = qos[q];
             const int m = other[q];
-            bl.D += c;
-            bl.S += c * p[m];
-            if (qo > 0.0) bl.B += qo;
-            else bl.Sin -= qo * (film[q] ? phi[m] : inlet(m));  // non-Film: its inlet fraction
+            bl.S += cs[q] * p[m];
+            if (qo < 0.0) bl.Sin -= qo * (film[q] ? phi[m] : inlet(m));  // non-Film: its inlet fraction
         }
-        if (transient()) {
-            bl.B += storage(k);
-            bl.Sin += previousOil(k);
-        }
+        if (transient()) bl.Sin += previousOil(k);
         return bl;
     }
 
@@ -165,16 +180,45 @@ public:
     }
 
 private:
+    // Per adjacency entry, contiguous per node: the face's conductance and its Couette
+    // coefficient out of the node (the loops read these, not the faces); per node D and B.
+    void fillAdjacency() {
+        const std::size_t na = t_.adj.size(), n = t_.area.size();
+        s_.c.resize(na);
+        s_.qo.resize(na);
+        s_.D.resize(n);
+        s_.B.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            double d = 0.0, b = 0.0;
+            for (int q = t_.start[k]; q < t_.start[k + 1]; ++q) {
+                const auto sq = static_cast<std::size_t>(q);
+                const JfoFace& f = s_.faces[static_cast<std::size_t>(t_.adj[sq])];
+                s_.c[sq] = f.c;
+                s_.qo[sq] = t_.outward[sq] ? f.q : -f.q;
+                d += s_.c[sq];
+                if (s_.qo[sq] > 0.0) b += s_.qo[sq];
+            }
+            if (transient()) b += storage(static_cast<int>(k));
+            s_.D[k] = d;
+            s_.B[k] = b;
+        }
+        c_ = s_.c.data();
+        qo_ = s_.qo.data();
+        D_ = s_.D.data();
+        B_ = s_.B.data();
+    }
+
     const FilmGrid& g_;
     const FilmState& film_;
     double dt_;
     const JfoState* previous_;
     const std::vector<double>& inlet_;
     double pcav_;
-    std::vector<JfoFace> faces_;
+    JfoNetworkStorage own_;
+    JfoNetworkStorage& s_;
     const JfoTopology& t_;
     const double* area_;
-    std::vector<double> c_, qo_;  // per adjacency entry
+    const double *c_ = nullptr, *qo_ = nullptr, *D_ = nullptr, *B_ = nullptr;
 };
 
 

@@ -2,7 +2,9 @@
 
 #include <Eigen/SparseCore>
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <limits>
 #include <stdexcept>
@@ -20,8 +22,8 @@ namespace {
 
 // The iterate a solve starts from (the warm start, else a flooded film) with the bounds and the
 // non-Film nodes' values imposed; returns the Film nodes.
-std::vector<int> startingIterate(const FilmGrid& g, const JfoResult* warmStart, const std::vector<double>& inlet,
-                                 double pcav, JfoResult& res) {
+const std::vector<int>& startingIterate(const FilmGrid& g, const JfoTopology& t, const JfoResult* warmStart,
+                                        const std::vector<double>& inlet, double pcav, JfoResult& res) {
     const int n = g.size();
     if (warmStart) {
         res.pressure = warmStart->pressure;
@@ -30,18 +32,15 @@ std::vector<int> startingIterate(const FilmGrid& g, const JfoResult* warmStart, 
         res.pressure = Eigen::VectorXd::Constant(n, std::max(pcav, g.ambientPressure()));
         res.fraction = Eigen::VectorXd::Ones(n);
     }
-    std::vector<int> rows;
-    for (int k = 0; k < n; ++k) {
-        if (g.kind(k) == NodeKind::Film) {
-            rows.push_back(k);
-            res.pressure[k] = std::max(res.pressure[k], pcav);
-            res.fraction[k] = std::clamp(res.fraction[k], 0.0, 1.0);
-        } else {
-            res.pressure[k] = g.prescribedPressure(k);
-            res.fraction[k] = g.kind(k) == NodeKind::Void ? 0.0 : inlet[static_cast<std::size_t>(k)];
-        }
+    for (int k : t.filmRows) {
+        res.pressure[k] = std::max(res.pressure[k], pcav);
+        res.fraction[k] = std::clamp(res.fraction[k], 0.0, 1.0);
     }
-    return rows;
+    for (int k : t.otherNodes) {
+        res.pressure[k] = g.prescribedPressure(k);
+        res.fraction[k] = g.kind(k) == NodeKind::Void ? 0.0 : inlet[static_cast<std::size_t>(k)];
+    }
+    return t.filmRows;
 }
 
 // Cold start of the active set from the Reynolds-condition solution (multigrid, nested): on a
@@ -194,36 +193,71 @@ void effectiveSqueeze(const JfoNetwork& net, const FilmGrid& g, const FilmState&
     }
 }
 
-// One Gauss–Seidel pass of the nodal JFO update (Ausas et al.; without over-relaxation) in the
-// direction of the Couette flow: each node's upstream neighbours are updated before it, so the
-// film fraction is transported through the cavities and a rupture or reformation front moves as
-// far as the flow carries it in one pass (repeated until φ no longer changes where the flow has
-// a circumferential part; once where it is axial only). Nodes marked in `held` keep their values.
+// The nodal JFO update of node k (Ausas et al.; without over-relaxation), its neighbours frozen.
+// It reads the neighbours' p (and its own φ where B = 0) and the film fraction of the
+// neighbours whose Couette flow enters k, not its own p.
+inline void nodalUpdate(const JfoNetwork& net, int k, double pcav, double* p, double* phi) {
+    const JfoNetwork::Balance bl = net.balance(k, p, phi);
+    const double phiStar = bl.B > 0.0 ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
+    if (bl.B > 0.0 && phiStar < 1.0) {  // cavitated: p = p_cav, φ from the balance
+        p[k] = pcav;
+        phi[k] = std::max(phiStar, 0.0);
+    } else {                            // full film: φ = 1, p from the balance
+        if (bl.B > 0.0) phi[k] = 1.0;
+        p[k] = std::max(pcav, (bl.S + bl.Sin - bl.B * phi[k]) / bl.D);
+    }
+}
+
+bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// Marks in `stale` the nodes whose nodal update reads a value of node k that changed: all its
+// neighbours when p_k changed, those its Couette flow enters when φ_k changed.
+void markReaders(const JfoNetwork& net, int k, bool pChanged, bool phiChanged, std::vector<char>& stale) {
+    if (!pChanged && !phiChanged) return;
+    net.forFaces(k, [&](int m, double, double qo) {
+        if (pChanged || qo > 0.0) stale[static_cast<std::size_t>(m)] = 1;
+    });
+}
+
+// One Gauss–Seidel pass of the nodal JFO update in the direction of the Couette flow: each
+// node's upstream neighbours are updated before it, so the film fraction is transported through
+// the cavities and a rupture or reformation front moves as far as the flow carries it in one pass
+// (repeated until φ no longer changes where the flow has a circumferential part; once where it is
+// axial only). Nodes marked in `held` keep their values. With `stale`, only the nodes marked
+// there are updated (the update of any other gives its value bit for bit, its inputs unchanged
+// since it was last updated), and the nodes reading a value that changes are marked.
 void sweepAlongFlow(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, double pcav, double* p,
-                    double* phi, const std::vector<char>* held = nullptr) {
-    const int nz = g.nAxial(), nt = g.nTheta();
+                    double* phi, const std::vector<char>* held = nullptr, std::vector<char>* stale = nullptr) {
+    const JfoTopology& t = net.topology();
+    const int nz = g.nAxial();
     const bool downZ = film.sumAxial() < 0.0, downT = film.sumCircumferential() < 0.0;
     for (int sweep = 0; sweep < 200; ++sweep) {
         double change = 0.0;
         for (int ii = 0; ii < nz; ++ii) {
-            const int i = downZ ? nz - 1 - ii : ii;
-            for (int jj = 0; jj < nt; ++jj) {
-                const int k = g.index(i, downT ? nt - 1 - jj : jj);
-                if (g.kind(k) != NodeKind::Film || (held && (*held)[static_cast<std::size_t>(k)])) continue;
-                const JfoNetwork::Balance bl = net.balance(k, p, phi);
-                const double phiStar = bl.B > 0.0 ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
-                const double before = phi[k];
-                if (bl.B > 0.0 && phiStar < 1.0) {  // cavitated: p = p_cav, φ from the balance
-                    p[k] = pcav;
-                    phi[k] = std::max(phiStar, 0.0);
-                } else {                            // full film: φ = 1, p from the balance
-                    if (bl.B > 0.0) phi[k] = 1.0;
-                    p[k] = std::max(pcav, (bl.S + bl.Sin - bl.B * phi[k]) / bl.D);
-                }
+            const auto i = static_cast<std::size_t>(downZ ? nz - 1 - ii : ii);
+            const int b = t.ringStart[i], e = t.ringStart[i + 1];
+            for (int jj = 0; jj < e - b; ++jj) {
+                const int k = t.filmRows[static_cast<std::size_t>(downT ? e - 1 - jj : b + jj)];
+                const auto sk = static_cast<std::size_t>(k);
+                if (held && (*held)[sk]) continue;
+                if (stale && !(*stale)[sk]) continue;
+                const double pBefore = p[k], before = phi[k];
+                nodalUpdate(net, k, pcav, p, phi);
                 change = std::max(change, std::abs(phi[k] - before));
+                if (!stale) continue;
+                (*stale)[sk] = 0;
+                markReaders(net, k, !sameBits(p[k], pBefore), !sameBits(phi[k], before), *stale);
             }
         }
         if (change <= 1e-15 || film.sumCircumferential() == 0.0) return;
+    }
+}
+
+// After the partition of the pad changed its nodes: they and their neighbours are to be updated.
+void markPad(const JfoNetwork& net, const std::vector<int>& pad, std::vector<char>& stale) {
+    for (int k : pad) {
+        stale[static_cast<std::size_t>(k)] = 1;
+        net.forFaces(k, [&](int m, double, double) { stale[static_cast<std::size_t>(m)] = 1; });
     }
 }
 
@@ -269,7 +303,8 @@ bool fullFilmPadSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState&
     int full = 0;
     for (int k : rows) full += phi[k] >= 1.0 && p[k] > pcav;
     if (static_cast<double>(full) > kPadShare * static_cast<double>(rows.size())) return false;
-    sweepAlongFlow(net, g, film, pcav, p, phi);
+    std::vector<char> stale(static_cast<std::size_t>(g.size()), 1);
+    sweepAlongFlow(net, g, film, pcav, p, phi, nullptr, &stale);
     std::vector<char> inPad;
     int factorizations = 0;
     for (int round = 1; round <= kPadRounds; ++round) {
@@ -277,7 +312,8 @@ bool fullFilmPadSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState&
         if (static_cast<double>(pad.size()) > kPadShare * static_cast<double>(rows.size())) return false;
         if (!pad.empty() && settlePartition(net, g, pad, o, lu, p, phi, factorizations) != Partition::Settled)
             return false;
-        sweepAlongFlow(net, g, film, pcav, p, phi, &inPad);
+        markPad(net, pad, stale);
+        sweepAlongFlow(net, g, film, pcav, p, phi, &inPad, &stale);
         res.iterations = round;
         res.padNodes = static_cast<int>(pad.size());
         res.residual = net.residual(rows, p, phi);
@@ -343,6 +379,7 @@ JfoSolver::JfoSolver(FilmGrid grid, Lubricant lubricant, JfoOptions options)
     : grid_(std::move(grid)), lubricant_(lubricant), options_(options),
       inlet_(static_cast<std::size_t>(grid_.size()), 1.0), lu_(std::make_unique<SparseLuFactor>()) {
     topology_ = std::make_unique<JfoTopology>(grid_);
+    netStorage_ = std::make_unique<JfoNetworkStorage>();
     if (lubricant_.pressureDependent())
         throw std::invalid_argument("JfoSolver: only a constant-property lubricant is supported");
     if (!std::isfinite(options_.cavitationPressure))
@@ -378,10 +415,11 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
         throw std::invalid_argument("JfoSolver: a transient step needs the previous h and film "
                                     "fraction on every node");
     const double pcav = options_.cavitationPressure;
-    const JfoNetwork net(*topology_, g, film, lubricant_.referenceViscosity(), dt, previous, inlet_, pcav);
+    const JfoNetwork net(*topology_, g, film, lubricant_.referenceViscosity(), dt, previous, inlet_, pcav,
+                         netStorage_.get());
     JfoResult res;
     const bool warm = warmStart && warmStart->pressure.size() == n && warmStart->fraction.size() == n;
-    const std::vector<int> rows = startingIterate(g, warm ? warmStart : nullptr, inlet_, pcav, res);
+    const std::vector<int>& rows = startingIterate(g, *topology_, warm ? warmStart : nullptr, inlet_, pcav, res);
     bool solved = false;
     if (options_.method == JfoMethod::Multigrid) {
         if (!multigrid_) {

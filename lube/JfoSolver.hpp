@@ -62,6 +62,7 @@ namespace flexehd::lube {
 class SparseLuFactor;
 class ReynoldsSolver;
 struct JfoTopology;
+struct JfoNetworkStorage;
 
 /// How the discrete JFO problem is solved (the same problem and convergence criterion).
 enum class JfoMethod {
@@ -151,6 +152,8 @@ private:
     mutable std::unique_ptr<ReynoldsSolver> multigrid_;  // Multigrid: built on the first solve
     mutable std::unique_ptr<SparseLuFactor> padLu_;     // Multigrid: the full-film pad's LU
     std::unique_ptr<JfoTopology> topology_;              // the faces touching Film nodes, once
+    // the per-solve arrays of the discrete problem, their memory reused (not thread-safe, as lu_)
+    std::unique_ptr<JfoNetworkStorage> netStorage_;
 };
 
 }  // namespace flexehd::lube
