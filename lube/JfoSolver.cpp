@@ -261,11 +261,36 @@ void markPad(const JfoNetwork& net, const std::vector<int>& pad, std::vector<cha
     }
 }
 
+// The rank of each node in one fill-reducing elimination order of all Film nodes' graph (AMD),
+// computed once per grid: each pad, its nodes taken in this order, needs no ordering of its own
+// (docs/lube.md §3b). Non-Film nodes rank last.
+std::vector<int> filmEliminationRank(const JfoTopology& t, int n) {
+    std::vector<int> idx(static_cast<std::size_t>(n), -1);
+    const int nf = static_cast<int>(t.filmRows.size());
+    for (int r = 0; r < nf; ++r) idx[static_cast<std::size_t>(t.filmRows[static_cast<std::size_t>(r)])] = r;
+    std::vector<Eigen::Triplet<double, int>> trip;
+    for (int r = 0; r < nf; ++r) {
+        const auto k = static_cast<std::size_t>(t.filmRows[static_cast<std::size_t>(r)]);
+        trip.emplace_back(r, r, 1.0);
+        for (int q = t.start[k]; q < t.start[k + 1]; ++q)
+            if (t.otherFilm[static_cast<std::size_t>(q)])
+                trip.emplace_back(r, idx[static_cast<std::size_t>(t.other[static_cast<std::size_t>(q)])], 1.0);
+    }
+    JfoMatrix A(nf, nf);
+    A.setFromTriplets(trip.begin(), trip.end());
+    A.makeCompressed();
+    const std::vector<int> order = SparseLuFactor::fillReducingOrder(A);
+    std::vector<int> rank(static_cast<std::size_t>(n), n);
+    for (int i = 0; i < nf; ++i)
+        rank[static_cast<std::size_t>(t.filmRows[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])])] = i;
+    return rank;
+}
+
 // The full-film pad of a starved film and its rim: the Film nodes within kPadRim faces of a
-// full-film node (φ = 1, p > p_cav), marked in inPad.
+// full-film node (φ = 1, p > p_cav), marked in inPad; in the order of rank (the elimination order).
 constexpr int kPadRim = 2;
 std::vector<int> fullFilmPad(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows, const double* p,
-                             const double* phi, double pcav, std::vector<char>& inPad) {
+                             const double* phi, double pcav, const std::vector<int>& rank, std::vector<char>& inPad) {
     inPad.assign(static_cast<std::size_t>(g.size()), 0);
     std::vector<int> pad;
     for (int k : rows)
@@ -280,7 +305,8 @@ std::vector<int> fullFilmPad(const JfoNetwork& net, const FilmGrid& g, const std
             });
         from = to;
     }
-    std::sort(pad.begin(), pad.end());
+    std::sort(pad.begin(), pad.end(),
+              [&](int a, int b) { return rank[static_cast<std::size_t>(a)] < rank[static_cast<std::size_t>(b)]; });
     return pad;
 }
 
@@ -295,7 +321,7 @@ std::vector<int> fullFilmPad(const JfoNetwork& net, const FilmGrid& g, const std
 constexpr double kPadShare = 0.25;
 constexpr int kPadRounds = 8;
 bool fullFilmPadSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, const std::vector<int>& rows,
-                      const JfoOptions& o, SparseLuFactor& lu, JfoResult& res) {
+                      const JfoOptions& o, const std::vector<int>& rank, SparseLuFactor& lu, JfoResult& res) {
     const double pcav = o.cavitationPressure;
     double* p = res.pressure.data();
     double* phi = res.fraction.data();
@@ -308,7 +334,7 @@ bool fullFilmPadSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState&
     std::vector<char> inPad;
     int factorizations = 0;
     for (int round = 1; round <= kPadRounds; ++round) {
-        const std::vector<int> pad = fullFilmPad(net, g, rows, p, phi, pcav, inPad);
+        const std::vector<int> pad = fullFilmPad(net, g, rows, p, phi, pcav, rank, inPad);
         if (static_cast<double>(pad.size()) > kPadShare * static_cast<double>(rows.size())) return false;
         if (!pad.empty() && settlePartition(net, g, pad, o, lu, p, phi, factorizations) != Partition::Settled)
             return false;
@@ -431,8 +457,11 @@ JfoResult JfoSolver::solve(const FilmState& film, double dt, const JfoState* pre
             multigrid_ = std::make_unique<ReynoldsSolver>(g, lubricant_, ro);
         }
         if (warm) {
-            if (!padLu_) padLu_ = std::make_unique<SparseLuFactor>();
-            solved = res.padStage = fullFilmPadSolve(net, g, film, rows, options_, *padLu_, res);
+            if (!padLu_) {
+                padRank_ = filmEliminationRank(*topology_, n);
+                padLu_ = std::make_unique<SparseLuFactor>(SparseLuFactor::Ordering::Given);
+            }
+            solved = res.padStage = fullFilmPadSolve(net, g, film, rows, options_, padRank_, *padLu_, res);
             if (!solved) res.padNodes = 0;
         }
         if (!solved) solved = multigridSolve(net, g, film, dt, previous, rows, options_, warm, *multigrid_, res);

@@ -151,6 +151,7 @@ private:
     std::unique_ptr<SparseLuFactor> lu_;
     mutable std::unique_ptr<ReynoldsSolver> multigrid_;  // Multigrid: built on the first solve
     mutable std::unique_ptr<SparseLuFactor> padLu_;     // Multigrid: the full-film pad's LU
+    mutable std::vector<int> padRank_;  // Multigrid: each node's rank in the pad's elimination order
     std::unique_ptr<JfoTopology> topology_;              // the faces touching Film nodes, once
     // the per-solve arrays of the discrete problem, their memory reused (not thread-safe, as lu_)
     std::unique_ptr<JfoNetworkStorage> netStorage_;

@@ -20,7 +20,9 @@ struct SparseLuFactor::Klu {
     }
 };
 
-SparseLuFactor::SparseLuFactor() : klu_(std::make_unique<Klu>()) {}
+SparseLuFactor::SparseLuFactor(Ordering ordering) : klu_(std::make_unique<Klu>()), ordering_(ordering) {
+    if (ordering_ == Ordering::Given) klu_->common.btf = 0;
+}
 SparseLuFactor::~SparseLuFactor() = default;
 
 bool SparseLuFactor::factor(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A) {
@@ -38,7 +40,9 @@ bool SparseLuFactor::factor(const Eigen::SparseMatrix<double, Eigen::ColMajor, i
         if (k.symbolic) klu_free_symbolic(&k.symbolic, &k.common);
         colStart_.assign(Ap, Ap + n + 1);
         rows_.assign(Ai, Ai + nnz);
-        k.symbolic = klu_analyze(n, colStart_.data(), rows_.data(), &k.common);
+        k.symbolic = ordering_ == Ordering::Given
+                         ? klu_analyze_given(n, colStart_.data(), rows_.data(), nullptr, nullptr, &k.common)
+                         : klu_analyze(n, colStart_.data(), rows_.data(), &k.common);
         if (!k.symbolic) return false;
         k.n = n;
         ++analyses_;
@@ -56,6 +60,19 @@ bool SparseLuFactor::factor(const Eigen::SparseMatrix<double, Eigen::ColMajor, i
     }
     k.numeric = klu_factor(colStart_.data(), rows_.data(), values, k.symbolic, &k.common);
     return k.numeric && k.common.status == KLU_OK;
+}
+
+std::vector<int> SparseLuFactor::fillReducingOrder(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A) {
+    if (!A.isCompressed() || A.rows() != A.cols())
+        throw std::invalid_argument("SparseLuFactor: needs a square compressed matrix");
+    const int n = static_cast<int>(A.cols());
+    std::vector<int> Ap(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
+    std::vector<int> Ai(A.innerIndexPtr(), A.innerIndexPtr() + Ap[static_cast<std::size_t>(n)]);
+    Klu k;
+    k.common.btf = 0;  // one block: Q is AMD's order of the whole matrix
+    k.symbolic = klu_analyze(n, Ap.data(), Ai.data(), &k.common);
+    if (!k.symbolic) throw std::runtime_error("SparseLuFactor: the fill-reducing ordering failed");
+    return std::vector<int>(k.symbolic->Q, k.symbolic->Q + n);
 }
 
 Eigen::VectorXd SparseLuFactor::solve(const Eigen::VectorXd& b) const {

@@ -5,10 +5,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
+#include <numeric>
 #include <vector>
 
 #include "lube/FilmIntegrals.hpp"
 #include "lube/JfoSolver.hpp"
+#include "lube/SparseLuFactor.hpp"
 #include "lube/ReynoldsSolver.hpp"
 #include "tests/lube/LubeTestSupport.hpp"
 
@@ -387,4 +390,33 @@ TEST(Jfo, AStarvedPadSolvedOnItsOwnMatchesTheActiveSetOverAllNodes) {
     EXPECT_LT(c.pressure, 1e-6);
     EXPECT_LT(c.fraction, 1e-6);
     EXPECT_LT(c.mass, 1e-8);
+}
+
+// The pad's LU in a given elimination order (docs/lube.md §3b): AMD's order of a grid Laplacian is
+// a permutation, and the factorization in that order (Ordering::Given) solves the system.
+TEST(SparseLuFactor, FactorsInAGivenFillReducingOrder) {
+    const int m = 6, n = m * m;
+    std::vector<Eigen::Triplet<double, int>> trip;
+    for (int i = 0; i < m; ++i)
+        for (int j = 0; j < m; ++j) {
+            const int k = i * m + j;
+            trip.emplace_back(k, k, 4.5);
+            if (i > 0) trip.emplace_back(k, k - m, -1.0), trip.emplace_back(k - m, k, -1.2);
+            if (j > 0) trip.emplace_back(k, k - 1, -1.1), trip.emplace_back(k - 1, k, -0.9);
+        }
+    Eigen::SparseMatrix<double, Eigen::ColMajor, int> A(n, n);
+    A.setFromTriplets(trip.begin(), trip.end());
+    A.makeCompressed();
+    std::vector<int> order = flexehd::lube::SparseLuFactor::fillReducingOrder(A);
+    std::vector<int> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<int> identity(static_cast<std::size_t>(n));
+    std::iota(identity.begin(), identity.end(), 0);
+    EXPECT_EQ(sorted, identity);
+    flexehd::lube::SparseLuFactor lu(flexehd::lube::SparseLuFactor::Ordering::Given);
+    ASSERT_TRUE(lu.factor(A));
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+    EXPECT_LT((lu.solve(A * x) - x).cwiseAbs().maxCoeff(), 1e-12);
+    ASSERT_TRUE(lu.factor(A));  // the same pattern: no new analysis
+    EXPECT_EQ(lu.analyses(), 1);
 }
