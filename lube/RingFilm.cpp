@@ -191,18 +191,27 @@ RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eige
         throw std::invalid_argument("RingFilm: the film fed by an oil layer solved steady: the squeeze rate must be 0 "
                                     "(RingFilm::step for a squeezing film)");
     const int n = static_cast<int>(x_.size());
-    const double eta = lubricant_.referenceViscosity(), dx = x_[1] - x_[0];
+    const double dx = x_[1] - x_[0];
     RingFilmResult r;
     r.x = x_;
     r.h = drop_.array() + s.minimumGap;
     if (starved) solveStarved(s, dt, previous, r, cavitated);
     else solveFlooded(s, r, cavitated);
+    for (int i = 0; i + 1 < n; ++i) r.load += 0.5 * (r.p[i] + r.p[i + 1]) * dx;  // trapezoids between nodes
+    if (s.withFriction) addFriction(s, r);
+    return r;
+}
+
+void RingFilm::addFriction(const RingFilmState& s, RingFilmResult& r) const {
+    const int n = static_cast<int>(x_.size());
+    const double eta = lubricant_.referenceViscosity(), dx = x_[1] - x_[0];
+    const bool starved = !std::isnan(s.supplyFilm);
     // The Couette shear sees the nominal gap (the film's may be floored): Patir & Cheng's factor
     // φ_f(h/σ)/h of the rough surfaces (docs/lube.md §5), 1/h when smooth.
     const double nominal = std::isnan(s.nominalGap) ? s.minimumGap : s.nominalGap;
+    r.friction = 0.0;
     for (int i = 0; i + 1 < n; ++i) {  // trapezoids between nodes
         const double hm = 0.5 * (r.h[i] + r.h[i + 1]), dpdx = (r.p[i + 1] - r.p[i]) / dx;
-        r.load += 0.5 * (r.p[i] + r.p[i + 1]) * dx;
         // Shear on the ring (u = 0) from the liner's Couette flow, on the oil (φ; none where the
         // Reynolds condition cavitates both nodes), and the Poiseuille flow.
         const bool cavitated = !starved && r.p[i] <= pcav_ && r.p[i + 1] <= pcav_;
@@ -211,7 +220,6 @@ RingFilmResult RingFilm::solveWith(const RingFilmState& s, double dt, const Eige
         shear_.couette(nominal + 0.5 * (drop_[i] + drop_[i + 1]), couette, slope);
         r.friction += (phi * eta * s.slidingSpeed * couette - 0.5 * hm * dpdx) * dx;
     }
-    return r;
 }
 
 void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::VectorXd* previous, RingFilmResult& r,

@@ -39,6 +39,9 @@ struct RingFilmState {
     /// The minimum gap the Couette shear sees (m; NaN: minimumGap): the separation of the rough
     /// surfaces' mean planes where the film is solved at a floor above it (≤ 0: they overlap).
     double nominalGap = std::numeric_limits<double>::quiet_NaN();
+    /// Whether the solve computes the friction too (false: pressure, load and flows only, the
+    /// friction left 0 for RingFilm::addFriction).
+    bool withFriction = true;
 };
 
 struct RingFilmResult {
@@ -72,6 +75,9 @@ public:
     /// the oil's change is dt × the edges' inflow. cavitated: as for solve.
     RingFilmResult step(const RingFilmState& s, double dt, const Eigen::VectorXd& previousFraction,
                         std::vector<char>* cavitated = nullptr) const;
+
+    /// The film's friction (r.friction) for the state s it was solved for (a solve without it).
+    void addFriction(const RingFilmState& s, RingFilmResult& r) const;
 
     const RingFaceProfile& profile() const { return profile_; }
 

@@ -58,8 +58,10 @@ double RingRadialMotion::asperityLoad(double h) const {
 
 double RingRadialMotion::faceFilms(const lube::RingFilmState& c, double dt, const RingSupply* supply,
                                    RingRadialStep& s, std::vector<std::vector<char>>& cavitated) const {
+    s.states.resize(supply ? static_cast<std::size_t>(faces_) : 1);
     if (!supply) {  // flooded: the faces are alike
         s.faces.resize(1);
+        s.states[0] = c;
         s.faces[0] = film_.solve(c, &cavitated[0]);
         return s.faces[0].load;
     }
@@ -72,6 +74,7 @@ double RingRadialMotion::faceFilms(const lube::RingFilmState& c, double dt, cons
         const auto f = static_cast<std::size_t>(upwards ? k : faces_ - 1 - k);
         lube::RingFilmState fc = c;
         fc.supplyFilm = film;
+        s.states[f] = fc;
         s.faces[f] = film_.step(fc, dt, supply->previousFraction[f], &cavitated[f]);
         load += s.faces[f].load;
         const double out = -(upwards ? s.faces[f].inflowHigh : s.faces[f].inflowLow);
@@ -97,6 +100,7 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
     std::vector<std::vector<char>> cavitated(static_cast<std::size_t>(faces_));
     auto excess = [&](double h) {
         lube::RingFilmState c = conditions;
+        c.withFriction = false;  // the trials need the load; the balance's film gets its friction at the end
         c.minimumGap = std::max(h, floor);
         c.nominalGap = h;
         c.squeezeRate = (c.minimumGap - std::max(gapNow, floor)) / dt;
@@ -131,9 +135,14 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
             fhi = excess(hi);
         }
     }
+    // The balance's films with their friction.
+    auto balanced = [&]() -> RingRadialStep {
+        for (std::size_t f = 0; f < s.faces.size(); ++f) film_.addFriction(s.states[f], s.faces[f]);
+        return s;
+    };
     if (flo == 0.0 || fhi == 0.0) {
         excess(flo == 0.0 ? lo : hi);
-        return s;
+        return balanced();
     }
     // Regula falsi with the Illinois modification (superlinear), bisection where the secant
     // leaves the bracket.
@@ -142,7 +151,7 @@ RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::Ring
         double h = hi - fhi * (hi - lo) / (fhi - flo);
         if (!(h > lo && h < hi)) h = 0.5 * (lo + hi);
         const double f = excess(h);
-        if (std::abs(f) <= 1e-10 * load || hi - lo <= resolution) return s;
+        if (std::abs(f) <= 1e-10 * load || hi - lo <= resolution) return balanced();
         if (f > 0.0) {
             lo = h;
             flo = f;

@@ -40,8 +40,9 @@ struct RingRadialStep {
     double squeezeRate = 0.0;   ///< (h_min − h_min,n)/Δt (m/s)
     double filmLoad = 0.0;      ///< N/m, per face (the faces' mean)
     double asperityLoad = 0.0;  ///< N/m, per face
-    /// Each face's film, bottom first (flooded: one, the faces being alike).
+    /// Each face's film, bottom first (flooded: one, the faces being alike), and its state.
     std::vector<lube::RingFilmResult> faces;
+    std::vector<lube::RingFilmState> states;
 };
 
 class RingRadialMotion {
