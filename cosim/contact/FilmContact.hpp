@@ -22,6 +22,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -82,6 +83,15 @@ struct ContactIterate {
     double layerLeft = 0.0;  ///< m, a ring on the liner's layer: the layer it leaves behind (outflow / |U|)
     Eigen::VectorXd linerLoad;  ///< Pa, a ring on a flexible liner: its pressure on the liner, on its load grid
 };
+
+/// The oil balance after an accepted step of dt (s) from `b`: the iterate's flows in and out
+/// through the edges and out at the sides, as volumes.
+inline OilBalance afterStep(OilBalance b, const ContactIterate& it, double dt) {
+    for (Eigen::Index j = 0; j < it.inflowLow.size(); ++j)
+        for (double q : {it.inflowLow[j], it.inflowHigh[j]}) (q > 0.0 ? b.edgeIn : b.edgeOut) += std::abs(q) * dt;
+    b.sideOut -= it.sideInflow * dt;
+    return b;
+}
 
 /// The change of a contact's loads with the modal coordinates y at an iterate, affine in the
 /// step's rate r = a0/dt (the elastic squeeze term): δload = (loadH + r loadRate) δy and

@@ -115,11 +115,7 @@ void MassConservingFilm::edgeFlows(const lube::JfoResult& r, ContactIterate& it)
 void MassConservingFilm::accept(const ContactStep& step, const ContactState& now, const ContactIterate& it,
                                 ContactState& s) const {
     s.fraction = it.fraction;
-    s.oilBalance = now.oilBalance;
-    OilBalance& b = s.oilBalance;
-    for (int j = 0; j < grid_.nTheta(); ++j)
-        for (double q : {it.inflowLow[j], it.inflowHigh[j]}) (q > 0.0 ? b.edgeIn : b.edgeOut) += std::abs(q) * step.dt;
-    b.sideOut -= it.sideInflow * step.dt;
+    s.oilBalance = afterStep(now.oilBalance, it, step.dt);
 }
 
 void MassConservingFilm::exchangeOil(const ContactState& now, const ContactState& next, const ContactIterate& it,

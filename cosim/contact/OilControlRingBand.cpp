@@ -65,11 +65,7 @@ void OilControlRingBand::linearize(const ContactStep& /*step*/, const ContactSta
 ContactState OilControlRingBand::accepted(const ContactStep& step, const ContactState& now,
                                           const ContactIterate& it) const {
     ContactState s = initialState(step.linerOffset);
-    s.oilBalance = now.oilBalance;
-    for (Eigen::Index j = 0; j < it.inflowLow.size(); ++j)
-        for (double q : {it.inflowLow[j], it.inflowHigh[j]})
-            (q > 0.0 ? s.oilBalance.edgeIn : s.oilBalance.edgeOut) += std::abs(q) * step.dt;
-    s.oilBalance.sideOut -= it.sideInflow * step.dt;
+    s.oilBalance = afterStep(now.oilBalance, it, step.dt);
     return s;
 }
 

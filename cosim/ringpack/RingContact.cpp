@@ -261,11 +261,7 @@ ContactState RingContact::accepted(const ContactStep& step, const ContactState& 
     s.linerOffset = step.linerOffset;
     s.minGap = it.minGap;
     s.fraction = it.fraction;
-    s.oilBalance = now.oilBalance;
-    for (Eigen::Index j = 0; j < it.inflowLow.size(); ++j)
-        for (double q : {it.inflowLow[j], it.inflowHigh[j]})
-            (q > 0.0 ? s.oilBalance.edgeIn : s.oilBalance.edgeOut) += std::abs(q) * step.dt;
-    s.oilBalance.sideOut -= it.sideInflow * step.dt;
+    s.oilBalance = afterStep(now.oilBalance, it, step.dt);
     return s;
 }
 
