@@ -108,6 +108,9 @@ struct ContactSpec {
     double coatingModulus = 8e9;          ///< Pa, Young's modulus of the coating
     double coatingPoisson = 0.3;          ///< Poisson's ratio of the coating
     double hardContactStiffness = 0.0;    ///< Pa/m, K given directly (> 0 overrides the coating)
+    /// Coefficient of restitution of an impact on the hard contact (0 < e ≤ 1; 1: elastic, no
+    /// damping; docs/lube.md §4).
+    double restitution = 1.0;
     /// Archard wear coefficients k (m²/N) of the skirt and the liner: wear depth rate k p_c |u|
     /// (docs/coupling.md §7); 0 = no wear map of that surface.
     double pistonWearCoefficient = 0.0;

@@ -16,7 +16,7 @@ void readContact(const YamlSection& top, ContactSpec& c) {
         top.source(), top.get("contact"), "contact",
         {"sigma", "beta", "asperity_density", "composite_modulus", "boundary_friction", "piston_youngs_modulus",
          "piston_poisson_ratio", "liner_youngs_modulus", "liner_poisson_ratio", "coating_thickness",
-         "coating_youngs_modulus", "coating_poisson_ratio", "hard_contact_stiffness", "piston_wear_coefficient",
+         "coating_youngs_modulus", "coating_poisson_ratio", "hard_contact_stiffness", "restitution", "piston_wear_coefficient",
          "liner_wear_coefficient"});
     c.sigma = number(s, "sigma", {"composite rms roughness", "m"}, Sign::Positive, c.sigma);
     c.beta = number(s, "beta", {"asperity tip radius", "m"}, Sign::Positive, c.beta);
@@ -79,6 +79,11 @@ void readContact(const YamlSection& top, ContactSpec& c) {
                fmt::format("expected a Poisson's ratio in (-1, 0.5), got {:g}", c.coatingPoisson));
     c.hardContactStiffness = number(s, "hard_contact_stiffness", {"contact stiffness", "Pa/m"}, Sign::Positive,
                                     c.hardContactStiffness);
+    c.restitution = number(s, "restitution", {"coefficient of restitution", ""}, Sign::Positive, c.restitution);
+    if (c.restitution > 1.0)
+        s.fail("restitution",
+               fmt::format("expected a coefficient of restitution in (0, 1] (1: an elastic impact), got {:g}",
+                           c.restitution));
 }
 
 }  // namespace flexehd::cosim::casefile

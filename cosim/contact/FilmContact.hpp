@@ -58,6 +58,9 @@ struct ContactState {
     Eigen::VectorXd hTotal;  ///< m, rigid + elastic, unfloored (< 0: overlap)
     Eigen::VectorXd p;       ///< Pa, gauge film pressure
     Eigen::VectorXd fraction;  ///< mass-conserving film: film fraction φ per node (empty: Reynolds)
+    /// m/s, the damped hard contact's impact speed per node (0 where the surfaces do not overlap;
+    /// empty: none anywhere)
+    Eigen::VectorXd impactSpeed;
     double linerOffset = 0.0;  ///< m, the step's liner offset
     OilBalance oilBalance;     ///< mass-conserving film: cumulative volumes
     /// m, smallest unfloored film thickness over the film's nodes (< 0: the surfaces overlap;
@@ -70,6 +73,8 @@ struct ContactIterate {
     Eigen::VectorXd h, hRigid, hTotal, dhdt, p;  ///< as ContactState; dhdt the squeeze rate (m/s)
     Eigen::VectorXd pc;      ///< Pa, contact pressure (asperities + hard contact)
     Eigen::VectorXd pcHard;  ///< Pa, its hard-contact part
+    Eigen::VectorXd impactSpeed;  ///< m/s, as ContactState (a damped hard contact only)
+    Eigen::VectorXd approach;     ///< m/s, −ḣ where the damped hard contact acts (0 elsewhere)
     double hardForce = 0.0;  ///< N, lateral (x) force of the hard contact on the piston
     double minGap = 0.0;     ///< m, smallest unfloored film thickness (< 0: the surfaces overlap)
     int floored = 0;         ///< nodes where the film equation saw the floor, not hTotal

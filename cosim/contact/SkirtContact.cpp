@@ -36,7 +36,8 @@ SkirtContact::SkirtContact(const EngineCase& c, const CaseBodies& bodies, std::f
         foundation_.emplace(c.contact.hardContactStiffness > 0.0
                                 ? c.contact.hardContactStiffness
                                 : lube::ElasticFoundation::layerStiffness(c.contact.coatingModulus, c.contact.coatingPoisson,
-                                                                          c.contact.coatingThickness));
+                                                                          c.contact.coatingThickness),
+                            c.contact.restitution);
     }
     if (bodies.piston) {
         piston_ = facingSurface(c, bodies.piston, c.pistonBody, "piston", FlexibleSurface::Side::Piston, film_.grid());
@@ -81,7 +82,7 @@ void SkirtContact::evaluate(const ContactStep& step, const ContactState& now, co
                             const Eigen::Vector2d& x, const Eigen::VectorXd& y, ContactIterate& it, WorkTally& work) {
     filmThickness(step, x, y, it, work);
     const fem::Stopwatch t0;
-    contactAndFloor(it);
+    contactAndFloor(step, now, before, it);
     solveFilm(step, now, before, it, work);
     work.film += t0.seconds();
 }
@@ -109,7 +110,8 @@ void SkirtContact::filmThickness(const ContactStep& step, const Eigen::Vector2d&
     work.film += rigidSeconds;
 }
 
-void SkirtContact::contactAndFloor(ContactIterate& it) const {
+void SkirtContact::contactAndFloor(const ContactStep& step, const ContactState& now, const ContactState& before,
+                                   ContactIterate& it) const {
     const lube::FilmGrid& g = film_.grid();
     // Where the surfaces touch or overlap, the contact pressure of the unfloored h (asperities,
     // and the coating's hard contact below h = 0) carries the load; the Reynolds equation sees h
@@ -119,6 +121,13 @@ void SkirtContact::contactAndFloor(ContactIterate& it) const {
     it.hTotal = it.h;
     it.pc = Eigen::VectorXd::Zero(g.size());
     it.pcHard = Eigen::VectorXd::Zero(g.size());
+    if (foundation_ && foundation_->damped()) {
+        it.impactSpeed = Eigen::VectorXd::Zero(g.size());
+        it.approach = Eigen::VectorXd::Zero(g.size());
+    } else {
+        it.impactSpeed.resize(0);
+        it.approach.resize(0);
+    }
     it.minGap = std::numeric_limits<double>::infinity();
     it.hardForce = 0.0;
     it.floored = 0;
@@ -127,7 +136,7 @@ void SkirtContact::contactAndFloor(ContactIterate& it) const {
         it.minGap = std::min(it.minGap, it.h[k]);
         if (contact_) {
             double asperity = 0.0, hard = 0.0;
-            contactPressure(it.h[k], asperity, hard);
+            contactPressure(step, now, before, k, it, asperity, hard);
             it.pc[k] = asperity + hard;
             if (hard > 0.0) {
                 it.pcHard[k] = hard;
@@ -219,6 +228,7 @@ ContactState SkirtContact::accepted(const ContactStep& step, const ContactState&
     s.p = it.p;
     s.linerOffset = step.linerOffset;
     s.minGap = it.minGap;
+    s.impactSpeed = it.impactSpeed;
     equation_->accept(step, now, it, s);
     return s;
 }
@@ -242,14 +252,34 @@ void SkirtContact::checkLoadMapping(const ContactIterate& it, double& worstDiff,
     largestForce = std::max(largestForce, film.norm());
 }
 
-void SkirtContact::contactPressure(double h, double& asperity, double& hard) const {
-    asperity = contact_->pressure(std::max(h, 0.0));
-    hard = foundation_->pressure(h);
+double SkirtContact::approachSpeed(const ContactStep& step, const ContactState& now, const ContactState& before,
+                                   const ContactIterate& it, int k) const {
+    double rate = step.a0 * it.hTotal[k] + step.a1 * now.hTotal[k];
+    if (step.a2 != 0.0) rate += step.a2 * before.hTotal[k];
+    return -rate / step.dt;
 }
 
-double SkirtContact::contactSlope(double h) const {
-    if (h < 0.0) return foundation_->pressureSlope(h);
-    return contact_->pressureSlope(h);
+void SkirtContact::contactPressure(const ContactStep& step, const ContactState& now, const ContactState& before, int k,
+                                   ContactIterate& it, double& asperity, double& hard) const {
+    const double h = it.hTotal[k];
+    asperity = contact_->pressure(std::max(h, 0.0));
+    if (h >= 0.0 || !foundation_->damped()) {
+        hard = foundation_->pressure(h);
+        return;
+    }
+    // The impact speed: the largest approach speed since the node touched (docs/lube.md §5).
+    const double approach = approachSpeed(step, now, before, it, k);
+    const double before0 = now.impactSpeed.size() && now.hTotal[k] < 0.0 ? now.impactSpeed[k] : 0.0;
+    it.impactSpeed[k] = std::max({before0, approach, 0.0});
+    it.approach[k] = approach;
+    hard = foundation_->pressure(h, approach, it.impactSpeed[k]);
+}
+
+double SkirtContact::contactSlope(const ContactStep& step, const ContactIterate& it, int k) const {
+    const double h = it.hTotal[k];
+    if (h >= 0.0) return contact_->pressureSlope(h);
+    if (!foundation_->damped() || it.impactSpeed.size() == 0) return foundation_->pressureSlope(h);
+    return foundation_->pressureSlope(h, it.approach[k], it.impactSpeed[k], step.a0 / step.dt);
 }
 
 ClearanceRange SkirtContact::centredClearance(double linerOffset) const {

@@ -90,14 +90,21 @@ private:
     // The stages of evaluate.
     void filmThickness(const ContactStep& step, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
                        ContactIterate& it, WorkTally& work);
-    void contactAndFloor(ContactIterate& it) const;
+    void contactAndFloor(const ContactStep& step, const ContactState& now, const ContactState& before,
+                         ContactIterate& it) const;
     void solveFilm(const ContactStep& step, const ContactState& now, const ContactState& before, ContactIterate& it,
                    WorkTally& work);
-    /// Contact pressure at the film thickness h (unfloored): Greenwood–Tripp asperity pressure of
-    /// max(h, 0), and the hard contact of the coating below h = 0 (docs/lube.md §5).
-    void contactPressure(double h, double& asperity, double& hard) const;
-    /// ∂(asperity + hard)/∂h (Pa/m).
-    double contactSlope(double h) const;
+    /// Contact pressure at node k of the iterate's unfloored thickness: Greenwood–Tripp asperity
+    /// pressure of max(h, 0), and the hard contact of the coating below h = 0, damped with the
+    /// node's approach speed and impact speed (docs/lube.md §5); sets it.impactSpeed[k].
+    void contactPressure(const ContactStep& step, const ContactState& now, const ContactState& before, int k,
+                         ContactIterate& it, double& asperity, double& hard) const;
+    /// ∂(asperity + hard)/∂h (Pa/m) at node k of the iterate, the approach speed's change with h
+    /// included.
+    double contactSlope(const ContactStep& step, const ContactIterate& it, int k) const;
+    /// −ḣ (m/s) of the unfloored thickness at node k: the step's BDF2 rate.
+    double approachSpeed(const ContactStep& step, const ContactState& now, const ContactState& before,
+                         const ContactIterate& it, int k) const;
     /// ∂h/∂(e, β, y) on the grid into jacobianDh_ (the modal columns Ψ; the liner's per offset).
     void filmChangeColumns(const ContactStep& step, const Eigen::Vector2d& x);
     lube::FilmIntegralOptions integralOptions() const;

@@ -93,7 +93,7 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     if (contact_)
         for (int r = 0; r < n; ++r) {
             if (g.kind(r) == lube::NodeKind::Void) continue;
-            const double slope = contactSlope(it.hTotal[r]);
+            const double slope = contactSlope(step, it, r);
             if (slope == 0.0) continue;
             if (dPc.size() == 0) dPc.setZero(n, k);
             dPc.row(r) = slope * Cols.row(r);

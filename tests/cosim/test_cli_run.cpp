@@ -135,8 +135,11 @@ TEST(CliRun, FlexiblePistonCoarse) {
     // A film grid that the body's skirt surface mostly misses (the case's skirt 106 mm long, the
     // mesh's 36 mm): the run goes on, and the warning says how much of the skirt does not deform
     // and asks whether the body is the right one.
+    // (Its mostly rigid skirt, three times the body's, needs more than 30 coupling passes at 219.6°
+    // with some builds' round-off of the reduced body.)
     const auto longer = withLines({{"skirt_bottom: -0.025", "skirt_bottom: -0.095"},
-                                  {"- [-0.0250, 20.0e-6]", "- [-0.0950, 20.0e-6]\n    - [-0.0250, 20.0e-6]"}});
+                                  {"- [-0.0250, 20.0e-6]", "- [-0.0950, 20.0e-6]\n    - [-0.0250, 20.0e-6]"},
+                                  {"max_iterations: 30", "max_iterations: 60"}});
     EXPECT_EQ(longer.status, 0) << longer.err;
     EXPECT_NE(longer.err.find(" skirt film nodes ("), std::string::npos) << longer.err;
     EXPECT_NE(longer.err.find("lie outside the surface 'skirt' of " + body + ": most of the skirt does not "
