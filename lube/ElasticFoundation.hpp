@@ -1,16 +1,18 @@
 #pragma once
 // ElasticFoundation: the hard contact of two surfaces whose mean planes overlap (film thickness
 // h < 0), carried by the elastic deformation of a thin surface layer — the skirt coating — on a
-// stiffer substrate (Winkler foundation; Johnson, Contact Mechanics, 1985, §5.8; docs/lube.md §5):
+// stiffer substrate (Winkler foundation; Johnson, Contact Mechanics, 1985, §5.8; docs/lube.md §4):
 //   p_hard(h) = K · max(0, −h)   (Pa),
 // with, for a layer of thickness t, Young's modulus E and Poisson's ratio ν bonded to the
 // substrate (laterally constrained, uniaxial strain),
 //   K = E (1 − ν) / [(1 + ν)(1 − 2ν) t]   (Pa/m).
-// An impact on the layer loses energy (docs/lube.md §5, "Impact damping"): with a coefficient of
+// An impact on the layer loses energy (docs/lube.md §4, "Impact damping"): with a coefficient of
 // restitution e < 1 each point of the layer is a spring with hysteresis damping (Hunt & Crossley
 // 1975; Lankarani & Nikravesh 1990),
 //   p_hard = K δ · max(0, 1 + χ δ̇/δ̇₀),   δ = −h, δ̇ = −ḣ,
-// δ̇₀ the impact speed (the largest approach speed since the point touched). χ(e) is the factor
+// δ̇₀ the impact speed (the largest approach speed since the point touched, at least
+// kQuasiStaticSpeed: a point pressed slower is loaded quasi-statically, its damping vanishing with
+// its rate). χ(e) is the factor
 // that gives a mass striking the linear layer at any speed the rebound speed e δ̇₀; it tends to
 // Lankarani & Nikravesh's (3/4)(1 − e²) as e → 1.
 // The asperity pressure (GreenwoodTripp) of the rough surfaces acts in parallel above h = 0; the
@@ -19,6 +21,9 @@ namespace flexehd::lube {
 
 class ElasticFoundation {
 public:
+    /// m/s, the smallest impact speed: a contact loaded slower than this is not an impact.
+    static constexpr double kQuasiStaticSpeed = 1e-3;
+
     /// Throws std::invalid_argument unless stiffness > 0 (Pa/m) and 0 < restitution ≤ 1.
     explicit ElasticFoundation(double stiffness, double restitution = 1.0);
 

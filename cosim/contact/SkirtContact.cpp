@@ -155,7 +155,7 @@ lube::FilmIntegralOptions SkirtContact::integralOptions() const {
     io.referencePoint = Eigen::Vector3d(case_.engine.pinOffset, 0.0, 0.0);
     io.cavitationPressure = case_.lubricant.cavitationPressure;
     io.boundaryFriction = contact_ ? case_.contact.boundaryFriction : 0.0;
-    // The Couette shear between the rough surfaces (docs/lube.md §5): finite where they touch.
+    // The Couette shear between the rough surfaces (docs/lube.md §4): finite where they touch.
     io.roughness = contact_ ? case_.contact.sigma : 0.0;
     return io;
 }
@@ -254,8 +254,13 @@ void SkirtContact::checkLoadMapping(const ContactIterate& it, double& worstDiff,
 
 double SkirtContact::approachSpeed(const ContactStep& step, const ContactState& now, const ContactState& before,
                                    const ContactIterate& it, int k) const {
-    double rate = step.a0 * it.hTotal[k] + step.a1 * now.hTotal[k];
-    if (step.a2 != 0.0) rate += step.a2 * before.hTotal[k];
+    // As the Reynolds film's squeeze term (docs/coupling.md §3): the elastic rate only with
+    // coupling.elastic_squeeze.
+    const bool total = case_.coupling.elasticSqueeze || !(piston_ || liner_);
+    const Eigen::VectorXd& h = total ? it.hTotal : it.hRigid;
+    const Eigen::VectorXd& hNow = total ? now.hTotal : now.hRigid;
+    double rate = step.a0 * h[k] + step.a1 * hNow[k];
+    if (step.a2 != 0.0) rate += step.a2 * (total ? before.hTotal : before.hRigid)[k];
     return -rate / step.dt;
 }
 
@@ -267,19 +272,22 @@ void SkirtContact::contactPressure(const ContactStep& step, const ContactState& 
         hard = foundation_->pressure(h);
         return;
     }
-    // The impact speed: the largest approach speed since the node touched (docs/lube.md §5).
+    // The impact speed: the largest approach speed since the node touched (docs/lube.md §4).
     const double approach = approachSpeed(step, now, before, it, k);
     const double before0 = now.impactSpeed.size() && now.hTotal[k] < 0.0 ? now.impactSpeed[k] : 0.0;
-    it.impactSpeed[k] = std::max({before0, approach, 0.0});
+    it.impactSpeed[k] = std::max({before0, approach, lube::ElasticFoundation::kQuasiStaticSpeed});
     it.approach[k] = approach;
     hard = foundation_->pressure(h, approach, it.impactSpeed[k]);
 }
 
-double SkirtContact::contactSlope(const ContactStep& step, const ContactIterate& it, int k) const {
+double SkirtContact::contactSlope(const ContactStep& step, const ContactIterate& it, int k, double& rateSlope) const {
+    rateSlope = 0.0;
     const double h = it.hTotal[k];
     if (h >= 0.0) return contact_->pressureSlope(h);
     if (!foundation_->damped() || it.impactSpeed.size() == 0) return foundation_->pressureSlope(h);
-    return foundation_->pressureSlope(h, it.approach[k], it.impactSpeed[k], step.a0 / step.dt);
+    const double held = foundation_->pressureSlope(h, it.approach[k], it.impactSpeed[k], 0.0);
+    rateSlope = foundation_->pressureSlope(h, it.approach[k], it.impactSpeed[k], step.a0 / step.dt) - held;
+    return held;
 }
 
 ClearanceRange SkirtContact::centredClearance(double linerOffset) const {

@@ -5,7 +5,7 @@
 // distortion, thermal growth) plus the elastic change of the flexible piston and liner
 // (FlexibleSurface over this grid). Where the surfaces touch, the Greenwood–Tripp asperity
 // pressure of the unfloored thickness and the coating's hard contact below h = 0 carry the load,
-// and the film equation sees the thickness floored (docs/lube.md §5). The film is solved by
+// and the film equation sees the thickness floored (docs/lube.md §4). The film is solved by
 // lube::ReynoldsSolver (multigrid, the active set where it stalls) with the liner sliding past
 // the grid at minus the piston's velocity.
 
@@ -96,13 +96,15 @@ private:
                    WorkTally& work);
     /// Contact pressure at node k of the iterate's unfloored thickness: Greenwood–Tripp asperity
     /// pressure of max(h, 0), and the hard contact of the coating below h = 0, damped with the
-    /// node's approach speed and impact speed (docs/lube.md §5); sets it.impactSpeed[k].
+    /// node's approach speed and impact speed (docs/lube.md §4); sets it.impactSpeed[k].
     void contactPressure(const ContactStep& step, const ContactState& now, const ContactState& before, int k,
                          ContactIterate& it, double& asperity, double& hard) const;
-    /// ∂(asperity + hard)/∂h (Pa/m) at node k of the iterate, the approach speed's change with h
-    /// included.
-    double contactSlope(const ContactStep& step, const ContactIterate& it, int k) const;
-    /// −ḣ (m/s) of the unfloored thickness at node k: the step's BDF2 rate.
+    /// ∂(asperity + hard)/∂h (Pa/m) at node k of the iterate at a held approach speed, and the
+    /// damped hard contact's part through the approach speed's change with h (∂(−ḣ)/∂h = −a0/Δt)
+    /// where that h is in the rate (rateSlope, Pa/m; 0 without damping).
+    double contactSlope(const ContactStep& step, const ContactIterate& it, int k, double& rateSlope) const;
+    /// −ḣ (m/s) at node k: the step's BDF2 rate of the thickness the squeeze term sees (the
+    /// unfloored one with coupling.elastic_squeeze or rigid bodies, else the rigid one).
     double approachSpeed(const ContactStep& step, const ContactState& now, const ContactState& before,
                          const ContactIterate& it, int k) const;
     /// ∂h/∂(e, β, y) on the grid into jacobianDh_ (the modal columns Ψ; the liner's per offset).

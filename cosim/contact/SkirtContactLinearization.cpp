@@ -93,10 +93,16 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
     if (contact_)
         for (int r = 0; r < n; ++r) {
             if (g.kind(r) == lube::NodeKind::Void) continue;
-            const double slope = contactSlope(step, it, r);
-            if (slope == 0.0) continue;
+            double rateSlope = 0.0;
+            const double slope = contactSlope(step, it, r, rateSlope);
+            if (slope == 0.0 && rateSlope == 0.0) continue;
             if (dPc.size() == 0) dPc.setZero(n, k);
             dPc.row(r) = slope * Cols.row(r);
+            // The damped hard contact's rate: of every column with the elastic squeeze, else of
+            // the motion's columns only (SkirtContact::approachSpeed).
+            if (rateSlope == 0.0) continue;
+            if (case_.coupling.elasticSqueeze) dPc.row(r) += rateSlope * Cols.row(r);
+            else if (J.motionColumns) dPc.row(r).head(2) += rateSlope * Cols.row(r).head(2);
         }
     work.film += t0.seconds();
     t0.restart();
