@@ -146,6 +146,11 @@ struct TimeSpec {
     double minStepDeg = 1e-3;      ///< °, step control gives up (diagnosis) below this
     double lateralTolerance = 0.2e-6;  ///< m, local error tolerance on the lateral shift
     double tiltTolerance = 5e-6;       ///< rad, local error tolerance on the tilt
+    /// The defaults of lateralTolerance and tiltTolerance on the liner's oil layer: a starved
+    /// skirt crosses its clearance with little to damp the flight, and where it lands follows
+    /// the crossing's integration (docs/coupling.md §1, "A starved skirt needs a tighter tolerance").
+    static constexpr double kStarvedLateralTolerance = 0.02e-6;
+    static constexpr double kStarvedTiltTolerance = 5e-7;
     int maxCycles = 5;             ///< cycles simulated at most
     /// m: the cycle is periodic when max over its steps of |Δe| + |Δβ|·reach ≤ this, with Δ the change
     /// from the previous cycle at the same crank angle and reach = max(skirtTop, −skirtBottom)

@@ -64,6 +64,10 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     readRings(top, engine, c);
     readCylinderPressure(top, c);
     readGrid(top, c.piston, c.grid);
+    if (c.lubricant.supply.model == OilSupplyModel::LinerLayer) {  // time.*_tolerance's defaults
+        c.time.lateralTolerance = TimeSpec::kStarvedLateralTolerance;
+        c.time.tiltTolerance = TimeSpec::kStarvedTiltTolerance;
+    }
     readTime(top, c.time);
     if (c.hasFlexibleBody() && c.lubricant.cavitation == CavitationModel::MassConserving)
         c.coupling.maxIterations = CouplingSpec::kMassConservingFlexiblePasses;  // coupling.max_iterations' default

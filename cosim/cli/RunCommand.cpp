@@ -54,6 +54,13 @@ void printResult(const cosim::CaseRunResult& r, const std::string& dir) {
         fmt::print("rings: {} mean; piston assembly FMEP {:.3f} kPa\n", rings, doc.value("fmep_total_pa", 0.0) * 1e-3);
     }
     fmt::print("results: {}\n", dir);
+    if (r.cycles >= 2 && !r.periodic && doc.contains("periodicity_error_by_sector")) {  // where the cycles differ
+        std::string sectors;
+        for (const auto& k : doc["periodicity_error_by_sector"])
+            sectors += fmt::format("{}{:g}-{:g} {:.2g}", sectors.empty() ? "" : ", ", k["from_deg"].get<double>(),
+                                   k["to_deg"].get<double>(), k["error_m"].get<double>() * 1e6);
+        fmt::print("the last two cycles differ by (um, per crank-angle range in deg): {}\n", sectors);
+    }
     if (doc.contains("cycle_to_cycle")) {  // not periodic: how much the cycles after the first differ
         const nlohmann::json& cc = doc["cycle_to_cycle"];
         const auto& cycles = cc["cycles"];

@@ -194,7 +194,8 @@ void PistonSimulation::cyclePeriodicity(const std::vector<StepRecord>& cycle,
     const TimeSpec& T = case_.time;
     if (carriesOil()) cycleOil(cycle);
     if (previous.empty()) return;  // this cycle vs the previous one
-    stats_.periodicityError = periodicityError(cycle, since, previous, previousSince);
+    stats_.periodicityError =
+        periodicityError(cycle, since, previous, previousSince, stats_.periodicityErrorBySector);
     stats_.periodic = stats_.periodicityError <= T.periodicityTolerance &&
                       (!stats_.oil || stats_.oilPeriodicityError <= T.oilPeriodicityTolerance);
 }
@@ -306,10 +307,13 @@ void PistonSimulation::addWork(WorkTally& counted) {
 
 double PistonSimulation::periodicityError(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
                                           const std::vector<StepRecord>& previous,
-                                          const std::vector<double>& previousSince) const {
+                                          const std::vector<double>& previousSince,
+                                          std::vector<double>& bySector) const {
     // Eccentricities at the skirt ends, this cycle vs the previous one, interpolated to the same
-    // degrees since the cycle's start (docs/coupling.md §1).
+    // degrees since the cycle's start (docs/coupling.md §1); per sector of the crank angle too.
     const double reach = std::max(case_.piston.skirtTop, -case_.piston.skirtBottom);
+    const double sector = RunStatistics::kPeriodicitySectorDeg;
+    bySector.assign(static_cast<std::size_t>(std::lround(720.0 / sector)), 0.0);
     double err = 0.0;
     std::size_t j = 0;
     for (std::size_t i = 0; i < cycle.size(); ++i) {
@@ -323,7 +327,11 @@ double PistonSimulation::periodicityError(const std::vector<StepRecord>& cycle, 
         const double w = sb > sa ? std::clamp((at - sa) / (sb - sa), 0.0, 1.0) : 0.0;
         const double e0 = a.lateral + w * (b.lateral - a.lateral);
         const double t0 = a.tilt + w * (b.tilt - a.tilt);
-        err = std::max({err, std::abs(r.lateral - e0) + std::abs(r.tilt - t0) * reach});
+        const double here = std::abs(r.lateral - e0) + std::abs(r.tilt - t0) * reach;
+        err = std::max(err, here);
+        const double crank = std::fmod(case_.time.startDeg + at, 720.0);
+        const auto k = std::min(bySector.size() - 1, static_cast<std::size_t>(std::max(0.0, crank) / sector));
+        bySector[k] = std::max(bySector[k], here);
     }
     return err;
 }

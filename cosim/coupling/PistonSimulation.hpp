@@ -55,6 +55,10 @@ struct RunStatistics {
     int cycles = 0;
     bool periodic = false;
     double periodicityError = 0.0;  ///< m, last cycle vs the one before (see docs/coupling.md)
+    /// m, periodicityError over each kPeriodicitySectorDeg of crank angle (from 0°; empty until
+    /// two cycles are done): where in the cycle its cycles differ
+    std::vector<double> periodicityErrorBySector;
+    static constexpr double kPeriodicitySectorDeg = 60.0;
     /// Mass-conserving film, the last cycle (docs/coupling.md §6): oil on the liner and in the film
     /// at its end (m³), the relative change of their sum over it, what the replenishment added
     /// and the sides leaked over it (m³); `oil` false with the Reynolds condition.
@@ -166,8 +170,10 @@ private:
     void checkLoadMapping(const StepEvaluation& ev, double& worstDiff, double& largestForce);
     /// Adds the contacts' and the response's work since `counted` into the run's statistics.
     void addWork(WorkTally& counted);
+    /// The largest |Δe| + |Δβ| reach of `cycle` against `previous`, and per sector of crank angle.
     double periodicityError(const std::vector<StepRecord>& cycle, const std::vector<double>& since,
-                            const std::vector<StepRecord>& previous, const std::vector<double>& previousSince) const;
+                            const std::vector<StepRecord>& previous, const std::vector<double>& previousSince,
+                            std::vector<double>& bySector) const;
     Snapshot snapshot(const StepState& s, const StepEvaluation& ev, int cycle) const;
 
     EngineCase case_;

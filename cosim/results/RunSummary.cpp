@@ -78,6 +78,17 @@ void addCentredClearance(std::vector<Entry>& table) {
 // The wear maxima are written once a cycle finished.
 bool wearDone(const Source& s) { return s.in.wear && s.in.wear->finished(); }
 
+// Where in the cycle the last two cycles differ: per sector of crank angle, its range and error.
+Json periodicityBySector(const RunStatistics& st) {
+    Json sectors = Json::array();
+    const double width = RunStatistics::kPeriodicitySectorDeg;
+    for (std::size_t k = 0; k < st.periodicityErrorBySector.size(); ++k)
+        sectors.push_back({{"from_deg", width * double(k)},
+                           {"to_deg", width * double(k + 1)},
+                           {"error_m", st.periodicityErrorBySector[k]}});
+    return sectors;
+}
+
 const char* bodyModel(BodyModel m) { return m == BodyModel::Flexible ? "flexible" : "rigid"; }
 
 const std::vector<Entry>& entries() {
@@ -97,6 +108,7 @@ const std::vector<Entry>& entries() {
         {"periodic", [](const Source& s) { return Json(s.st().periodic); }},
         {"periodicity_error_m", [](const Source& s) { return Json(s.st().periodicityError); }},
         {"periodicity_tolerance_m", [](const Source& s) { return Json(s.in.c.time.periodicityTolerance); }},
+        {"periodicity_error_by_sector", [](const Source& s) { return periodicityBySector(s.st()); }},
         {"wear.piston_rate_max_m_per_h", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().pistonRate) : Json(); }},
         {"wear.piston_max_z_m", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().pistonZ) : Json(); }},
         {"wear.piston_max_theta_deg", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().pistonThetaDeg) : Json(); }},

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -331,9 +332,9 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
         if (v != &starved && v != &starvedEhd) {  // a starved skirt's slaps need the tighter step error (docs/coupling.md §1)
             EXPECT_EQ(v->time.lateralTolerance, ehd.time.lateralTolerance);
             EXPECT_EQ(v->time.tiltTolerance, ehd.time.tiltTolerance);
-        } else {
-            EXPECT_DOUBLE_EQ(v->time.lateralTolerance, 0.1 * ehd.time.lateralTolerance);
-            EXPECT_NEAR(v->time.tiltTolerance, 0.1 * ehd.time.tiltTolerance, 1e-12 * ehd.time.tiltTolerance);
+        } else {  // the liner layer's defaults
+            EXPECT_EQ(v->time.lateralTolerance, cosim::TimeSpec::kStarvedLateralTolerance);
+            EXPECT_EQ(v->time.tiltTolerance, cosim::TimeSpec::kStarvedTiltTolerance);
         }
         if (v != &starved && v != &starvedEhd) {  // the starved layer settles over more cycles (docs/case-file.md)
             EXPECT_EQ(v->time.maxCycles, ehd.time.maxCycles);
@@ -631,6 +632,28 @@ TEST(CaseFile, FlexibleBodiesOnTheMassConservingFilmGetMorePassesByDefault) {
               CouplingSpec::kMassConservingFlexiblePasses);
     EXPECT_EQ(passes("name: small\n" + flexible), CouplingSpec{}.maxIterations);
     EXPECT_GT(CouplingSpec::kMassConservingFlexiblePasses, CouplingSpec{}.maxIterations);
+}
+
+// On the liner's oil layer the step error tolerances default to a tenth of the general ones (a
+// starved skirt's cycles repeat only then: docs/coupling.md §1); a flooded film keeps the general
+// defaults, and the keys given win.
+TEST(CaseFile, AStarvedSkirtGetsATighterStepToleranceByDefault) {
+    const fs::path dir = scratchDir();
+    const std::string starved =
+        "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: 3e-6}}\n";
+    auto time = [&](const std::string& text) { return readCaseFile(caseWith(dir, "name: small", text)).time; };
+    const cosim::TimeSpec general{};
+    EXPECT_EQ(time(starved).lateralTolerance, cosim::TimeSpec::kStarvedLateralTolerance);
+    EXPECT_EQ(time(starved).tiltTolerance, cosim::TimeSpec::kStarvedTiltTolerance);
+    EXPECT_NEAR(cosim::TimeSpec::kStarvedLateralTolerance, 0.1 * general.lateralTolerance, 1e-20);
+    EXPECT_NEAR(cosim::TimeSpec::kStarvedTiltTolerance, 0.1 * general.tiltTolerance, 1e-20);
+    const cosim::TimeSpec given = time(starved + "time: {lateral_tolerance: 0.1e-6, tilt_tolerance_deg: 1.0e-4}");
+    EXPECT_EQ(given.lateralTolerance, 0.1e-6);
+    EXPECT_NEAR(given.tiltTolerance, 1.0e-4 * std::numbers::pi / 180.0, 1e-18);
+    const cosim::TimeSpec flooded = time("name: small\nlubricant: {cavitation: mass_conserving}\n");
+    EXPECT_EQ(flooded.lateralTolerance, general.lateralTolerance);
+    EXPECT_EQ(flooded.tiltTolerance, general.tiltTolerance);
+    EXPECT_EQ(time("name: small").lateralTolerance, general.lateralTolerance);
 }
 
 TEST(CaseFile, TheKeptJacobianCanBeTurnedOff) {

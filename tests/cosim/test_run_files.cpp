@@ -196,4 +196,46 @@ TEST(RunFiles, ANonPeriodicRunReportsItsCyclesMeanAndSpread) {
     EXPECT_NEAR(cc.at("min_film_m").at("max").get<double>(), std::max(film[0], film[1]), 1e-8 * std::abs(film[0]));
     // The last cycle's figures stay where they were.
     EXPECT_NEAR(d.at("friction_power_mean_w").get<double>(), power[1], 1e-7 * mean);
+
+    // Where the cycles differ: |Δe| + |Δβ| reach of cycle 3 against cycle 2 at the same crank
+    // angle (cycle 2 interpolated linearly between its rows), the largest per 60° of crank angle,
+    // and their largest the periodicity error.
+    auto cycleRows = [&](int cycle, std::vector<double>& at, std::vector<const StepRecord*>& rows) {
+        for (std::size_t i = 0; i < r.size(); ++i)
+            if (r[i].cycle == cycle) {
+                if (rows.empty()) rows.push_back(&r[i - 1]), at.push_back(0.0);  // the opening state
+                rows.push_back(&r[i]);
+                at.push_back(r[i].crankDeg - c.time.startDeg);
+            }
+    };
+    std::vector<double> at2, at3;
+    std::vector<const StepRecord*> rows2, rows3;
+    cycleRows(2, at2, rows2);
+    cycleRows(3, at3, rows3);
+    const double reach = std::max(c.piston.skirtTop, -c.piston.skirtBottom);
+    std::vector<double> sector(12, 0.0);
+    for (std::size_t i = 0; i < rows3.size(); ++i) {
+        const auto hi = std::upper_bound(at2.begin(), at2.end(), at3[i]);
+        const std::size_t b = std::min<std::size_t>(hi - at2.begin(), at2.size() - 1), a = b > 0 ? b - 1 : 0;
+        const double w = at2[b] > at2[a] ? std::clamp((at3[i] - at2[a]) / (at2[b] - at2[a]), 0.0, 1.0) : 0.0;
+        const double e = rows2[a]->lateral + w * (rows2[b]->lateral - rows2[a]->lateral);
+        const double t = rows2[a]->tilt + w * (rows2[b]->tilt - rows2[a]->tilt);
+        const double crank = std::fmod(c.time.startDeg + at3[i], 720.0);
+        double& s = sector[std::min<std::size_t>(11, static_cast<std::size_t>(crank / 60.0))];
+        s = std::max(s, std::abs(rows3[i]->lateral - e) + std::abs(rows3[i]->tilt - t) * reach);
+    }
+    const nlohmann::json& bySector = d.at("periodicity_error_by_sector");
+    ASSERT_EQ(bySector.size(), 12u);
+    double largest = 0.0;
+    for (std::size_t k = 0; k < 12; ++k) {
+        EXPECT_EQ(bySector[k].at("from_deg").get<double>(), 60.0 * double(k));
+        EXPECT_EQ(bySector[k].at("to_deg").get<double>(), 60.0 * double(k + 1));
+        const double reported = bySector[k].at("error_m").get<double>();
+        std::printf("  %3zu-%3zu deg: %.4g um (from history.csv %.4g um)\n", 60 * k, 60 * (k + 1), reported * 1e6,
+                    sector[k] * 1e6);
+        EXPECT_NEAR(reported, sector[k], 1e-6 * sector[k] + 1e-12);
+        largest = std::max(largest, reported);
+    }
+    EXPECT_GT(largest, 0.0);
+    EXPECT_EQ(largest, d.at("periodicity_error_m").get<double>());
 }
