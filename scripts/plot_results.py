@@ -374,15 +374,45 @@ def plot_rings(runs, out_dir):
             axes[0].plot(sel["crank_deg"], sel[column], color=color, lw=1.1,
                          label=f"{ring} (cycle mean {cycle_mean(sel, column):.2f} W)")
             axes[1].plot(sel["crank_deg"], sel[f"ring_{ring}_min_film_m"] * 1e6, color=color, lw=1.1, label=ring)
-        axes[1].axhline(0.0, color="0.5", lw=0.6)
-        axes[0].set_ylabel("friction power (W)\ntaken from the piston")
-        axes[1].set_ylabel("ring minimum gap (µm)\n< 0: asperities overlap")
-        axes[0].set_title(f"Piston rings and skirt: {label}" + cycle_note([(label, sel, cycle, None)]), pad=14)
-        for ax in axes:
-            ax.legend(loc="best", fontsize=8)
-        decorate_crank_axis(axes)
-        fig.tight_layout()
-        save(fig, out_dir, f"rings_{safe_name(label)}.png")
+        finish_ring_panels(fig, axes, ("friction power (W)\ntaken from the piston",
+                                       "ring minimum gap (µm)\n< 0: asperities overlap"),
+                           f"Piston rings and skirt: {label}" + cycle_note([(label, sel, cycle, None)]),
+                           out_dir, f"rings_{safe_name(label)}.png")
+
+
+def finish_ring_panels(fig, axes, ylabels, title, out_dir, name):
+    """The two crank-angle panels of a ring plot: the zero line below, labels, legends, saved."""
+    axes[1].axhline(0.0, color="0.5", lw=0.6)
+    for ax, ylabel in zip(axes, ylabels):
+        ax.set_ylabel(ylabel)
+        ax.legend(loc="best", fontsize=8)
+    axes[0].set_title(title, pad=14)
+    decorate_crank_axis(axes)
+    fig.tight_layout()
+    save(fig, out_dir, name)
+
+
+def plot_ring_gas(runs, out_dir):
+    """Per run with the lands' gas (ring_gas): the cylinder pressure and the pressure below each
+    ring over the crank angle, and the gas through each ring's end gap (the last ring's: blow-by)."""
+    for label, sel, cycle, _ in runs:
+        rings = [r for r in ring_names(sel) if f"ring_{r}_gas_below_pa" in sel]
+        if not rings:
+            continue
+        fig, axes = plt.subplots(2, 1, sharex=True, figsize=(9, 6.5))
+        axes[0].plot(sel["crank_deg"], sel["cylinder_pressure_pa"] * 1e-5, color=COLORS[0], lw=1.3, label="cylinder")
+        for k, ring in enumerate(rings, start=1):
+            color = COLORS[k % len(COLORS)]
+            if k < len(rings):  # the last ring's "below" is the crankcase
+                axes[0].plot(sel["crank_deg"], sel[f"ring_{ring}_gas_below_pa"] * 1e-5, color=color, lw=1.1,
+                             label=f"land below {ring}")
+            column = f"ring_{ring}_gas_flow_l_per_min"
+            axes[1].plot(sel["crank_deg"], sel[column], color=color, lw=1.1,
+                         label=f"{ring}'s gap (cycle mean {cycle_mean(sel, column):.3g} l/min)")
+        finish_ring_panels(fig, axes, ("absolute pressure (bar)",
+                                       "gas through the end gap\n(l/min at 0 °C, 1 atm; > 0 down)"),
+                           f"Gas between the rings: {label}" + cycle_note([(label, sel, cycle, None)]),
+                           out_dir, f"ring_gas_{safe_name(label)}.png")
 
 
 def cycle_note(runs):
@@ -394,7 +424,7 @@ def cycle_note(runs):
 def main(argv=None):
     parser = argparse.ArgumentParser(
         description="Plot history.csv of flexehd results directories as PNG figures "
-                    "(secondary motion, friction, film, oil, the ring pack).")
+                    "(secondary motion, friction, film, oil, the ring pack and its gas).")
     parser.add_argument("results", metavar="RESULTS_DIR", help="results directory of a run (holds history.csv)")
     parser.add_argument("--compare", metavar="OTHER_RESULTS_DIR", nargs="+", default=[],
                         help="results directories of further runs, overlaid (e.g. EHD against HD)")
@@ -425,6 +455,7 @@ def main(argv=None):
         plot_film(runs, out_dir)
         plot_oil(runs, out_dir)
         plot_rings(runs, out_dir)
+        plot_ring_gas(runs, out_dir)
         for label, _, _, d in runs:
             plot_film_maps(label, d, out_dir)
     except (PlotError, OSError) as e:

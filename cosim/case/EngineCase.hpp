@@ -249,6 +249,7 @@ struct EngineCase {
     LinerSpec liner;      ///< liner geometry beyond the bore: assembly distortion
     ThermalSpec thermal;  ///< thermal displacements (none by default)
     std::vector<RingSpec> rings;  ///< the ring pack, top ring first (none by default)
+    RingGasSpec ringGas;          ///< the gas between the rings (none by default)
 
     /// The piston or the liner is a flexible (reduced) body.
     bool hasFlexibleBody() const {

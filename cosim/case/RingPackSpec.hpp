@@ -55,4 +55,19 @@ struct RingSpec {
     double grooveTop() const { return groove.lowerFlank + height + groove.sideClearance; }
 };
 
+/// The gas between the rings (case key `ring_gas`, docs/case-file.md; docs/ring-pack.md, "The
+/// pack's gas in a run"): the lands between the rings as volumes, each ring's end gap an orifice.
+enum class RingGasModel { None, Lands };
+
+struct RingGasSpec {
+    RingGasModel model = RingGasModel::None;  ///< None: the cylinder's gas above and behind the top ring, the crankcase's below it
+    /// C_d of each ring's end gap on the area gap × land clearance (Furuhama & Tada 1961: 0.8–0.9)
+    double dischargeCoefficient = 0.86;
+    double landClearance = 0.3e-3;            ///< m, radial: the lands below the bore (piston.geo)
+    /// K, per land (between ring i and ring i + 1, top first), the gas at the land's metal
+    /// temperature; empty: kLandTemperature each (an assumed value, not a measured one)
+    std::vector<double> landTemperatures;
+    static constexpr double kLandTemperature = 450.0;
+};
+
 }  // namespace flexehd::cosim

@@ -44,7 +44,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     const YAML::Node root = loadCaseYaml(path, absolute);
     const YamlSection top(ctx, root, "",
                           {"name", "engine", "piston", "lubricant", "contact", "cylinder_pressure", "bodies", "grid",
-                           "time", "coupling", "output", "liner", "thermal", "rings"});
+                           "time", "coupling", "output", "liner", "thermal", "rings", "ring_gas"});
     EngineCase c;
     c.path = absolute.string();
     c.name = text(top, "name", absolute.stem().string(), "a name (text)");
@@ -62,6 +62,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     const YamlSection lubricant = readLubricant(top, c.engine, c.lubricant);
     readContact(top, c.contact);
     readRings(top, engine, c);
+    readRingGas(top, c);
     readCylinderPressure(top, c);
     readGrid(top, c.piston, c.grid);
     if (c.lubricant.supply.model == OilSupplyModel::LinerLayer) {  // time.*_tolerance's defaults

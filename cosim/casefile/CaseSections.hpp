@@ -21,6 +21,8 @@ void readContact(const YamlSection& top, ContactSpec& c);
 /// names; each groove placed on the ring belt (after engine, piston and contact: the roughness
 /// defaults to contact.sigma).
 void readRings(const YamlSection& top, const YamlSection& engine, EngineCase& c);
+/// ring_gas: the gas between the rings (after readRings).
+void readRingGas(const YamlSection& top, EngineCase& c);
 /// cylinder_pressure (required): the table's path, and the table read and checked.
 void readCylinderPressure(const YamlSection& top, EngineCase& c);
 /// bodies: the piston's and the liner's model and the response (both rigid with

@@ -224,4 +224,42 @@ void readRings(const YamlSection& top, const YamlSection& engine, EngineCase& c)
     }
 }
 
+void readRingGas(const YamlSection& top, EngineCase& c) {
+    c.ringGas = RingGasSpec{};
+    if (!top.has("ring_gas")) return;
+    const YamlSection g(top.source(), top.get("ring_gas"), "ring_gas",
+                        {"model", "discharge_coefficient", "land_clearance", "land_temperatures"});
+    RingGasSpec& r = c.ringGas;
+    r.model = choice(g, "model", {"none", "lands"}, 0) == 1 ? RingGasModel::Lands : RingGasModel::None;
+    r.dischargeCoefficient =
+        number(g, "discharge_coefficient", {"discharge coefficient", ""}, Sign::Positive, r.dischargeCoefficient);
+    if (r.dischargeCoefficient > 1.0)
+        g.fail("discharge_coefficient", fmt::format("expected a discharge coefficient in (0, 1], got {:g}",
+                                                    r.dischargeCoefficient));
+    r.landClearance = number(g, "land_clearance", kLength, Sign::Positive, r.landClearance);
+    if (g.has("land_temperatures")) {
+        const YAML::Node list = g.get("land_temperatures");
+        const std::string expected = fmt::format("a list of {} temperatures in K (one per land between the rings, "
+                                                 "top first)", c.rings.empty() ? 0 : c.rings.size() - 1);
+        if (!list.IsSequence() || c.rings.empty() || list.size() != c.rings.size() - 1)
+            g.fail("land_temperatures", "expected " + expected + ", got " + describeNode(list));
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            double t = 0.0;
+            if (!list[i].IsScalar() || !parseNumber(list[i].Scalar(), t) || !(t > 0.0) || !std::isfinite(t))
+                g.source().fail(fmt::format("{}[{}]", g.keyPath("land_temperatures"), i), list[i],
+                                "expected a positive temperature in K, got " + describeNode(list[i]));
+            r.landTemperatures.push_back(t);
+        }
+    }
+    if (r.model == RingGasModel::None) return;
+    if (c.rings.empty()) g.fail("model", "the gas between the rings needs a ring pack (case key rings)");
+    for (std::size_t i = 0; i + 1 < c.rings.size(); ++i)
+        if (!(c.rings[i + 1].grooveTop() < c.rings[i].groove.lowerFlank))
+            g.fail("model", fmt::format("rings '{}' and '{}' have no land between their grooves (the lower one's "
+                                        "reaches up to {:g} m, the upper one's lower flank is at {:g} m): the gas "
+                                        "between them has no volume",
+                                        c.rings[i + 1].name, c.rings[i].name, c.rings[i + 1].grooveTop(),
+                                        c.rings[i].groove.lowerFlank));
+}
+
 }  // namespace flexehd::cosim::casefile

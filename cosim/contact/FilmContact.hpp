@@ -31,6 +31,14 @@
 
 namespace flexehd::cosim {
 
+/// The gas round one ring of the pack at a step's end (docs/ring-pack.md, "The pack's gas in a
+/// run"): pressures (Pa, gauge: relative to the crankcase) above its face, behind it and below
+/// it, and the mass flow through its end gap (kg/s, towards the crankcase > 0).
+struct RingGas {
+    double above = 0.0, behind = 0.0, below = 0.0;
+    double flow = 0.0;
+};
+
 /// What a contact sees of the step: its BDF2 coefficients, the piston's axial velocity and where
 /// the piston frame is along the liner.
 struct ContactStep {
@@ -42,6 +50,9 @@ struct ContactStep {
     /// The liner's oil layer at the step's start and every contact's cover on it (null: no
     /// contact runs on a liner layer).
     const LinerOilState* oil = nullptr;
+    /// The ring pack's gas, per ring top first (null: no gas model: the cylinder's pressure above
+    /// and behind the top ring, the crankcase's below it and round the other rings).
+    const std::vector<RingGas>* ringGas = nullptr;
 };
 
 /// Oil volumes (m³) a mass-conserving film exchanged since the start of the run (docs/coupling.md

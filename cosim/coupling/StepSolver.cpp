@@ -33,6 +33,7 @@ StepSolver::StepSolver(const EngineCase& c, const CrankKinematics& kin, const Pi
         scheme_ = std::make_unique<CoupledNewtonScheme>(*this);
     else
         scheme_ = std::make_unique<PartitionedScheme>(*this);
+    if (c.ringGas.model == RingGasModel::Lands) packGas_ = std::make_unique<RingPackGas>(c);
     contactsChanged();
 }
 
@@ -61,6 +62,7 @@ StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, d
     const double cylinderPressure = pressure_(crankAngle720(ctx.crankDeg));
     ctx.gas = dyn_.gasForce(cylinderPressure);
     st.cylinderPressure = cylinderPressure - case_.engine.crankcasePressure;
+    if (packGas_) st.ringGas = &packGas_->trial(st.dt, cylinderPressure);
     st.linerOffset = linerOffset_(ctx.crankDeg);
     st.oil = s.oil.layer ? &s.oil : nullptr;
     ctx.now = &s;

@@ -17,6 +17,7 @@
 #include "cosim/engine/CrankKinematics.hpp"
 #include "cosim/engine/CylinderPressure.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
+#include "cosim/ringpack/RingPackGas.hpp"
 #include "cosim/mapping/FlexibleBody.hpp"
 #include "modal/HeldModalDynamics.hpp"
 
@@ -56,7 +57,10 @@ public:
     /// Jacobians since the last accepted step whose quasi-static modal block folded
     /// (det(I − ∂H/∂y) < 0: the skirt's equilibrium in the film is lost; docs/coupling.md §3).
     int foldedJacobians() const { return foldedJacobians_; }
-    void stepAccepted() { foldedJacobians_ = 0; }
+    void stepAccepted() {
+        foldedJacobians_ = 0;
+        if (packGas_) packGas_->accept();
+    }
     /// The Newton iteration's start for the motion from s (prev: the state before it): the
     /// second-order predictor x + Δt v + ½ Δt² a, or the first-order one x + Δt v where that
     /// predicted the last step (prev → s) better, in units of `scale` (docs/coupling.md §1).
@@ -107,6 +111,7 @@ private:
     // bodies.response: dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
     std::unique_ptr<modal::HeldModalDynamics> pistonDynamics_, linerDynamics_;
     std::unique_ptr<CouplingScheme> scheme_;  // chosen once (ctor)
+    std::unique_ptr<RingPackGas> packGas_;    // ring_gas: the lands' gas (null: none)
     std::size_t preparedContacts_ = 0;       // contacts told the scheme's needs
     int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
 };

@@ -26,9 +26,9 @@ InterRingGas::InterRingGas(GasProperties gas, std::vector<double> volumes, std::
     cylinder_ = crankcase_ = initialPressure;
 }
 
-double InterRingGas::blowByLitresPerMinute() const {
-    const double normalDensity = 101325.0 / (gas_.gasConstant * 273.15);  // kg/m³
-    return blowBy() / normalDensity * 1000.0 * 60.0;
+double InterRingGas::litresPerMinute(double massFlow, const GasProperties& gas) {
+    const double normalDensity = 101325.0 / (gas.gasConstant * 273.15);  // kg/m³
+    return massFlow / normalDensity * 1000.0 * 60.0;
 }
 
 double InterRingGas::mass() const {

@@ -37,7 +37,9 @@ public:
     double flow(int i) const { return flow_[static_cast<Eigen::Index>(i)]; }
     double blowBy() const { return flow_[flow_.size() - 1]; }  ///< kg/s into the crankcase
     /// The blow-by as a volume flow at normal conditions (DIN 1343: 101 325 Pa, 273.15 K), l/min.
-    double blowByLitresPerMinute() const;
+    double blowByLitresPerMinute() const { return litresPerMinute(blowBy(), gas_); }
+    /// A mass flow (kg/s) as a volume flow at normal conditions (DIN 1343), l/min.
+    static double litresPerMinute(double massFlow, const GasProperties& gas);
     double mass() const;  ///< kg of gas in the volumes
 
 private:

@@ -80,6 +80,13 @@ RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, in
       oil_(ringOil(ring, layer)),
       supply_(c.lubricant.supply),
       nodes_(nodesAcross(ring, faceNodes)) {
+    if (c.ringGas.model == RingGasModel::Lands)
+        for (std::size_t i = 0; i < c.rings.size(); ++i)
+            if (c.rings[i].name == ring.name) {
+                gasIndex_ = static_cast<int>(i);
+                lastInPack_ = i + 1 == c.rings.size();
+            }
+    crankcasePressure_ = c.engine.crankcasePressure;
     if (!liner) return;
     // The load grid: kLoadRows rows across the ring's height, the case grid's θ columns, sliding
     // with the piston over the liner (two rows of margin).
@@ -134,7 +141,13 @@ ContactState RingContact::initialState(double linerOffset) const {
 }
 
 const RingRadialStep& RingContact::radialStep(const ContactStep& step, const ContactState& now, double guess) {
-    const double pressure = top_ ? step.cylinderPressure : 0.0;
+    // The gas above, behind and below the ring: the pack's lands, or the cylinder's above and
+    // behind the top ring and the crankcase's elsewhere.
+    gas_ = RingGas{};
+    gas_.above = gas_.behind = top_ ? step.cylinderPressure : 0.0;
+    if (gasIndex_ >= 0 && step.ringGas && gasIndex_ < static_cast<int>(step.ringGas->size()))
+        gas_ = (*step.ringGas)[static_cast<std::size_t>(gasIndex_)];
+    const double pressure = gas_.behind;
     const double U = -step.pistonVelocity;  // the liner relative to the ring, + towards the crown
     std::optional<RingSupply> supply;
     if (oil_ && step.oil && step.oil->layer) {
@@ -142,12 +155,13 @@ const RingRadialStep& RingContact::radialStep(const ContactStep& step, const Con
         supply->film = oil_->supplyFilm(*step.oil, now.linerOffset, step.linerOffset, step.dt, U);
         for (int k = 0; k < faces_; ++k) supply->previousFraction.push_back(now.fraction.segment(k * nodes_, nodes_));
     }
-    const Cached key{now.minGap, step.dt, step.pistonVelocity, pressure, supply ? supply->film : -1.0};
+    const Cached key{now.minGap, step.dt, step.pistonVelocity, gas_.above, gas_.behind, gas_.below,
+                     supply ? supply->film : -1.0};
     if (cachedFor_ == key) return cached_;
     lube::RingFilmState conditions;
     conditions.slidingSpeed = U;
-    conditions.pressureAbove = pressure;
-    conditions.pressureBelow = 0.0;
+    conditions.pressureAbove = gas_.above;
+    conditions.pressureBelow = gas_.below;
     cachedFor_.reset();  // a failed step leaves no stale result behind
     cached_ = radial_.step(now.minGap, step.dt, conditions, pressure, guess, supply ? &*supply : nullptr);
     cachedFor_ = key;
@@ -272,11 +286,18 @@ void RingContact::exchangeOil(const ContactState& now, const ContactState& next,
 
 const std::vector<std::string>& RingContact::figureNames() {
     static const std::vector<std::string> names{"min_film_m", "friction_power_mean_w", "fmep_pa",
-                                                "boundary_friction_power_mean_w"};
+                                                "boundary_friction_power_mean_w", "gas_below_max_pa",
+                                                "gas_flow_mean_kg_per_s", "gas_flow_mean_l_per_min"};
+    return names;
+}
+
+const std::vector<std::string>& RingContact::blowByFigures() {
+    static const std::vector<std::string> names{"blow_by.mean_kg_per_s", "blow_by.mean_l_per_min"};
     return names;
 }
 
 bool RingContact::isFigureKey(const std::string& key) {
+    if (std::find(blowByFigures().begin(), blowByFigures().end(), key) != blowByFigures().end()) return true;
     const std::string prefix = "rings.";
     const auto dot = key.find('.', prefix.size());
     if (key.rfind(prefix, 0) != 0 || dot == std::string::npos || dot == prefix.size()) return false;
@@ -293,6 +314,14 @@ std::vector<ContactColumn> RingContact::columns() const {
             {column + "friction_power_w", {{figure + f[1], CycleStatistic::Mean}, {figure + f[2], CycleStatistic::Fmep}}},
             {column + "boundary_friction_power_w", {{figure + f[3], CycleStatistic::Mean}}}};
     if (oil_) all.push_back({column + "oil_left_m", {}});
+    if (gasIndex_ >= 0) {
+        all.push_back({column + "gas_below_pa", {{figure + f[4], CycleStatistic::Maximum}}});
+        all.push_back({column + "gas_flow_kg_per_s", {{figure + f[5], CycleStatistic::Mean}}});
+        all.push_back({column + "gas_flow_l_per_min", {{figure + f[6], CycleStatistic::Mean}}});
+        if (lastInPack_)  // the gas through the last ring's gap is the blow-by
+            for (std::size_t k = 0; k < 2; ++k)
+                all[all.size() - 2 + k].figures.push_back({blowByFigures()[k], CycleStatistic::Mean});
+    }
     return all;
 }
 
@@ -302,6 +331,11 @@ void RingContact::columnValues(const ContactIterate& it, std::vector<double>& va
     values.push_back(it.loads.viscousDissipation + it.loads.boundaryFrictionPower);
     values.push_back(it.loads.boundaryFrictionPower);
     if (oil_) values.push_back(it.layerLeft);
+    if (gasIndex_ >= 0) {
+        values.push_back(gas_.below + crankcasePressure_);
+        values.push_back(gas_.flow);
+        values.push_back(InterRingGas::litresPerMinute(gas_.flow, GasProperties{}));
+    }
 }
 
 }  // namespace flexehd::cosim

@@ -32,6 +32,7 @@
 #include "cosim/mapping/FlexibleBody.hpp"
 #include "cosim/mapping/FlexibleSurface.hpp"
 #include "lube/FilmGrid.hpp"
+#include "cosim/ringpack/InterRingGas.hpp"
 #include "cosim/ringpack/RingOilExchange.hpp"
 #include "cosim/ringpack/RingRadialMotion.hpp"
 
@@ -88,7 +89,10 @@ public:
 
     /// The summary.json figures of every ring, under rings.<name>.<figure>.
     static const std::vector<std::string>& figureNames();
-    /// Whether `key` names a ring's figure: rings.<name>.<one of figureNames()>.
+    /// With ring_gas, the last ring's gas flow's cycle means as the blow-by: blow_by.mean_kg_per_s,
+    /// blow_by.mean_l_per_min.
+    static const std::vector<std::string>& blowByFigures();
+    /// Whether `key` names a ring's figure: rings.<name>.<one of figureNames()>, or the blow-by's.
     static bool isFigureKey(const std::string& key);
 
 private:
@@ -113,8 +117,12 @@ private:
     int nodes_;  // the film's nodes across each face
     std::unique_ptr<lube::FilmGrid> loadGrid_;      // on a flexible liner
     std::unique_ptr<FlexibleSurface> linerSurface_;
+    int gasIndex_ = -1;               // its place in the pack with ring_gas (-1: no gas model)
+    bool lastInPack_ = false;         // with ring_gas: the last ring (its gas flow is the blow-by)
+    double crankcasePressure_ = 0.0;  // Pa, absolute
+    RingGas gas_;                     // round the ring at the last evaluated step
     struct Cached {
-        double gapNow, dt, velocity, pressure, supply;
+        double gapNow, dt, velocity, above, behind, below, supply;
         bool operator==(const Cached&) const = default;
     };
     std::optional<Cached> cachedFor_;

@@ -278,6 +278,7 @@ Study readStudyFile(const std::string& path, const std::string& directoryOverrid
                 r.fail("outputs", o,
                        "'" + k + "' is not a summary.json key; valid: " + joined(keys) +
                            ", fmep_total_pa, " + OilControlRingBand::kDrainFigure +
+                           ", " + joined(RingContact::blowByFigures()) +
                            " and rings.<name>.<figure> with a figure of " + joined(RingContact::figureNames()));
             s.outputs.push_back(k);
         }

@@ -174,3 +174,46 @@ TEST(CaseFileRings, TheRunRefusesTheOilControlBandBesideThePacksOilControlRing) 
     EXPECT_THAT(errorOf([&] { runCase(c); }),
                 AllOf(StartsWith(c.path + ": lubricant.supply.oil_control_ring"), HasSubstr("oil-control ring 'oil'")));
 }
+
+// ring_gas: the lands' gas between the rings (docs/case-file.md, "ring_gas"): read with its
+// defaults, and bad values refused naming the key.
+TEST(CaseFileRings, TheLandsGasIsReadAndBadValuesAreRefused) {
+    const fs::path dir = scratchDir();
+    const std::string file = (dir / "case.yaml").string();
+    const EngineCase none = readCaseFile(caseWith(dir));
+    EXPECT_EQ(none.ringGas.model, RingGasModel::None);
+    const EngineCase lands = readCaseFile(caseWith(dir, {}, std::string(kTwoRings) + "ring_gas: {model: lands}\n"));
+    EXPECT_EQ(lands.ringGas.model, RingGasModel::Lands);
+    EXPECT_EQ(lands.ringGas.dischargeCoefficient, 0.86);
+    EXPECT_EQ(lands.ringGas.landClearance, 0.3e-3);
+    EXPECT_TRUE(lands.ringGas.landTemperatures.empty());
+    const EngineCase given = readCaseFile(caseWith(
+        dir, {},
+        std::string(kTwoRings) +
+            "ring_gas: {model: lands, discharge_coefficient: 0.7, land_clearance: 0.4e-3, land_temperatures: [470]}\n"));
+    EXPECT_EQ(given.ringGas.dischargeCoefficient, 0.7);
+    EXPECT_EQ(given.ringGas.landClearance, 0.4e-3);
+    EXPECT_EQ(given.ringGas.landTemperatures, std::vector<double>{470.0});
+    auto error = [&](const std::string& gas) {
+        const std::string path = caseWith(dir, {}, std::string(kTwoRings) + gas);
+        return errorOf([&] { readCaseFile(path); });
+    };
+    EXPECT_THAT(error("ring_gas: {model: blowby}\n"), StartsWith(file + ": ring_gas.model"));
+    EXPECT_THAT(error("ring_gas: {model: lands, discharge_coefficient: 1.5}\n"),
+                AllOf(StartsWith(file + ": ring_gas.discharge_coefficient"), HasSubstr("(0, 1]")));
+    EXPECT_THAT(error("ring_gas: {model: lands, land_clearance: -1e-4}\n"), StartsWith(file + ": ring_gas.land_clearance"));
+    EXPECT_THAT(error("ring_gas: {model: lands, land_temperatures: [470, 450]}\n"),
+                AllOf(StartsWith(file + ": ring_gas.land_temperatures"), HasSubstr("1 temperatures")));
+    EXPECT_THAT(error("ring_gas: {model: lands, land_temperatures: [-470]}\n"),
+                AllOf(StartsWith(file + ": ring_gas.land_temperatures[0]"), HasSubstr("positive temperature")));
+    // Grooves that meet leave no land for the gas.
+    const std::string touching = caseWith(dir,
+                                          {{"lower_flank: 0.0253", "lower_flank: 0.025300000000000003"},
+                                           {"lower_flank: 0.0138", "lower_flank: 0.0228"}},
+                                          std::string(kTwoRings) + "ring_gas: {model: lands}\n");
+    EXPECT_THAT(errorOf([&] { readCaseFile(touching); }),
+                AllOf(StartsWith(file + ": ring_gas.model"), HasSubstr("no land between")));
+    // Without rings there is nothing to hold the gas.
+    const std::string alone = caseWith(dir, {}, "ring_gas: {model: lands}\n");
+    EXPECT_THAT(errorOf([&] { readCaseFile(alone); }), AllOf(StartsWith(file + ": ring_gas.model"), HasSubstr("ring pack")));
+}
