@@ -2,6 +2,7 @@
 // section by its reader (CaseSections.hpp) in the order the sections depend on each other,
 // with the cross-section checks once the sections they span are read.
 #include "cosim/casefile/CaseFile.hpp"
+#include "cosim/io/JsonText.hpp"
 
 #include <filesystem>
 #include <stdexcept>
@@ -48,6 +49,10 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     EngineCase c;
     c.path = absolute.string();
     c.name = text(top, "name", absolute.stem().string(), "a name (text)");
+    if (const std::size_t bad = invalidUtf8At(c.name); top.has("name") && bad != std::string::npos)
+        top.fail("name", fmt::format("expected UTF-8 text, got the byte 0x{:02X} at position {} (is the file saved in "
+                                     "Latin-1? save it as UTF-8)",
+                                     static_cast<unsigned char>(c.name[bad]), bad));
 
     // Bodies first: whether the liner is flexible decides whether engine.pin_tdc_depth is required.
     readBodies(top, options, c);

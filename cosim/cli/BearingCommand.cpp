@@ -1,4 +1,5 @@
 // `flexehd bearing`: the options as a lube::JournalBearing, its solution as a table or JSON.
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -20,8 +21,8 @@ namespace {
 
 struct BearingArgs {
     double radius = 0.05;
-    double length = 0.0;        // 0: from --length-over-diameter
-    double lengthOverDiameter = 0.0;
+    std::optional<double> length;              // not given: from --length-over-diameter
+    std::optional<double> lengthOverDiameter;  // not given: 1
     double clearance = 50e-6;
     double eccentricity = -1.0;  // required
     double speed = 50.0;         // rev/s
@@ -97,10 +98,10 @@ lube::JournalBearingSpec bearingSpec(const BearingArgs& a) {
     if (!(a.eccentricity > 0.0 && a.eccentricity < 1.0))
         throw std::invalid_argument("--eccentricity must be in (0, 1), the journal touches the sleeve at 1 (got " +
                                     str(a.eccentricity) + ")");
-    if (a.length > 0.0 && a.lengthOverDiameter > 0.0)
+    if (a.length && a.lengthOverDiameter)
         throw std::invalid_argument("give either --length or --length-over-diameter, not both");
-    if (a.length != 0.0) requirePositive(a.length, "--length");
-    if (a.lengthOverDiameter != 0.0) requirePositive(a.lengthOverDiameter, "--length-over-diameter");
+    if (a.length) requirePositive(*a.length, "--length");
+    if (a.lengthOverDiameter) requirePositive(*a.lengthOverDiameter, "--length-over-diameter");
     if (a.clearance >= a.radius)
         throw std::invalid_argument("--clearance must be smaller than --radius");
     lube::JournalBearingSpec s;
@@ -129,7 +130,7 @@ lube::JournalBearingSpec bearingSpec(const BearingArgs& a) {
     s.eccentricity = a.eccentricity;
     s.speed = a.speed;
     s.viscosity = a.viscosity;
-    s.length = a.length > 0.0 ? a.length : (a.lengthOverDiameter > 0.0 ? a.lengthOverDiameter : 1.0) * 2 * a.radius;
+    s.length = a.length ? *a.length : a.lengthOverDiameter.value_or(1.0) * 2 * a.radius;
     s.infinitelyLong = a.infinitelyLong;
     s.supplyGroove = !a.noGroove;
     s.grooveAngleDeg = a.grooveAngle;

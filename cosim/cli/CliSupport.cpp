@@ -1,4 +1,5 @@
 #include "cosim/cli/CliSupport.hpp"
+#include "cosim/io/JsonText.hpp"
 
 #include <signal.h>
 #include <sys/prctl.h>
@@ -108,6 +109,6 @@ void followParentProcess() {
     if (::getppid() != pid) std::_Exit(143);  // the parent died before the request: as SIGTERM would
 }
 
-void printJson(const nlohmann::json& doc) { std::cout << doc.dump(2) << std::endl; }
+void printJson(const nlohmann::json& doc) { std::cout << cosim::jsonText(doc, 2) << std::endl; }
 
 }  // namespace flexehd::cli

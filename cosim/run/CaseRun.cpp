@@ -1,4 +1,5 @@
 #include "cosim/run/CaseRun.hpp"
+#include "cosim/io/JsonText.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -129,7 +130,7 @@ double writeBodyModes(const std::string& dir, const SkirtContact& skirt, const R
 }
 
 void writeSummary(const std::string& dir, const nlohmann::json& doc) {
-    fem::writeTextAtomically(dir + "/summary.json", doc.dump(2) + "\n");
+    fem::writeTextAtomically(dir + "/summary.json", jsonText(doc, 2) + "\n");
 }
 
 // The run's files as an observer of it: history.csv row by row, the VTK series snapshot by

@@ -1,4 +1,5 @@
 #include "cosim/study/StudyTable.hpp"
+#include "cosim/io/JsonText.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -34,7 +35,7 @@ std::string valueText(const json& v) {
     if (v.is_number_integer()) return fmt::format("{}", v.get<long long>());
     if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
     if (v.is_string()) return v.get<std::string>();
-    return v.is_null() ? "" : v.dump();
+    return v.is_null() ? "" : jsonText(v);
 }
 
 /// Table text back to JSON: a number, a boolean or a string.
@@ -138,13 +139,12 @@ void writeStudyTables(const Study& study, const std::vector<VariantResult>& resu
                       {"variants", rows}};
     fs::create_directories(study.directory);
     fem::writeTextAtomically((fs::path(study.directory) / "study.csv").string(), csv);
-    fem::writeTextAtomically((fs::path(study.directory) / "study.json").string(), doc.dump(2) + "\n");
+    fem::writeTextAtomically((fs::path(study.directory) / "study.json").string(), jsonText(doc, 2) + "\n");
 }
 
 std::string serializeResult(const VariantResult& r) {
-    return json{{"status", r.status},   {"message", r.message}, {"outputs", r.outputs},
-                {"run_time_s", r.runSeconds}, {"rank", r.rank},  {"resumed", r.resumed}}
-        .dump();
+    return jsonText(json{{"status", r.status},   {"message", r.message}, {"outputs", r.outputs},
+                         {"run_time_s", r.runSeconds}, {"rank", r.rank},  {"resumed", r.resumed}});
 }
 
 VariantResult deserializeResult(const std::string& text) {

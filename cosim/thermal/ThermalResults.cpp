@@ -1,4 +1,5 @@
 #include "cosim/thermal/ThermalResults.hpp"
+#include "cosim/io/JsonText.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -172,7 +173,7 @@ nlohmann::json writeThermalResults(const std::string& dir, const std::string& ca
     doc["output"] = {{"directory", dir}, {"files", files}};
     doc["timings_s"] = {{"write", w.seconds()}, {"total", total.seconds()}};
     doc["peak_memory_mib"] = fem::peakMemoryMiB();
-    fem::writeTextAtomically((fs::path(dir) / "summary.json").string(), doc.dump(2) + "\n");
+    fem::writeTextAtomically((fs::path(dir) / "summary.json").string(), jsonText(doc, 2) + "\n");
     return doc;
 }
 

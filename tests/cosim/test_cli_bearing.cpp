@@ -160,6 +160,10 @@ TEST(CliBearing, BadInputFailsClearly) {
                                "--grid 100000x4000: the film grid of 100000 × 4000 = 400000000 nodes needs at least "
                                "200 GB of memory"},
                           Case{"--eccentricity 0.5 --length 0.1 --length-over-diameter 1", "not both"},
+                          Case{"--eccentricity 0.5 --length 0", "--length must be positive and finite (got 0)"},
+                          Case{"--eccentricity 0.5 --length-over-diameter 0",
+                               "--length-over-diameter must be positive and finite (got 0)"},
+                          Case{"--eccentricity 0.5 --length 0 --length-over-diameter 1", "not both"},
                           Case{"--eccentricity 0.5 --groove-angle 360", "--groove-angle must be in [0, 360)"},
                           Case{"--eccentricity 0.5 --groove-angle -10", "--groove-angle must be in [0, 360)"},
                           Case{"--eccentricity 0.5 --supply-fraction 0", "--supply-fraction must be in (0, 1]"},
