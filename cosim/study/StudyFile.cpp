@@ -88,6 +88,21 @@ std::string flow(const YAML::Node& n) {
 
 std::string formatNumber(double v) { return fmt::format("{:.12g}", v); }
 
+/// The most variants a study expands (each a case file and a run: counted before any is made).
+constexpr long long kMaxVariants = 1000000;
+
+/// The number of values of one full-factorial parameter (list, range or single value), before
+/// they are made; a range's count beyond kMaxVariants fails there.
+long long factorialCount(const Reader& r, const YAML::Node& spec, const std::string& key) {
+    if (spec.IsSequence()) return static_cast<long long>(spec.size());
+    if (!spec.IsMap() || !spec["count"]) return 1;
+    const long long n = r.integer(spec["count"], key + ".count", 1);
+    if (n > kMaxVariants)
+        r.fail(key + ".count", spec["count"],
+               fmt::format("a range of {} values: a study runs at most {} variants", n, kMaxVariants));
+    return n;
+}
+
 /// Values of one full-factorial parameter: a list, or a range {start, stop, count}.
 std::vector<std::string> factorialValues(const Reader& r, const YAML::Node& spec, const std::string& key) {
     std::vector<std::string> values;
@@ -159,12 +174,23 @@ void expandDesign(const Reader& r, const YAML::Node& top, Study& s) {
         if (s.design == "full_factorial") {
             if (top["samples"] || top["seed"]) r.fail("samples", top["samples"] ? top["samples"] : top["seed"],
                                                       "samples and seed are for design: latin_hypercube");
+            // Counted before any value is made: the product of the parameters' value counts.
+            double variants = 1.0;
+            std::string counts;
+            for (const auto& kv : params) {
+                const long long n = factorialCount(r, kv.second, "parameters." + kv.first.Scalar());
+                variants *= double(n);
+                counts += fmt::format("{}{} {}", counts.empty() ? "" : " x ", n, kv.first.Scalar());
+            }
+            if (variants > double(kMaxVariants))
+                r.fail("parameters", params,
+                       fmt::format("{:.4g} variants ({}): a study runs at most {} variants", variants, counts,
+                                   kMaxVariants));
             std::vector<std::vector<std::string>> axes;
             for (const auto& kv : params)
                 axes.push_back(factorialValues(r, kv.second, "parameters." + kv.first.Scalar()));
             std::size_t total = 1;
             for (const auto& a : axes) total *= a.size();
-            if (total > 1000000) r.fail("parameters", params, fmt::format("{} variants is too many", total));
             for (std::size_t i = 0; i < total; ++i) {  // the first parameter varies slowest
                 std::vector<std::string> values(axes.size());
                 std::size_t rest = i;
@@ -177,6 +203,9 @@ void expandDesign(const Reader& r, const YAML::Node& top, Study& s) {
         } else {  // latin_hypercube: one stratum of [min, max) per sample and parameter
             if (!top["samples"]) r.fail("samples", top, "design: latin_hypercube needs samples (the variant count)");
             const long long n = r.integer(top["samples"], "samples", 1);
+            if (n > kMaxVariants)
+                r.fail("samples", top["samples"],
+                       fmt::format("{} samples: a study runs at most {} variants", n, kMaxVariants));
             const long long seed = top["seed"] ? r.integer(top["seed"], "seed", 0) : 1;
             std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
             rows.assign(std::size_t(n), std::vector<std::string>(s.parameters.size()));

@@ -269,6 +269,19 @@ TEST(StudyFile, BadInputIsAClearError) {
                 HasSubstr("needs samples"));
     EXPECT_THAT(error("parameters:\n  engine.bore.x: [1]\n"), HasSubstr("engine.bore is '0.086' in the base case"));
     EXPECT_THAT(error("parameters:\n  reduce.piston.size: [0.006]\n"), HasSubstr("no reduced-body recipe"));
+    // Counted before the variants are made: a range of 1e9 values, two of 1e5 each (1e10 variants)
+    // and 1e9 samples are refused at once, naming the key and the count (expanded, each would
+    // take tens of GB).
+    EXPECT_THAT(error("parameters:\n  engine.speed_rpm: {start: 1000, stop: 7000, count: 1000000000}\n"),
+                AllOf(HasSubstr("parameters.engine.speed_rpm.count"), HasSubstr("a range of 1000000000 values"),
+                      HasSubstr("at most 1000000 variants")));
+    EXPECT_THAT(error("parameters:\n  engine.speed_rpm: {start: 1000, stop: 7000, count: 100000}\n"
+                      "  engine.pin_offset: {start: 0, stop: 1e-3, count: 100000}\n"),
+                AllOf(HasSubstr("1e+10 variants (100000 engine.speed_rpm x 100000 engine.pin_offset)"),
+                      HasSubstr("at most 1000000 variants")));
+    EXPECT_THAT(error("design: latin_hypercube\nsamples: 1000000000\nparameters:\n"
+                      "  engine.pin_offset: {min: 0, max: 1e-3}\n"),
+                AllOf(HasSubstr("samples"), HasSubstr("1000000000 samples: a study runs at most 1000000 variants")));
     // And through the command line: message and exit code 1.
     const auto r = runFlexehd("sweep " + writeStudy(t.path, "parameters:\n  piston.clearence: [5e-5]\n") + " --quiet");
     EXPECT_EQ(r.status, 1);
