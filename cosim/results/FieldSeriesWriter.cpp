@@ -1,6 +1,7 @@
 #include "cosim/results/FieldSeriesWriter.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -243,6 +244,10 @@ void FieldSeriesWriter::commit() {
     if (anyLiner) liner.write((dir / "liner.pvd").string());
     if (std::any_of(staged_.begin(), staged_.end(), [](const Staged& s) { return !s.oil.empty(); }))
         oil.write((dir / "liner_oil.pvd").string());
+    if (!earlierRunRemoved_) {
+        removeEarlierRun(files);
+        earlierRunRemoved_ = true;
+    }
     // The collections no longer name the previous series: its files go.
     std::error_code ec;
     for (const std::string& f : committedFiles_)
@@ -252,6 +257,42 @@ void FieldSeriesWriter::commit() {
         committedCount_ = int(staged_.size());
     }
     staged_.clear();
+}
+
+namespace {
+
+// A series file's name: <series>_NNNNNN.vts or .vtu, series film, piston, liner or liner_oil.
+bool isSeriesFile(const std::string& name) {
+    for (const char* series : {"film_", "piston_", "liner_", "liner_oil_"}) {
+        const std::string prefix(series);
+        if (name.size() != prefix.size() + 6 + 4 || name.rfind(prefix, 0) != 0) continue;
+        const std::string digits = name.substr(prefix.size(), 6), ext = name.substr(prefix.size() + 6);
+        if (std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+            (ext == ".vts" || ext == ".vtu"))
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void FieldSeriesWriter::removeEarlierRun(const std::vector<std::string>& files) const {
+    const fs::path dir(directory_);
+    std::error_code ec;
+    for (const char* pvd : {"film.pvd", "piston.pvd", "liner.pvd", "liner_oil.pvd"}) {
+        const std::string series = std::string(pvd).substr(0, std::string(pvd).size() - 4) + "_";
+        const std::string prefix = "vtk/" + series;  // then the number: liner_ is not liner_oil_
+        const bool written = std::any_of(files.begin(), files.end(), [&](const std::string& f) {
+            return f.rfind(prefix, 0) == 0 && f.size() > prefix.size() && std::isdigit(static_cast<unsigned char>(f[prefix.size()]));
+        });
+        if (!written) fs::remove(dir / pvd, ec);
+    }
+    std::error_code listing;
+    for (fs::directory_iterator it(dir / "vtk", listing), end; !listing && it != end; it.increment(listing)) {
+        const std::string name = it->path().filename().string();
+        if (isSeriesFile(name) && std::find(files.begin(), files.end(), "vtk/" + name) == files.end())
+            fs::remove(it->path(), ec);
+    }
 }
 
 void FieldSeriesWriter::discard() {

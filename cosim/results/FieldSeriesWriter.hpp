@@ -69,7 +69,10 @@ public:
     /// value, before any file is written; or naming the file on an I/O error.
     void write(const SnapshotTime& at, const FilmField& film, const BodyField* piston, const BodyField* liner,
                const LinerOilField* oil = nullptr);
-    /// The snapshots written since the last commit (or discard) become the series.
+    /// The snapshots written since the last commit (or discard) become the series. The first
+    /// commit also removes what an earlier run left in the directory: its series files (vtk/film_,
+    /// piston_, liner_, liner_oil_ NNNNNN) that this series does not name, and its .pvd files where
+    /// this run writes none.
     void commit();
     /// Deletes the snapshots written since the last commit; the series stays as it was.
     void discard();
@@ -88,6 +91,8 @@ private:
     int count_ = 0, committedCount_ = 0;
     std::vector<Staged> staged_;
     std::vector<std::string> committedFiles_;  ///< relative paths of the committed series
+    bool earlierRunRemoved_ = false;           ///< the first commit removed an earlier run's series
+    void removeEarlierRun(const std::vector<std::string>& files) const;
 };
 
 }  // namespace flexehd::cosim

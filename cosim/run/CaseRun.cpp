@@ -152,10 +152,10 @@ public:
         seconds_ += w.seconds();
     }
     void cycleEnded(const CycleEnd& e) override {
-        if (e.snapshots == 0) return;
         const fem::Stopwatch w;
-        fields_.commit();  // the collections list this cycle from now on
+        fields_.commit();  // the collections list this cycle from now on (none: an earlier run's series goes)
         seconds_ += w.seconds();
+        if (e.snapshots == 0) return;
         if (e.last)
             say(log_.info, fmt::format("VTK series: the {} snapshots of cycle {} in {}/film.pvd", e.snapshots, e.cycle,
                                        c_.output.directory));

@@ -27,6 +27,7 @@
 #include "cosim/results/HistoryWriter.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "tests/fem/TestData.hpp"
+#include "TestFiles.hpp"
 #include "VtkReadBack.hpp"
 
 namespace flexehd::cosim {
@@ -564,6 +565,39 @@ TEST(FieldSeriesWriter, EachCommitReplacesTheSeriesAndDiscardKeepsIt) {
     EXPECT_FALSE(fs::exists(dir / "vtk/film_000006.vts"));
     EXPECT_EQ(readPvd(dir / "film.pvd").size(), 3u);
     for (const auto& e : film) EXPECT_TRUE(fs::exists(dir / e.file)) << e.file;
+}
+
+// A run into a directory where an earlier, finer run wrote its series: the first commit removes
+// the earlier run's series files that the new series does not name (and leaves other files), and
+// the earlier .pvd of a series the new run does not write; until then the earlier series stays
+// whole (a run killed before its first commit leaves it valid).
+TEST(FieldSeriesWriter, TheFirstCommitRemovesWhatAnEarlierRunLeft) {
+    const auto dir = test::scratchDir();
+    FilmFixture f(lube::FilmGrid::fullCircumference(0.043, kAxial, 8));
+    const fem::Mesh mesh = oneTet();
+    BodyField piston{&mesh, Eigen::Vector3d::Zero(), Eigen::VectorXd::Zero(12), Eigen::VectorXd()};
+    {
+        FieldSeriesWriter earlier(dir.string());  // five film and piston snapshots
+        for (double t : {0.0, 180.0, 360.0, 540.0, 720.0}) earlier.write(at(t), f.film, &piston, nullptr);
+        earlier.commit();
+    }
+    test::writeFile(dir / "vtk" / "notes.txt", "kept");
+    test::writeFile(dir / "vtk" / "film_12.vts", "not a series file name: kept");
+    FieldSeriesWriter w(dir.string());  // two film snapshots, no piston
+    for (double t : {0.0, 720.0}) w.write(at(t), f.film, nullptr, nullptr);
+    EXPECT_EQ(readPvd(dir / "film.pvd").size(), 5u) << "the earlier series until the first commit";
+    for (const auto& e : readPvd(dir / "film.pvd")) EXPECT_TRUE(fs::exists(dir / e.file)) << e.file;
+    w.commit();
+    const auto film = readPvd(dir / "film.pvd");
+    ASSERT_EQ(film.size(), 2u);
+    for (const auto& e : film) EXPECT_TRUE(fs::exists(dir / e.file)) << e.file;
+    std::size_t seriesFiles = 0;
+    for (const auto& entry : fs::directory_iterator(dir / "vtk"))
+        seriesFiles += entry.path().extension() == ".vts" || entry.path().extension() == ".vtu";
+    EXPECT_EQ(seriesFiles, 3u) << "the new run's two film files and film_12.vts";
+    EXPECT_FALSE(fs::exists(dir / "piston.pvd"));
+    EXPECT_TRUE(fs::exists(dir / "vtk" / "notes.txt"));
+    EXPECT_TRUE(fs::exists(dir / "vtk" / "film_12.vts"));
 }
 
 // Mode shapes (ModeShapeExport): LZ4 files that VTK reads back; written once — an export of the
