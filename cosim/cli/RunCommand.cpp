@@ -1,5 +1,6 @@
 // `flexehd run CASE.yaml`: the case file with the command line's overrides, run by
 // cosim::runCase into its results directory; the cycle figures printed.
+#include <csignal>
 #include <filesystem>
 #include <memory>
 
@@ -9,6 +10,7 @@
 #include "cosim/casefile/CaseFile.hpp"
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
+#include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/run/CaseRun.hpp"
 
 namespace flexehd::cli {
@@ -73,12 +75,26 @@ void printResult(const cosim::CaseRunResult& r, const std::string& dir) {
     }
 }
 
+// SIGINT or SIGTERM during a run: the run stops before its next step and writes its summary.
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void onRunSignal(int signal) { g_signal = signal; }
+
 void runCommand(const RunArgs& a) {
     const cosim::EngineCase c = caseOf(a);
     cosim::RunLog log;
     if (!a.quiet) log.info = [](const std::string& s) { fmt::print(stderr, "{}\n", s); };
     log.warn = [](const std::string& s) { spdlog::warn("{}", s); };
-    const cosim::CaseRunResult r = cosim::runCase(c, log);
+    log.interrupted = [] { return static_cast<int>(g_signal); };
+    std::signal(SIGINT, onRunSignal);
+    std::signal(SIGTERM, onRunSignal);
+    cosim::CaseRunResult r;
+    try {
+        r = cosim::runCase(c, log);
+    } catch (const cosim::RunInterrupted& e) {
+        fmt::print(stderr, "flexehd: {}\n", e.what());
+        setExitCode(128 + e.signal());
+        return;
+    }
     if (a.json) printJson(r.summary);
     else if (!a.quiet) printResult(r, c.output.directory);
 }

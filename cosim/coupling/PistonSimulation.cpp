@@ -12,6 +12,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -397,6 +398,12 @@ private:
 
 }  // namespace
 
+RunInterrupted::RunInterrupted(int signal, int cycle, double crankDeg)
+    : std::runtime_error(fmt::format("interrupted by signal {} ({}) in cycle {} at {:.1f} deg", signal,
+                                     signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal", cycle,
+                                     std::fmod(crankDeg, 720.0))),
+      signal_(signal) {}
+
 std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, double spanDeg) {
     CallbackObserver callbacks(cb);
     const ObserverDuringRun during(observers_, callbacks);
@@ -404,7 +411,13 @@ std::vector<StepRecord> PistonSimulation::run(const SimulationCallbacks& cb, dou
     startRun(loop);
     for (loop.cycle = 1; loop.cycle <= case_.time.maxCycles; ++loop.cycle) {
         openCycle(loop);
-        while (loop.s.crankDeg < loop.cycleEnd - 1e-9) tryStep(loop);
+        while (loop.s.crankDeg < loop.cycleEnd - 1e-9) {
+            if (const int signal = cb.stopRequested ? cb.stopRequested() : 0) {
+                addWork(loop.counted);
+                throw RunInterrupted(signal, loop.cycle, loop.s.crankDeg);
+            }
+            tryStep(loop);
+        }
         if (closeCycle(loop)) break;
     }
     addWork(loop.counted);

@@ -82,6 +82,21 @@ struct SimulationCallbacks {
     /// after each cycle: its number, the snapshots it took, and whether it is the run's last
     std::function<void(int cycle, int snapshots, bool last)> onCycleEnd;
     std::function<void(const std::string&)> progress;   ///< human-readable progress lines
+    /// asked before each step: a signal number (SIGINT, SIGTERM) stops the run there with
+    /// RunInterrupted; 0 goes on (null: never stops)
+    std::function<int()> stopRequested;
+};
+
+/// The run was stopped between two steps because the caller asked (a signal): what it was and
+/// the cycle it stopped in.
+class RunInterrupted : public std::runtime_error {
+public:
+    RunInterrupted(int signal, int cycle, double crankDeg);
+    RunInterrupted(int signal, const std::string& message) : std::runtime_error(message), signal_(signal) {}
+    int signal() const { return signal_; }
+
+private:
+    int signal_;
 };
 
 class PistonSimulation {

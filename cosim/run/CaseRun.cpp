@@ -203,12 +203,20 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     sim.addObserver(cycleSeries);
     SimulationCallbacks cb;
     cb.progress = log.info;
+    cb.stopRequested = log.interrupted;
     const double outputSeconds = c.output.modeShapes ? writeBodyModes(dir, skirt, log) : 0.0;
 
     std::vector<StepRecord> cycle;
     std::string status = "ok", message;
+    int signal = 0;
     try {
         cycle = sim.run(cb);
+    } catch (const RunInterrupted& e) {
+        status = "interrupted";
+        message = fmt::format("{}, after {} complete cycle(s); the history holds every accepted step", e.what(),
+                              sim.statistics().cycles);
+        signal = e.signal();
+        fields.discard();
     } catch (const std::exception& e) {
         status = "failed";
         message = e.what();
@@ -221,6 +229,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
         runSummary({c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(),
                     wear ? &*wear : nullptr, &cycleSeries});
     writeSummary(dir, result.summary);
+    if (signal) throw RunInterrupted(signal, message + " (partial results in " + dir + ", summary.json status: interrupted)");
     if (status != "ok") throw std::runtime_error(message + " (partial results in " + dir + ")");
     result.cycles = sim.statistics().cycles;
     result.periodic = sim.statistics().periodic;

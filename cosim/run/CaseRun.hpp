@@ -19,6 +19,9 @@ namespace flexehd::cosim {
 struct RunLog {
     std::function<void(const std::string&)> info;
     std::function<void(const std::string&)> warn;
+    /// Asked before each step: a signal number stops the run (summary.json `status: interrupted`,
+    /// then RunInterrupted is thrown); 0 or null goes on.
+    std::function<int()> interrupted;
 };
 
 struct CaseRunResult {
