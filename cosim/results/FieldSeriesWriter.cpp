@@ -1,7 +1,6 @@
 #include "cosim/results/FieldSeriesWriter.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -261,36 +260,34 @@ void FieldSeriesWriter::commit() {
 
 namespace {
 
-// A series file's name: <series>_NNNNNN.vts or .vtu, series film, piston, liner or liner_oil.
-bool isSeriesFile(const std::string& name) {
-    for (const char* series : {"film_", "piston_", "liner_", "liner_oil_"}) {
-        const std::string prefix(series);
-        if (name.size() != prefix.size() + 6 + 4 || name.rfind(prefix, 0) != 0) continue;
-        const std::string digits = name.substr(prefix.size(), 6), ext = name.substr(prefix.size() + 6);
-        if (std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
-            (ext == ".vts" || ext == ".vtu"))
-            return true;
-    }
-    return false;
+// The series a file of vtk/ belongs to ("film", "piston", "liner", "liner_oil": <series>_NNNNNN
+// .vts or .vtu), or "" for any other file.
+std::string seriesOf(const std::string& name) {
+    if (name.size() < 12) return "";
+    const std::string ext = name.substr(name.size() - 4), digits = name.substr(name.size() - 10, 6);
+    if ((ext != ".vts" && ext != ".vtu") || name[name.size() - 11] != '_' ||
+        !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return "";
+    const std::string series = name.substr(0, name.size() - 11);
+    for (const char* known : {"film", "piston", "liner", "liner_oil"})
+        if (series == known) return series;
+    return "";
 }
 
 }  // namespace
 
 void FieldSeriesWriter::removeEarlierRun(const std::vector<std::string>& files) const {
     const fs::path dir(directory_);
+    std::vector<std::string> written;  // the series this run's files belong to
+    for (const std::string& f : files) written.push_back(seriesOf(fs::path(f).filename().string()));
     std::error_code ec;
-    for (const char* pvd : {"film.pvd", "piston.pvd", "liner.pvd", "liner_oil.pvd"}) {
-        const std::string series = std::string(pvd).substr(0, std::string(pvd).size() - 4) + "_";
-        const std::string prefix = "vtk/" + series;  // then the number: liner_ is not liner_oil_
-        const bool written = std::any_of(files.begin(), files.end(), [&](const std::string& f) {
-            return f.rfind(prefix, 0) == 0 && f.size() > prefix.size() && std::isdigit(static_cast<unsigned char>(f[prefix.size()]));
-        });
-        if (!written) fs::remove(dir / pvd, ec);
-    }
+    for (const char* series : {"film", "piston", "liner", "liner_oil"})
+        if (std::find(written.begin(), written.end(), series) == written.end())
+            fs::remove(dir / (std::string(series) + ".pvd"), ec);
     std::error_code listing;
     for (fs::directory_iterator it(dir / "vtk", listing), end; !listing && it != end; it.increment(listing)) {
         const std::string name = it->path().filename().string();
-        if (isSeriesFile(name) && std::find(files.begin(), files.end(), "vtk/" + name) == files.end())
+        if (!seriesOf(name).empty() && std::find(files.begin(), files.end(), "vtk/" + name) == files.end())
             fs::remove(it->path(), ec);
     }
 }
