@@ -1,11 +1,13 @@
 #include "fem/AtomicFile.hpp"
 
-#include <fstream>
-
+#include <cerrno>
 #include <filesystem>
-#include <vector>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace flexehd::fem {
 
@@ -24,17 +26,51 @@ void writeAtomically(const std::string& path, const std::function<void(const std
     if (ec) {
         std::error_code ignored;
         fs::remove(tmp, ignored);  // nothing half-done stays behind
-        throw std::runtime_error("cannot write '" + path + "': " + ec.message());
+        throw std::runtime_error("cannot write '" + path + "': " + writeFailureReason(path, ec.value()));
     }
+}
+
+int writeAllAt(int fd, std::string_view text, long long offset) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, static_cast<off_t>(offset + done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) return errno;
+        if (n == 0) return EIO;
+        done += static_cast<std::size_t>(n);
+    }
+    return 0;
 }
 
 void writeTextAtomically(const std::string& path, const std::string& text) {
     writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << text;
-        f.close();
-        if (!f) throw std::runtime_error("cannot write " + tmp);
+        const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        if (fd < 0) throw std::runtime_error("cannot write '" + path + "': " + writeFailureReason(tmp, errno));
+        int err = writeAllAt(fd, text, 0);
+        if (::close(fd) != 0 && err == 0) err = errno;
+        if (err) throw std::runtime_error("cannot write '" + path + "': " + writeFailureReason(tmp, err));
     });
+}
+
+std::string writeFailureReason(const std::string& path, int errnum) {
+    switch (errnum) {
+        case ENOSPC: return "the disk is full (no space left on device, ENOSPC)";
+        case EDQUOT: return "the disk quota is used up (EDQUOT)";
+        case EROFS: return "the file system is read-only (EROFS)";
+        case EACCES:
+        case EPERM: return "permission denied (EACCES)";
+        case EFBIG: return "the file would exceed the largest size allowed (EFBIG)";
+        case EIO: return "an input/output error of the device (EIO)";
+        case 0: break;
+        default: return std::generic_category().message(errnum);
+    }
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path dir = fs::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    const fs::space_info s = fs::space(dir, ec);
+    if (!ec && s.available < 64 * 1024) return "the disk is full (no space left on device, ENOSPC)";
+    return "an I/O error (the writer gave no reason)";
 }
 
 int removeStaleTemporaries(const std::string& directory) {

@@ -11,7 +11,8 @@
 #include <vtkStructuredGrid.h>
 #include <vtkXMLStructuredGridWriter.h>
 
-#include "fem/AtomicFile.hpp"
+#include "cosim/io/VtkXmlFile.hpp"
+
 
 namespace flexehd::cosim {
 
@@ -26,16 +27,13 @@ void addFieldValues(vtkStructuredGrid& grid, const std::vector<FieldValue>& valu
 }
 
 void writeStructuredGrid(const std::string& path, vtkStructuredGrid& grid) {
-    fem::writeAtomically(path, [&](const std::string& tmp) {
-        vtkNew<vtkXMLStructuredGridWriter> writer;
-        writer->SetFileName(tmp.c_str());
-        writer->SetInputData(&grid);
-        writer->SetDataModeToAppended();
-        writer->EncodeAppendedDataOff();  // raw binary
-        writer->SetHeaderTypeToUInt64();
-        writer->SetCompressorTypeToLZ4();  // ≈ 10× faster than the default zlib
-        if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + path + "'");
-    });
+    vtkNew<vtkXMLStructuredGridWriter> writer;
+    writer->SetInputData(&grid);
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();  // raw binary
+    writer->SetHeaderTypeToUInt64();
+    writer->SetCompressorTypeToLZ4();  // ≈ 10× faster than the default zlib
+    writeVtkXmlAtomically(path, *writer);
 }
 
 void writeCylinderMap(const std::string& path, const lube::FilmGrid& g, const std::vector<double>& z,

@@ -1,6 +1,6 @@
 #include "cosim/io/PvdWriter.hpp"
 
-#include <fstream>
+#include <sstream>
 #include <iomanip>
 #include <stdexcept>
 
@@ -9,18 +9,15 @@
 namespace flexehd::cosim {
 
 void PvdCollection::write(const std::string& path) const {
-    fem::writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream out(tmp);
-        if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
-        out << "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-               "  <Collection>\n"
-            << std::setprecision(17);
-        for (const auto& e : entries_)
-            out << "    <DataSet timestep=\"" << e.time << "\" group=\"\" part=\"0\" file=\"" << e.file << "\"/>\n";
-        out << "  </Collection>\n</VTKFile>\n";
-        if (!out.flush()) throw std::runtime_error("error writing '" + path + "'");
-    });
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+           "  <Collection>\n"
+        << std::setprecision(17);
+    for (const auto& e : entries_)
+        out << "    <DataSet timestep=\"" << e.time << "\" group=\"\" part=\"0\" file=\"" << e.file << "\"/>\n";
+    out << "  </Collection>\n</VTKFile>\n";
+    fem::writeTextAtomically(path, out.str());
 }
 
 }  // namespace flexehd::cosim

@@ -10,23 +10,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "cosim/io/VtkXmlFile.hpp"
+
 namespace flexehd::cosim {
-namespace {
-
-/// Silences VTK's own error printing (its XML parser logs through vtkLogger) for a scope.
-class QuietVtk {
-public:
-    QuietVtk() : was_(vtkObject::GetGlobalWarningDisplay()) { vtkObject::GlobalWarningDisplayOff(); }
-    ~QuietVtk() { vtkObject::SetGlobalWarningDisplay(was_); }
-    QuietVtk(const QuietVtk&) = delete;
-    QuietVtk& operator=(const QuietVtk&) = delete;
-
-private:
-    int was_;
-};
-
-}  // namespace
-
 VtuPointField readVtuPointField(const std::string& path, const std::string& name) {
     if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": no such file or not readable");
     const QuietVtk quiet;

@@ -13,7 +13,8 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include "fem/AtomicFile.hpp"
+#include "cosim/io/VtkXmlFile.hpp"
+
 
 namespace flexehd::cosim {
 namespace {
@@ -66,19 +67,16 @@ void writeVtu(const std::string& path, const fem::Mesh& mesh, const std::vector<
     for (const auto& d : fieldData)
         grid->GetFieldData()->AddArray(makeArray(d.name, Eigen::MatrixXd::Constant(1, 1, d.value), path));
 
-    fem::writeAtomically(path, [&](const std::string& tmp) {
-        vtkNew<vtkXMLUnstructuredGridWriter> writer;
-        writer->SetFileName(tmp.c_str());
-        writer->SetInputData(grid);
-        writer->SetDataModeToAppended();
-        writer->EncodeAppendedDataOff();  // raw binary
-        writer->SetHeaderTypeToUInt64();
-        if (compression == VtuCompression::LZ4)
-            writer->SetCompressorTypeToLZ4();
-        else if (compression == VtuCompression::None)
-            writer->SetCompressorTypeToNone();
-        if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + path + "'");
-    });
+    vtkNew<vtkXMLUnstructuredGridWriter> writer;
+    writer->SetInputData(grid);
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();  // raw binary
+    writer->SetHeaderTypeToUInt64();
+    if (compression == VtuCompression::LZ4)
+        writer->SetCompressorTypeToLZ4();
+    else if (compression == VtuCompression::None)
+        writer->SetCompressorTypeToNone();
+    writeVtkXmlAtomically(path, *writer);
 }
 
 }  // namespace flexehd::cosim

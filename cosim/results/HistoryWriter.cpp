@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string_view>
@@ -81,18 +82,28 @@ const std::vector<std::string>& HistoryWriter::columns(bool oil) {
     return oil ? all : base;
 }
 
-HistoryWriter::HistoryWriter(const std::string& path, bool oilColumns, std::vector<std::string> contactColumns)
-    : path_(path), oil_(oilColumns), contactColumns_(std::move(contactColumns)) {
-    std::vector<std::string> names = columns(oil_);
-    for (const std::string& name : contactColumns_) {
+namespace {
+
+// The further contacts' column names, checked against the table's and each other.
+std::vector<std::string> checkedContactColumns(bool oil, std::vector<std::string> contactColumns) {
+    std::vector<std::string> names = HistoryWriter::columns(oil);
+    for (const std::string& name : contactColumns) {
         if (name.empty() || name.find_first_of(", \t\r\n") != std::string::npos)
             throw std::invalid_argument("history column '" + name + "': a column name is not empty and has no comma or space");
         if (std::find(names.begin(), names.end(), name) != names.end())
             throw std::invalid_argument("history column '" + name + "' is there twice");
         names.push_back(name);
     }
-    out_.open(path, std::ios::out | std::ios::trunc);
-    if (!out_) throw std::runtime_error("cannot open '" + path + "' for writing");
+    return contactColumns;
+}
+
+}  // namespace
+
+HistoryWriter::HistoryWriter(const std::string& path, bool oilColumns, std::vector<std::string> contactColumns)
+    : path_(path),
+      oil_(oilColumns),
+      contactColumns_(checkedContactColumns(oilColumns, std::move(contactColumns))),
+      out_(path) {
     // The column names first, then the comments: numpy.genfromtxt(names=True) takes its names
     // from the first line and skips '#' lines after it, pandas.read_csv(comment='#') skips them.
     std::string header;
@@ -104,8 +115,7 @@ HistoryWriter::HistoryWriter(const std::string& path, bool oilColumns, std::vect
     for (const std::string& name : contactColumns_) header += ',' + name;
     header += '\n';
     header += kComments;
-    out_ << header;
-    if (!out_.flush()) throw std::runtime_error("error writing '" + path + "'");
+    out_.append(header);
 }
 
 void HistoryWriter::append(const StepRecord& r) {
@@ -137,8 +147,7 @@ void HistoryWriter::append(const StepRecord& r) {
     }
     for (double v : r.contactValues) fmt::format_to(out, ",{:.{}g}", v, kSignificantDigits);
     line += '\n';
-    out_.write(line.data(), static_cast<std::streamsize>(line.size()));
-    if (!out_.flush()) throw std::runtime_error("error writing '" + path_ + "'");
+    out_.append(line);
 }
 
 std::vector<StepRecord> HistoryWriter::read(const std::string& path, bool* partialLastLine) {

@@ -3,15 +3,16 @@
 //
 // The file starts with a few '#' comment lines (units, sign conventions), then a header line
 // whose column names carry the unit (`crank_deg`, `lateral_m`, `side_force_n`, …), then one
-// line per accepted step, printed with 9 significant digits. Each line is written whole and
-// flushed, so a run killed between steps leaves a valid CSV of complete lines. Non-finite
+// line per accepted step, printed with 9 significant digits. Each line is written whole,
+// unbuffered (fem::AppendFile), so a run killed between steps leaves a valid CSV of complete
+// lines, and a line that cannot be written (a full disk) is cut back, never left half. Non-finite
 // values are refused (std::runtime_error naming the column and the crank angle): the file
 // never holds NaN or Inf.
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "cosim/coupling/StepRecord.hpp"
+#include "fem/AppendFile.hpp"
 
 namespace flexehd::cosim {
 
@@ -26,9 +27,9 @@ public:
     explicit HistoryWriter(const std::string& path, bool oilColumns = false,
                            std::vector<std::string> contactColumns = {});
 
-    /// Writes one line and flushes it. Throws std::runtime_error naming the column and the
-    /// crank angle if a value is NaN or Inf (nothing is written then), or naming the file
-    /// on an I/O error; std::logic_error when the record's contact values do not match the
+    /// Writes one line. Throws std::runtime_error naming the column and the crank angle if a
+    /// value is NaN or Inf (nothing is written then), or naming the file and the reason on an
+    /// I/O error (the file then ends with the previous line); std::logic_error when the record's contact values do not match the
     /// contact columns.
     void append(const StepRecord& record);
 
@@ -47,9 +48,9 @@ public:
 
 private:
     std::string path_;
-    std::ofstream out_;
     bool oil_;
-    std::vector<std::string> contactColumns_;
+    std::vector<std::string> contactColumns_;  // checked before the file is touched
+    fem::AppendFile out_;
 };
 
 }  // namespace flexehd::cosim

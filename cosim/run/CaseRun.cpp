@@ -223,12 +223,24 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
         fields.discard();  // the unfinished cycle's snapshots; the last complete cycle's stay listed
     }
     if (cycle.empty() && status == "ok") status = "failed";
-    if (wear && wear->finished()) writeWearMaps(dir, wear->grid(), wear->maps());  // the last whole cycle's
+    if (wear && wear->finished()) {  // the last whole cycle's
+        try {
+            writeWearMaps(dir, wear->grid(), wear->maps());
+        } catch (const std::exception& e) {
+            if (status == "ok") status = "failed";
+            message += (message.empty() ? "" : "; ") + std::string(e.what());
+        }
+    }
     CaseRunResult result;
     result.summary =
         runSummary({c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(),
                     wear ? &*wear : nullptr, &cycleSeries});
-    writeSummary(dir, result.summary);
+    try {
+        writeSummary(dir, result.summary);
+    } catch (const std::exception& e) {  // a full disk: say what stopped the run, then that the summary is missing too
+        throw std::runtime_error(message.empty() ? std::string(e.what())
+                                                 : message + "; and the summary: " + e.what());
+    }
     if (signal) throw RunInterrupted(signal, message + " (partial results in " + dir + ", summary.json status: interrupted)");
     if (status != "ok") throw std::runtime_error(message + " (partial results in " + dir + ")");
     result.cycles = sim.statistics().cycles;

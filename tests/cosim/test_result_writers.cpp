@@ -1,6 +1,7 @@
 // Result writers of a run: history.csv (HistoryWriter), the VTK series (FieldSeriesWriter) and the
 // mode shapes (ModeShapeExport).
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +11,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -177,6 +180,36 @@ TEST(HistoryWriter, NonFiniteValueIsRefusedNamingColumnAndCrankAngle) {
     EXPECT_EQ(slurp(path), before) << "a refused record must leave no partial line";
     w.append(sampleRecord(2));  // the writer stays usable
     EXPECT_EQ(HistoryWriter::read(path.string()).size(), 2u);
+}
+
+// A row that does not fit (here the file-size limit, RLIMIT_FSIZE, in place of a full disk: the
+// write stops part-way through the row) is cut back: the file ends with the row before, the
+// error names the file and the reason in words, and nothing of the failed row is written later.
+TEST(HistoryWriter, ARowThatCannotBeWrittenIsCutBackAndTheReasonNamed) {
+    const auto path = test::scratchDir() / "history.csv";
+    HistoryWriter w(path.string());
+    for (int k = 0; k < 3; ++k) w.append(sampleRecord(k));
+    const std::string before = slurp(path);
+    rlimit old{};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+    const auto oldSignal = std::signal(SIGXFSZ, SIG_IGN);  // the write fails with EFBIG instead
+    rlimit small = old;
+    small.rlim_cur = before.size() + 40;  // room for 40 bytes of the next row only
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    std::string message;
+    try {
+        w.append(sampleRecord(3));
+    } catch (const std::runtime_error& e) {
+        message = e.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, oldSignal);
+    EXPECT_THAT(message, AllOf(HasSubstr("history.csv"), HasSubstr("EFBIG"), HasSubstr("keeps what was written before")));
+    EXPECT_EQ(slurp(path), before) << "the failed row must not stay in part";
+    w.append(sampleRecord(4));  // room again: the next row follows the last whole one
+    const auto read = HistoryWriter::read(path.string());
+    ASSERT_EQ(read.size(), 4u);
+    expectPrintedEqual(sampleRecord(4), read[3]);
 }
 
 // A run killed while writing a line leaves it without its newline: read() returns the complete
