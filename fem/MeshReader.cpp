@@ -1,6 +1,7 @@
 #include "fem/MeshReader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
@@ -56,6 +57,48 @@ std::string gmshTypeName(int type) {
     return name;
 }
 
+// Volume and boundary area of the current model's 3-D entities: OpenCASCADE's exact values, or
+// for entities of the built-in kernel those of their bounding boxes (an upper bound).
+void geometryMeasures(double& volume, double& area) {
+    volume = area = 0.0;
+    gmsh::vectorpair vols;
+    gmsh::model::getEntities(vols, 3);
+    for (const auto& [dim, tag] : vols) {
+        double v = 0.0;
+        try {
+            gmsh::model::occ::getMass(dim, tag, v);
+        } catch (...) {
+            v = 0.0;
+        }
+        if (v > 0.0) {
+            volume += v;
+            continue;
+        }
+        double x0, y0, z0, x1, y1, z1;
+        gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
+        volume += (x1 - x0) * (y1 - y0) * (z1 - z0);
+    }
+    gmsh::vectorpair faces;
+    gmsh::model::getBoundary(vols, faces, false, false, false);
+    for (const auto& [dim, tag] : faces) {
+        double a = 0.0;
+        try {
+            gmsh::model::occ::getMass(2, std::abs(tag), a);
+        } catch (...) {
+            a = 0.0;
+        }
+        if (a > 0.0) {
+            area += a;
+            continue;
+        }
+        double x0, y0, z0, x1, y1, z1;
+        gmsh::model::getBoundingBox(2, std::abs(tag), x0, y0, z0, x1, y1, z1);
+        const double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
+        area += std::max({dx * dy, dy * dz, dx * dz});
+    }
+    gmshErrors();  // a failed OpenCASCADE query leaves an error line that is not the file's
+}
+
 // Loads `path` into Gmsh's current model (meshing a .geo); caller holds the mutex.
 void loadIntoGmsh(const std::string& path, const MeshOptions& opt) {
     if (!fs::exists(path)) fail(path, "file not found");
@@ -81,6 +124,15 @@ void loadIntoGmsh(const std::string& path, const MeshOptions& opt) {
             double current = 0.0;
             gmsh::option::getNumber("Mesh.MeshSizeMax", current);
             gmsh::option::setNumber("Mesh.MeshSizeMax", std::min(current, opt.size));
+        }
+        if (opt.beforeMeshing) {
+            double size = 0.0, factor = 1.0, volume = 0.0, area = 0.0;
+            gmsh::option::getNumber("Mesh.MeshSizeMax", size);
+            gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
+            geometryMeasures(volume, area);
+            MeshEstimate e = estimateMesh(volume, area, size * factor, opt.order == 0 ? 2 : opt.order);
+            e.path = path;
+            opt.beforeMeshing(e);
         }
         try {
             gmsh::model::mesh::generate(3);
@@ -238,6 +290,35 @@ Mesh extractMesh(const std::string& path) {
 }
 
 }  // namespace
+
+MeshEstimate estimateMesh(double volume, double area, double size, int order) {
+    // Fitted to Gmsh's counts for meshes/piston.geo and meshes/liner.geo at their documented sizes
+    // and a 0.1 m cube at 0.01 to 0.0033 m (docs/meshes.md, "Estimate before meshing").
+    constexpr double kV = 0.45, kA = 1.18, kF = 0.85;
+    MeshEstimate e;
+    e.size = size;
+    e.order = order;
+    e.volume = volume;
+    e.area = area;
+    if (!(size > 0.0)) return e;
+    e.triangles = kA * area / (std::sqrt(3.0) / 4.0 * size * size);
+    e.tetrahedra = kV * volume / (size * size * size / (6.0 * std::sqrt(2.0))) + kF * e.triangles;
+    // Euler's relation: N₁ ≈ T/6 + F/4; edges E ≈ N₁ + T + F/2, one mid-node each at order 2.
+    const double n1 = e.tetrahedra / 6.0 + e.triangles / 4.0;
+    e.nodes = order == 1 ? n1 : 2.0 * n1 + e.tetrahedra + e.triangles / 2.0;
+    return e;
+}
+
+double sizeForNodes(double volume, double area, double maxNodes, int order) {
+    // nodes(size) falls as the size grows: bisect log(size) between 1 pm and 1 km.
+    double lo = 1e-12, hi = 1e3;
+    if (estimateMesh(volume, area, lo, order).nodes <= maxNodes) return lo;
+    for (int i = 0; i < 200 && hi > lo * (1.0 + 1e-9); ++i) {
+        const double mid = std::sqrt(lo * hi);
+        (estimateMesh(volume, area, mid, order).nodes <= maxNodes ? hi : lo) = mid;
+    }
+    return hi;
+}
 
 Mesh readMesh(const std::string& path, const MeshOptions& options) {
     Mesh mesh;

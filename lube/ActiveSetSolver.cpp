@@ -90,8 +90,8 @@ SolveReport ActiveSetSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
         if (next == cav) {
             throw std::runtime_error("ActiveSetSolver: active set converged after " +
                                      std::to_string(it) + " iterations but residual " +
-                                     std::to_string(rep.residual) + " > tolerance " +
-                                     std::to_string(control.tolerance) +
+                                     messageNumber(rep.residual) + " > tolerance " +
+                                     messageNumber(control.tolerance) +
                                      " (ill-conditioned film?)");
         }
         cav.swap(next);
@@ -99,7 +99,7 @@ SolveReport ActiveSetSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p
     rep.residual = sys.residual(p, pLower);
     throw std::runtime_error("ActiveSetSolver: active set still changing after " +
                              std::to_string(control.maxIterations) + " iterations (residual " +
-                             std::to_string(rep.residual) + ")");
+                             messageNumber(rep.residual) + ")");
 }
 
 }  // namespace flexehd::lube

@@ -172,8 +172,8 @@ void gaussSeidelSolve(const JfoNetwork& net, const std::vector<int>& rows, const
         if (rmax <= o.control.tolerance) return;
     }
     throw std::runtime_error("JfoSolver: not converged after " + std::to_string(o.control.maxIterations) +
-                             " sweeps (residual " + std::to_string(res.residual) + " > tolerance " +
-                             std::to_string(o.control.tolerance) + ", omega " + std::to_string(w) + ")");
+                             " sweeps (residual " + messageNumber(res.residual) + " > tolerance " +
+                             messageNumber(o.control.tolerance) + ", omega " + std::to_string(w) + ")");
 }
 
 // The effective squeeze rate that turns the Reynolds-condition problem into the JFO balance of

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -175,7 +176,54 @@ JournalBearingResult JournalBearing::solve() const {
     res.minFilm = f.minFilm;
     res.cavitatedArea = f.cavitatedArea;
     res.cavitatedFraction = f.cavitatedArea / f.filmArea;
+    res.resolution = filmResolution(s.eccentricity, s.circumferentialNodes);
     return res;
+}
+
+namespace {
+
+// The load's measured deficit against the grid-converged load at K nodes across the minimum
+// region h < 2 h_min: the largest of L/D = 1 and infinitely long with the Reynolds condition,
+// ε = 0.9 … 0.9999, made monotone (docs/lube.md §8, "Grid resolution of the minimum film").
+double measuredLoadDeficit(double k) {
+    static constexpr std::pair<double, double> kTable[] = {
+        {0.14, 0.993}, {0.29, 0.971}, {0.46, 0.931}, {0.58, 0.889}, {0.91, 0.751}, {1.15, 0.634},
+        {1.45, 0.503}, {1.82, 0.349}, {2.3, 0.208},  {2.9, 0.108},  {3.65, 0.053}, {4.6, 0.0365},
+        {5.8, 0.0365}, {7.3, 0.0174}, {9.2, 0.010},  {11.6, 0.0078}};
+    const auto& first = kTable[0];
+    const auto& last = kTable[std::size(kTable) - 1];
+    if (!(k > 0.0)) return 1.0;
+    if (k <= first.first) return 1.0 - (1.0 - first.second) * (k / first.first) * (k / first.first);  // W ∝ K²
+    if (k >= last.first) return last.second * (last.first / k) * (last.first / k);                   // O(Δθ²)
+    for (std::size_t i = 1; i < std::size(kTable); ++i) {
+        const auto& [k1, d1] = kTable[i];
+        if (k > k1) continue;
+        const auto& [k0, d0] = kTable[i - 1];
+        const double t = std::log(k / k0) / std::log(k1 / k0);
+        return std::exp((1 - t) * std::log(d0) + t * std::log(d1));
+    }
+    return last.second;
+}
+
+}  // namespace
+
+FilmResolution filmResolution(double eccentricity, int circumferentialNodes) {
+    if (!(eccentricity > 0.0 && eccentricity < 1.0))
+        throw std::invalid_argument("journal bearing: the eccentricity ratio must be in (0, 1)");
+    if (circumferentialNodes < 1) throw std::invalid_argument("journal bearing: no circumferential nodes");
+    FilmResolution r;
+    const double halfWidth = std::sqrt(2 * (1 - eccentricity) / eccentricity);  // Δθ, rad
+    r.regionWidthDeg = 2 * halfWidth * 180 / kPi;
+    r.nodesAcross = 2 * halfWidth / (2 * kPi / circumferentialNodes);
+    r.resolved = r.nodesAcross >= kMinFilmRegionNodes;
+    r.expectedLoadDeficit = r.resolved ? 0.0 : measuredLoadDeficit(r.nodesAcross);
+    r.neededCircumferentialNodes = 16 * std::ceil(kMinFilmRegionNodes * kPi / halfWidth / 16 - 1e-12);
+    return r;
+}
+
+double largestResolvedEccentricity(int circumferentialNodes) {
+    const double halfWidth = kMinFilmRegionNodes * kPi / circumferentialNodes;
+    return 2 / (2 + halfWidth * halfWidth);
 }
 
 const char* name(BearingCavitation m) {

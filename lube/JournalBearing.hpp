@@ -47,6 +47,27 @@ struct JournalBearingSpec {
     double omega = 0.0;          ///< over-relaxation of PSOR and JFO sweeps; 0 = automatic
 };
 
+/// How well `circumferentialNodes` grid nodes round the sleeve resolve the film's minimum
+/// region (docs/lube.md §8, "Grid resolution of the minimum film"). Near the minimum film
+/// h ≈ h_min + c ε (θ−π)²/2, so h < 2 h_min over a half-width Δθ = √(2 h_min/(c ε)) = √(2(1−ε)/ε);
+/// the pressure peak lies in that region, and the load is grid-converged (measured: within 2 %)
+/// once kMinFilmRegionNodes grid spacings 2π/Nθ span its width 2Δθ.
+struct FilmResolution {
+    double regionWidthDeg = 0.0;          ///< 2Δθ in degrees
+    double nodesAcross = 0.0;             ///< K = 2Δθ/(2π/Nθ): grid nodes across the region
+    /// The fraction (0..1) by which the load was measured to be low at this K (the largest of the
+    /// measured set-ups, L/D = 1 with the Reynolds condition; docs/lube.md §8); 0 when resolved
+    double expectedLoadDeficit = 0.0;
+    /// The least Nθ with K ≥ kMinFilmRegionNodes, rounded up to a multiple of 16 (multigrid
+    /// coarsens by halving); may exceed any grid that fits in memory (ε → 1)
+    double neededCircumferentialNodes = 0.0;
+    bool resolved = false;                ///< K ≥ kMinFilmRegionNodes
+};
+
+/// Grid nodes across the minimum region h < 2 h_min that make the load grid-converged to 2 %
+/// (docs/lube.md §8: 1.7 % at K = 7.3, 0.7–1.0 % at K ≈ 9.5, 3.4 % at K ≈ 5.8).
+inline constexpr double kMinFilmRegionNodes = 8.0;
+
 struct JournalBearingResult {
     std::string solverName;           ///< the method that solved the film
     int axialNodes = 0;               ///< of the grid solved
@@ -73,7 +94,17 @@ struct JournalBearingResult {
     int coarseIterations = 0;         ///< of them on coarse grids (nested start)
     double residual = 0.0;
     double solveSeconds = 0.0;
+    FilmResolution resolution;        ///< of the minimum film by the grid (filmResolution)
 };
+
+
+/// The resolution of the film h = c(1 + ε cos θ) on `circumferentialNodes` nodes round the
+/// sleeve; std::invalid_argument for ε outside (0, 1) or fewer than one node.
+FilmResolution filmResolution(double eccentricity, int circumferentialNodes);
+
+/// The largest ε whose minimum region `circumferentialNodes` nodes resolve (K ≥ kMinFilmRegionNodes):
+/// 2/(2 + (kMinFilmRegionNodes π/Nθ)²).
+double largestResolvedEccentricity(int circumferentialNodes);
 
 class JournalBearing {
 public:

@@ -269,7 +269,7 @@ SolveReport MultigridSolver::iterate(const ReynoldsSystem& sys, Eigen::VectorXd&
         if (!std::isfinite(rep.residual) || rep.residual > 1e8 * std::max(first, 1.0))
             throw std::runtime_error("MultigridSolver: diverged after " +
                                      std::to_string(rep.iterations) + " iterations (residual " +
-                                     std::to_string(rep.residual) + ")");
+                                     messageNumber(rep.residual) + ")");
         if (rep.residual <= control.tolerance && rep.iterations >= std::min(control.minIterations, maxIt))
             return rep;
         if (rep.iterations == maxIt) break;
@@ -277,8 +277,8 @@ SolveReport MultigridSolver::iterate(const ReynoldsSystem& sys, Eigen::VectorXd&
         ++rep.iterations;
     }
     throw std::runtime_error("MultigridSolver: not converged after " + std::to_string(maxIt) +
-                             " iterations (residual " + std::to_string(rep.residual) +
-                             " > tolerance " + std::to_string(control.tolerance) + ")");
+                             " iterations (residual " + messageNumber(rep.residual) +
+                             " > tolerance " + messageNumber(control.tolerance) + ")");
 }
 
 }  // namespace flexehd::lube

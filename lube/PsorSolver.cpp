@@ -63,16 +63,16 @@ SolveReport PsorSolver::solve(const ReynoldsSystem& sys, Eigen::VectorXd& p, dou
             if (first < 0.0) first = rep.residual;
             if (!std::isfinite(rep.residual) || rep.residual > 1e8 * std::max(first, 1.0))
                 throw std::runtime_error("PsorSolver: diverged after " + std::to_string(it) +
-                                         " sweeps (residual " + std::to_string(rep.residual) +
-                                         ", omega " + std::to_string(w) + ")");
+                                         " sweeps (residual " + messageNumber(rep.residual) +
+                                         ", omega " + messageNumber(w) + ")");
             if (rep.residual <= control.tolerance) return rep;
         }
     }
     throw std::runtime_error("PsorSolver: not converged after " +
                              std::to_string(control.maxIterations) + " sweeps (residual " +
-                             std::to_string(rep.residual) + " > tolerance " +
-                             std::to_string(control.tolerance) + ", omega " +
-                             std::to_string(w) + ")");
+                             messageNumber(rep.residual) + " > tolerance " +
+                             messageNumber(control.tolerance) + ", omega " +
+                             messageNumber(w) + ")");
 }
 
 }  // namespace flexehd::lube

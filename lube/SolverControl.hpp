@@ -1,5 +1,8 @@
 #pragma once
 // Settings and report shared by the complementarity solvers (PsorSolver, ActiveSetSolver).
+#include <cstdio>
+#include <string>
+
 namespace flexehd::lube {
 
 struct SolverControl {
@@ -16,5 +19,13 @@ struct SolveReport {
     int iterations = 0;     ///< PSOR sweeps, or active-set iterations (= factorizations)
     double residual = 0.0;  ///< final relative natural residual
 };
+
+/// A residual, tolerance or factor in a solver's message: three significant digits (%g), so that
+/// 1e-08 does not read 0.000000.
+inline std::string messageNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
 
 }  // namespace flexehd::lube

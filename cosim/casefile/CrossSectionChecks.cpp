@@ -1,5 +1,7 @@
 #include "cosim/casefile/CrossSectionChecks.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -55,6 +57,22 @@ void requireOilControlRingOnPiston(const YamlSection& lubricant, const EngineCas
         fail("top", fmt::format("at TDC the ring's upper edge would stand above the deck: it must lie below "
                                      "engine.pin_tdc_depth = {:g} m above the pin, got {:g} m",
                                      c.engine.pinTdcDepth, r->top));
+}
+
+// The depth the skirt's lower edge reaches at BDC: the pin's travel of the offset crank-slider
+// (docs/dynamics.md §1), sqrt((l + r)² − e²) − sqrt((l − r)² − e²), below its TDC depth.
+void requireReplenishWithinReach(const YamlSection& lubricant, const EngineCase& c) {
+    const OilSupplySpec& sp = c.lubricant.supply;
+    if (!sp.replenish || std::isnan(sp.replenishBelowDepth)) return;
+    const double r = c.engine.stroke / 2, l = c.engine.rodLength, e = c.engine.pinOffset;
+    const double travel = std::sqrt((l + r) * (l + r) - e * e) - std::sqrt((l - r) * (l - r) - e * e);
+    const double deepest = c.engine.pinTdcDepth + travel - c.piston.skirtBottom;
+    if (sp.replenishBelowDepth > deepest)
+        lubricant.source().fail(
+            lubricant.keyPath("supply.replenish_below_depth"), lubricant.get("supply")["replenish_below_depth"],
+            fmt::format("{:g} m is deeper than the skirt's lower edge ever reaches ({:.4g} m below the deck, at BDC): "
+                        "the layer would never be replenished; give a depth up to {:.4g} m, or replenish: false",
+                        sp.replenishBelowDepth, deepest, deepest));
 }
 
 }  // namespace flexehd::cosim::casefile

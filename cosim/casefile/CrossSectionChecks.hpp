@@ -16,5 +16,8 @@ void requireSkirtBelowDeck(const YamlSection& engine, const EngineCase& c);
 void requireSupportedMassConserving(const YamlSection& coupling, const EngineCase& c);
 /// lubricant.supply.oil_control_ring above piston.skirt_top and, at TDC, below the deck.
 void requireOilControlRingOnPiston(const YamlSection& lubricant, const EngineCase& c);
+/// lubricant.supply.replenish_below_depth no deeper than the skirt's lower edge reaches at BDC
+/// (after engine, piston and lubricant): deeper, the layer would never be replenished.
+void requireReplenishWithinReach(const YamlSection& lubricant, const EngineCase& c);
 
 }  // namespace flexehd::cosim::casefile

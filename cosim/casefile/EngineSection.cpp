@@ -23,6 +23,16 @@ YamlSection readEngine(const YamlSection& top, EngineSpec& e) {
     e.pinTdcDepth =
         number(s, "pin_tdc_depth", {"depth of the pin axis below the deck at TDC", "m"}, Sign::Positive, e.pinTdcDepth);
     if (e.bore > 2.0) s.fail("bore", fmt::format("a bore of {:g} m is above 2 m: check the units (m)", e.bore));
+    if (e.bore < 0.01) s.fail("bore", fmt::format("a bore of {:g} m is below 10 mm: check the units (m)", e.bore));
+    // Piston engines turn from about 60 rev/min (large two-stroke diesels) to about 20 000 (racing).
+    if (e.speedRpm < 10.0 || e.speedRpm > 30000.0)
+        s.fail("speed_rpm", fmt::format("{:g} rev/min is outside the range of piston engines, 10 to 30 000 rev/min",
+                                        e.speedRpm));
+    if (e.crankcasePressure < 1e4 || e.crankcasePressure > 1e6)
+        s.fail("crankcase_pressure",
+               fmt::format("{:g} Pa is outside 10 kPa to 1 MPa (absolute; the atmosphere is 101 325 Pa): check the "
+                           "units (Pa, absolute)",
+                           e.crankcasePressure));
     if (e.stroke > 4.0) s.fail("stroke", fmt::format("a stroke of {:g} m is above 4 m: check the units (m)", e.stroke));
     if (std::abs(e.pinOffset) >= e.bore / 2)
         s.fail("pin_offset", fmt::format("|pin_offset| = {:g} m must be smaller than the bore radius {:g} m",

@@ -99,6 +99,13 @@ YamlSection readLubricant(const YamlSection& top, const EngineSpec& engine, Lubr
         s.fail("viscosity", fmt::format("{:g} Pa s is not an engine oil (0.002-0.1 Pa s): check the units (Pa s, "
                                         "not cP or mm^2/s)",
                                         l.viscosity));
+    if (l.viscosity < 1e-4)
+        s.fail("viscosity", fmt::format("{:g} Pa s is thinner than water (0.001 Pa s), not an engine oil (0.002-0.1 "
+                                        "Pa s): check the units (Pa s)",
+                                        l.viscosity));
+    if (l.density < 500.0 || l.density > 2000.0)
+        s.fail("density", fmt::format("{:g} kg/m^3 is not an oil's density (800-900 kg/m^3): check the units (kg/m^3)",
+                                      l.density));
     if (l.barusAlpha > 1e-7)
         s.fail("barus_alpha", fmt::format("expected a pressure-viscosity coefficient below 1e-7 1/Pa (oils: 1e-8 to "
                                           "3e-8), got {:g}",

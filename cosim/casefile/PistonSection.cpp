@@ -10,6 +10,11 @@
 #include "cosim/io/YamlKeys.hpp"
 
 namespace flexehd::cosim::casefile {
+namespace {
+
+constexpr double kMinClearance = 1e-6;  // m: below the skirt's and liner's combined roughness
+
+}  // namespace
 
 void readPiston(const YamlSection& top, const EngineSpec& engine, PistonSpec& p) {
     if (!top.has("piston")) top.missing("piston", "the piston section (mass, pin_mass, inertia, skirt_top, ...)");
@@ -40,6 +45,17 @@ void readPiston(const YamlSection& top, const EngineSpec& engine, PistonSpec& p)
         s.fail("clearance", fmt::format("expected a radial clearance below 1% of the bore ({:g} m), got {:g} m: "
                                         "check the units (m; 50 um = 5e-05)",
                                         0.01 * engine.bore, p.clearance));
+    if (p.clearance < kMinClearance)
+        s.fail("clearance", fmt::format("a radial clearance of {:g} m is below 1 um, less than the surfaces' "
+                                        "roughness: the skirt would run on its asperities everywhere; check the "
+                                        "units (m; 50 um = 5e-05)",
+                                        p.clearance));
+    // A solid steel cylinder of the bore's diameter and twice its height: heavier than any piston.
+    const double heaviest = 7850.0 * M_PI / 4 * std::pow(engine.bore, 2) * 2 * engine.bore;
+    if (p.mass > heaviest)
+        s.fail("mass", fmt::format("{:g} kg is heavier than a solid steel cylinder of the bore, twice the bore high "
+                                   "({:.3g} kg): check the units (kg)",
+                                   p.mass, heaviest));
     if (!(halfDeg <= 180.0))
         s.fail("skirt_half_angle_deg", fmt::format("expected 0 < angle <= 180 deg, got {:g}", halfDeg));
     if (s.has("skirt_half_angle_deg")) p.skirtHalfAngle = halfDeg * kDeg;

@@ -1,6 +1,7 @@
 // `flexehd bearing`: the options as a lube::JournalBearing, its solution as a table or JSON.
 #include <optional>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -8,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
@@ -81,6 +83,8 @@ std::string str(double v) {
     return o.str();
 }
 
+constexpr double kToleranceFloor = 1e-14;
+
 void requirePositive(double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v))
         throw std::invalid_argument(std::string(what) + " must be positive and finite (got " + str(v) + ")");
@@ -93,6 +97,12 @@ lube::JournalBearingSpec bearingSpec(const BearingArgs& a) {
     requirePositive(a.speed, "--speed");
     requirePositive(a.viscosity, "--viscosity");
     requirePositive(a.tolerance, "--tolerance");
+    // The residual is relative: below about 100 ulp it is rounding noise, which no iteration lowers.
+    if (a.tolerance < kToleranceFloor)
+        throw std::invalid_argument("--tolerance " + str(a.tolerance) +
+                                    " is below what double precision can reach (the residual is relative: about " +
+                                    str(kToleranceFloor) + " is the least an iteration can reach); give " +
+                                    str(kToleranceFloor) + " or more");
     if (!(a.omega == 0.0 || (a.omega > 0.0 && a.omega < 2.0)))
         throw std::invalid_argument("--omega must be in (0, 2), or 0 for automatic");
     if (!(a.eccentricity > 0.0 && a.eccentricity < 1.0))
@@ -183,7 +193,91 @@ nlohmann::json resultJson(const lube::JournalBearingSpec& s, const lube::Journal
     doc["coarse_iterations"] = r.coarseIterations;
     doc["residual"] = r.residual;
     doc["seconds"] = r.solveSeconds;
+    const lube::FilmResolution& fr = r.resolution;
+    doc["grid_resolution"] = {{"min_region_width_deg", fr.regionWidthDeg},
+                              {"nodes_across_min_region", fr.nodesAcross},
+                              {"needed_circumferential_nodes", fr.neededCircumferentialNodes},
+                              {"resolved", fr.resolved},
+                              {"expected_load_deficit", fr.expectedLoadDeficit}};
     return doc;
+}
+
+// Refuses a result with a non-finite number: the inputs are beyond what double precision resolves
+// (a length or clearance of 1e-300 m, a speed of 1e300 rev/s), and nan or inf tells nothing.
+void requireFiniteResult(const lube::JournalBearingResult& r) {
+    const std::pair<const char*, double> figures[] = {
+        {"load", r.load}, {"attitude angle", r.attitudeDeg}, {"Sommerfeld number", r.sommerfeld},
+        {"friction torque", r.frictionTorque}, {"friction power", r.frictionPower},
+        {"friction coefficient", r.frictionCoefficient}, {"friction variable", r.frictionVariable},
+        {"inlet flow", r.inletFlow}, {"return flow", r.returnFlow}, {"side flow", r.sideFlow},
+        {"flow variable", r.flowVariable}, {"max pressure", r.maxPressure},
+        {"pressure ratio", r.maxPressureRatio}, {"min film", r.minFilm}, {"cavitated area", r.cavitatedArea},
+        {"cavitated fraction", r.cavitatedFraction}, {"residual", r.residual}};
+    std::string bad;
+    for (const auto& [what, v] : figures)
+        if (!std::isfinite(v)) bad += (bad.empty() ? "" : ", ") + std::string(what);
+    if (!bad.empty())
+        throw std::runtime_error("the result is not finite (" + bad +
+                                 "): the inputs are beyond what double precision resolves; check the magnitudes "
+                                 "of --radius, --length, --clearance, --speed and --viscosity (SI units: m, rev/s, "
+                                 "Pa s)");
+}
+
+// The largest circumferential grid the command offers to solve: 65536 × 33 nodes take about
+// 0.1 GB and a few seconds with multigrid (docs/lube.md §8); a minimum film that needs more is
+// beyond what a grid can resolve (and far below any real surface roughness).
+constexpr int kMaxCircumferentialNodes = 65536;
+constexpr int kDefaultCircumferentialNodes = 128;
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+// A measured load deficit as a percentage: "more than 99", "35", "3.6".
+std::string percentText(double deficit) {
+    if (deficit > 0.99) return "more than 99";
+    return deficit >= 0.1 ? fixed(100 * deficit, 0) : fixed(100 * deficit, 1);
+}
+
+// "0.981", "0.99999993": ε with enough digits to differ from 1.
+std::string eccentricityText(double e) {
+    const int digits = std::max(3, int(std::ceil(-std::log10(1 - e))) + 1);
+    return fixed(std::floor(e * std::pow(10.0, digits)) / std::pow(10.0, digits), digits);
+}
+
+// The film's minimum region against the grid (docs/lube.md §8): refuses when no grid the command
+// solves resolves it, or when the given grid sees less than one node across it (the load would be
+// 70–100 % low: meaningless); warns when fewer than kMinFilmRegionNodes span it.
+void checkFilmResolution(const lube::JournalBearingSpec& s, const std::string& gridText) {
+    const lube::FilmResolution fr = lube::filmResolution(s.eccentricity, s.circumferentialNodes);
+    if (fr.resolved) return;
+    const std::string region = "the film's minimum region (h < 2 h_min, " + str(fr.regionWidthDeg) + " deg wide)";
+    const int nz = s.axialNodes;
+    if (fr.neededCircumferentialNodes > kMaxCircumferentialNodes)
+        throw std::invalid_argument(
+            "--eccentricity " + str(s.eccentricity) + ": " + region + " needs NTHETA >= " +
+            fixed(fr.neededCircumferentialNodes, 0) + " circumferential nodes (" + str(lube::kMinFilmRegionNodes) +
+            " across it) for a grid-converged load, more than the largest grid this command solves (NTHETA " +
+            std::to_string(kMaxCircumferentialNodes) +
+            "): the eccentricity is beyond what a grid can resolve (the minimum film is " + str(1 - s.eccentricity) +
+            " of the clearance). The default grid (" + std::to_string(kDefaultCircumferentialNodes) +
+            "x33) resolves eccentricities up to " +
+            eccentricityText(lube::largestResolvedEccentricity(kDefaultCircumferentialNodes)) + ", the largest (" +
+            std::to_string(kMaxCircumferentialNodes) + "x33) up to " +
+            eccentricityText(lube::largestResolvedEccentricity(kMaxCircumferentialNodes)));
+    const std::string needed = fixed(fr.neededCircumferentialNodes, 0);
+    const std::string advice = "use --grid " + needed + "x" + std::to_string(nz) + " (NTHETA >= " + needed + ")";
+    const std::string deficit = percentText(fr.expectedLoadDeficit);
+    if (fr.nodesAcross < 1.0)
+        throw std::invalid_argument("--grid " + gridText + " at --eccentricity " + str(s.eccentricity) + ": " + region +
+                                    " falls between two grid nodes (" + fixed(fr.nodesAcross, 2) +
+                                    " circumferential nodes across it); the load would be meaningless (measured: " +
+                                    deficit + " % low); " + advice);
+    spdlog::warn("{} is spanned by only {} circumferential nodes; the load is not grid-converged (expect it about {} % "
+                 "low); {}",
+                 region, fixed(fr.nodesAcross, 1), deficit, advice);
 }
 
 void printTable(const lube::JournalBearingSpec& s, const lube::JournalBearingResult& r, double totalSeconds) {
@@ -217,6 +311,12 @@ void printTable(const lube::JournalBearingSpec& s, const lube::JournalBearingRes
     row("min film", r.minFilm, "m");
     row("cavitated area", r.cavitatedArea, "m^2");
     row("cavitated fraction", r.cavitatedFraction, "-");
+    if (!r.resolution.resolved)
+        std::printf("\n  NOT GRID-CONVERGED: %.2g circumferential nodes across the minimum film region (h < 2 h_min, "
+                    "%.3g deg wide); the load is about %s %% low; use NTHETA >= %.0f\n",
+                    r.resolution.nodesAcross, r.resolution.regionWidthDeg,
+                    percentText(r.resolution.expectedLoadDeficit).c_str(),
+                    r.resolution.neededCircumferentialNodes);
     std::printf("\n  %d iterations (%d coarse), residual %.2e, solve %.3f s, total %.3f s\n", r.iterations,
                 r.coarseIterations, r.residual, r.solveSeconds, totalSeconds);
 }
@@ -225,6 +325,7 @@ void runBearing(const BearingArgs& a) {
     Stopwatch total;
     const lube::JournalBearingSpec s = bearingSpec(a);
     const lube::JournalBearing bearing(s);
+    checkFilmResolution(s, a.grid);
     spdlog::info("journal bearing R = {} m, L = {} m{}, c = {} m, eps = {}, N = {} rev/s, mu = {} Pa s", s.radius,
                  s.length, s.infinitelyLong ? " (infinitely long)" : "", s.clearance, s.eccentricity, s.speed,
                  s.viscosity);
@@ -234,6 +335,7 @@ void runBearing(const BearingArgs& a) {
     spdlog::info("solving: {} cavitation, {} solver, grid {}x{} (theta x z)", lube::name(s.cavitation),
                  bearing.methodName(), s.circumferentialNodes, s.infinitelyLong ? 2 : s.axialNodes);
     const lube::JournalBearingResult r = bearing.solve();
+    requireFiniteResult(r);
     spdlog::info("solved: {} iterations ({} on coarse grids), residual {:.2e}, {:.3f} s", r.iterations,
                  r.coarseIterations, r.residual, r.solveSeconds);
     if (a.json) {

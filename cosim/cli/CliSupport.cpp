@@ -3,12 +3,17 @@
 
 #include <signal.h>
 #include <sys/prctl.h>
+#include <linux/magic.h>
 #include <sys/resource.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 #include <cstdlib>
 
 #include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
 #include <iostream>
 #include <string>
 
@@ -67,8 +72,76 @@ CLI::Validator positiveWholeNumber() {
     return numberCheck("a whole number ≥ 1", true, [](double v) { return v >= 1.0 && v <= 2147483647.0; });
 }
 
-std::string commandLineError(const CLI::ParseError& e) {
-    return std::string(e.what()) + " (flexehd --help, flexehd COMMAND --help: the commands and their options)";
+namespace {
+
+std::string commandNames(const CLI::App& app) {
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+    return names;
+}
+
+// An option of `cmd` (or of its parsed subcommands) that takes one value but was given more.
+const CLI::Option* repeatedOption(const CLI::App& cmd) {
+    for (const CLI::Option* o : cmd.get_options())
+        if (o->get_items_expected_max() == 1 && o->count() > 1) return o;
+    for (const CLI::App* sub : cmd.get_subcommands())
+        if (const CLI::Option* o = repeatedOption(*sub)) return o;
+    return nullptr;
+}
+
+std::string optionName(const CLI::Option& o) {
+    if (!o.get_lnames().empty()) return "--" + o.get_lnames().front();
+    if (!o.get_snames().empty()) return "-" + o.get_snames().front();
+    return o.get_name();
+}
+
+}  // namespace
+
+std::string commandLineError(const CLI::App& app, const CLI::ParseError& e, const std::vector<std::string>& args) {
+    const std::string help = " (flexehd --help, flexehd COMMAND --help: the commands and their options)";
+    if (app.get_subcommands().empty()) {
+        // No command was recognised: the first word that is not an option is the command's place.
+        for (const std::string& a : args)
+            if (!a.empty() && a[0] != '-')
+                return fmt::format("unknown command '{}'; commands are: {}{}", a, commandNames(app), help);
+        if (dynamic_cast<const CLI::RequiredError*>(&e))
+            return fmt::format("no command given; commands are: {}{}", commandNames(app), help);
+    }
+    if (const CLI::Option* o = repeatedOption(app))
+        return fmt::format("option {} given {}; give it once{}", optionName(*o),
+                           o->count() == 2 ? std::string("twice") : std::to_string(o->count()) + " times", help);
+    return std::string(e.what()) + help;
+}
+
+void createOutputFolder(const std::string& dir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path target = fs::absolute(fs::path(dir), ec).lexically_normal();
+    if (fs::is_directory(target, ec)) return;
+    // The nearest part of the path that exists says why it cannot be made.
+    fs::path existing = target;
+    while (!existing.empty() && existing != existing.root_path() && !fs::exists(existing, ec))
+        existing = existing.parent_path();
+    std::string reason;
+    struct statfs fsInfo {};
+    if (existing == target) {
+        reason = "it exists and is not a folder";
+    } else if (fs::exists(existing, ec) && !fs::is_directory(existing, ec)) {
+        reason = fmt::format("a parent is a file ({})", existing.string());
+    } else if (::statfs(existing.c_str(), &fsInfo) == 0 &&
+               (fsInfo.f_type == PROC_SUPER_MAGIC || fsInfo.f_type == SYSFS_MAGIC)) {
+        reason = fmt::format("{} is a kernel file system that holds no folders of files", existing.string());
+    } else {
+        fs::create_directories(target, ec);
+        if (!ec) return;
+        if (ec == std::errc::read_only_file_system) reason = "read-only file system";
+        else if (ec == std::errc::permission_denied || ec == std::errc::operation_not_permitted)
+            reason = fmt::format("permission denied (in {})", existing.string());
+        else if (ec == std::errc::no_space_on_device) reason = "no space left on the device";
+        else reason = ec.message();
+    }
+    throw std::runtime_error(fmt::format("cannot create the output folder {}: {}", target.string(), reason));
 }
 
 void addMeshOptions(CLI::App* cmd, MeshArguments& mesh) {

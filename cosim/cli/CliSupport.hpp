@@ -1,6 +1,7 @@
 #pragma once
 // Small pieces shared by the subcommands: timing and the JSON / table output conventions.
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -22,9 +23,16 @@ CLI::Validator numberFromTo(double lo, double hi);     ///< lo ≤ x ≤ hi
 CLI::Validator wholeNumberFromTo(long lo, long hi);    ///< an integer, lo ≤ n ≤ hi
 CLI::Validator positiveWholeNumber();                  ///< an integer ≥ 1
 
-/// The message of a command-line error for `flexehd: error: …`: CLI11's text with the option
-/// first and the help hint.
-std::string commandLineError(const CLI::ParseError& e);
+/// The message of a command-line error for `flexehd: error: …`: in flexehd's words where CLI11's
+/// would puzzle (an unknown or missing command with the list of commands, an option given twice),
+/// otherwise CLI11's text with the option first; then the help hint. `args` are the arguments
+/// after the program name.
+std::string commandLineError(const CLI::App& app, const CLI::ParseError& e, const std::vector<std::string>& args);
+
+/// Creates the output folder `dir` (and its parents) or throws "cannot create the output folder
+/// DIR: REASON" with the reason in words (a parent is a file, permission denied, read-only file
+/// system, a kernel file system).
+void createOutputFolder(const std::string& dir);
 
 /// The mesh options every mesh-reading subcommand shares: --mesh, --order, --size.
 struct MeshArguments {

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
+#include "cosim/coupling/MemoryBudget.hpp"
 #include "fem/MeshReader.hpp"
 #include "modal/CraigBamptonReducer.hpp"
 #include "modal/ModalDamping.hpp"
@@ -25,15 +28,45 @@ struct ReduceArgs {
     bool json = false;
 };
 
+// A lower bound of the peak memory of `reduce` for a mesh of `nodes` nodes (bytes): 20 kB per node
+// and 24 B per node and normal mode, below the 27–30 kB per 10-node-tetrahedron node measured
+// on meshes/piston.geo at 0.0065, 0.004 and 0.0025 m with 20 modes (docs/modal.md, "Command line").
+double reduceMemoryEstimateBytes(double nodes, int modes) { return nodes * (20e3 + 24.0 * std::max(0, modes)); }
+
+// Before Gmsh meshes a .geo: the expected size as a progress line, and a refusal when reducing
+// that mesh cannot fit in the memory this process can still get.
+void checkMeshEstimate(const fem::MeshEstimate& e, const MeshArguments& mesh, int modes) {
+    spdlog::info("meshing {} at size {:.3g} m: about {:.3g} elements ({:.3g} nodes) expected", e.path, e.size,
+                 e.tetrahedra, e.nodes);
+    const double need = reduceMemoryEstimateBytes(e.nodes, modes);
+    const std::uint64_t avail = cosim::availableMemoryBytes();
+    if (avail == 0 || need <= double(avail)) return;
+    const double maxNodes = double(avail) / reduceMemoryEstimateBytes(1.0, modes);
+    const double smallest = fem::sizeForNodes(e.volume, e.area, maxNodes, e.order);
+    const std::string sizeText = mesh.options.size > 0.0 ? fmt::format("--size {:g}", mesh.options.size)
+                                                         : fmt::format("the size {:g} m of the file", e.size);
+    throw std::runtime_error(fmt::format(
+        "mesh '{}': {} would make about {:.2g} elements ({:.2g} nodes; volume {:.3g} m³, surface {:.3g} m²), and "
+        "reducing them needs at least {} of memory; the smallest size within the memory budget of {} is about "
+        "{:.2g} m",
+        e.path, sizeText, e.tetrahedra, e.nodes, e.volume, e.area, cosim::formatBytes(need),
+        cosim::formatBytes(double(avail)), smallest));
+}
+
 void runReduce(const ReduceArgs& a) {
     Stopwatch total;
     std::vector<modal::InterfaceSpec> specs;
     for (const auto& s : a.interfaces) specs.push_back(modal::parseInterface(s));
     for (const auto& b : a.dampingBands) modal::parseDampingBand(b);  // fail before the long work
     spdlog::info("reading mesh {}", a.mesh.path);
-    const fem::Mesh mesh = fem::readMesh(a.mesh.path, a.mesh.options);
-    spdlog::info("mesh: {} nodes, {} {} elements, {} DOFs", mesh.numNodes(), mesh.volume.size(),
-                 fem::name(mesh.volume.type), 3 * mesh.numNodes());
+    fem::MeshOptions options = a.mesh.options;
+    options.beforeMeshing = [&](const fem::MeshEstimate& e) {
+        checkMeshEstimate(e, a.mesh, a.settings.normalModes);
+    };
+    Stopwatch meshing;
+    const fem::Mesh mesh = fem::readMesh(a.mesh.path, options);
+    spdlog::info("mesh: {} nodes, {} {} elements, {} DOFs ({:.1f} s)", mesh.numNodes(), mesh.volume.size(),
+                 fem::name(mesh.volume.type), 3 * mesh.numNodes(), meshing.seconds());
     spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s)", specs.size(),
                  a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "", a.settings.staticCorrection.size());
     modal::ReductionReport rep;

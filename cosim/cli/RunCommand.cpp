@@ -81,6 +81,7 @@ extern "C" void onRunSignal(int signal) { g_signal = signal; }
 
 void runCommand(const RunArgs& a) {
     const cosim::EngineCase c = caseOf(a);
+    createOutputFolder(c.output.directory);
     cosim::RunLog log;
     if (!a.quiet) log.info = [](const std::string& s) { fmt::print(stderr, "{}\n", s); };
     log.warn = [](const std::string& s) { spdlog::warn("{}", s); };

@@ -34,6 +34,7 @@ void runSweep(const SweepArgs& a) {
         }
         return;
     }
+    createOutputFolder(study.directory);
     const SweepReport r = runStudy(study, a.quiet);
     if (r.rank != 0) return;
     if (r.failed > 0) setExitCode(2);

@@ -1,6 +1,8 @@
 // flexehd: flexible-body elastohydrodynamic co-simulation of a piston in its liner.
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -45,7 +47,7 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-        std::cerr << "flexehd: error: " << flexehd::cli::commandLineError(e) << std::endl;
+        std::cerr << "flexehd: error: " << flexehd::cli::commandLineError(app, e, std::vector<std::string>(argv + 1, argv + argc)) << std::endl;
         return 1;
     } catch (const std::exception& e) {
         std::cerr << "flexehd: error: " << e.what() << std::endl;

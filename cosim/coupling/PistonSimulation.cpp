@@ -283,8 +283,15 @@ void PistonSimulation::requireBoundedMotion(const StepState& n, int cycle) const
         std::abs(n.x[1]) * skirtLength > 40.0 * case_.piston.clearance)
         throw std::runtime_error(fmt::format(
             "the secondary motion diverged at crank angle {:.3f} deg of cycle {}: lateral shift {:.3g} m, "
-            "tilt {:.3g} rad (clearance {:.3g} m). Is asperity contact (contact.composite_modulus) on?",
-            crankAngle720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance));
+            "tilt {:.3g} rad (clearance {:.3g} m). {}",
+            crankAngle720(n.crankDeg), cycle, n.x[0], n.x[1], case_.piston.clearance,
+            case_.contact.compositeModulus > 0.0
+                ? fmt::format("Asperity contact is on (contact.composite_modulus {:g} Pa) and did not hold the "
+                              "piston: check the clearance, the masses and the cylinder pressure of the case, or "
+                              "take a smaller time.max_step_deg",
+                              case_.contact.compositeModulus)
+                : std::string("Asperity contact is off (contact.composite_modulus 0): nothing stops the piston at "
+                              "the liner; give contact.composite_modulus (docs/case-file.md, contact)")));
 }
 
 void PistonSimulation::checkLoadMapping(const StepEvaluation& ev, double& worstDiff, double& largestForce) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -25,8 +26,9 @@ std::string RunProgress::stepLine(double crankDeg, double fraction, double elaps
                           std::max(0.0, estimate - inCycle));
     }
     return fmt::format("cycle {} (at most {})  crank {:6.1f} deg  e {:+7.2f} um  tilt {:+6.3f} mrad  "
-                       "iterations {:2d}  step {:.3f} deg  | {:.1f} s{}",
-                       cycle_, maxCycles_, crankDeg, lateral * 1e6, tilt * 1e3, iterations, stepDeg, elapsed, eta);
+                       "iterations {:2d}  step {} deg  | {:.1f} s{}",
+                       cycle_, maxCycles_, crankDeg, lateral * 1e6, tilt * 1e3, iterations,
+                       stepDeg >= 0.01 ? fmt::format("{:.3f}", stepDeg) : fmt::format("{:.2g}", stepDeg), elapsed, eta);
 }
 
 std::optional<int> RunProgress::cyclesLeftEstimate() const {
@@ -53,6 +55,53 @@ std::string RunProgress::cycleDoneLine(double elapsed, std::optional<double> per
     if (!more) return line;
     return line + fmt::format("; about {} more cycle{} (~{:.0f} s){}", *more, *more == 1 ? "" : "s",
                               *more * lastCycleSeconds_, cycle_ + *more >= maxCycles_ ? ", up to time.max_cycles" : "");
+}
+
+namespace {
+
+// "3.5 h", "12 days": the time left to a cycle's end.
+std::string duration(double s) {
+    if (s < 120.0) return fmt::format("{:.0f} s", s);
+    if (s < 7200.0) return fmt::format("{:.0f} min", s / 60.0);
+    if (s < 2.0 * 86400.0) return fmt::format("{:.1f} h", s / 3600.0);
+    if (s < 2.0 * 365.0 * 86400.0) return fmt::format("{:.0f} days", s / 86400.0);
+    return fmt::format("{:.3g} years", s / (365.0 * 86400.0));
+}
+
+}  // namespace
+
+ProgressPacer::ProgressPacer(int maxCycles, double startDeg, std::function<void(const std::string&)> print,
+                             double intervalSeconds)
+    : print_(std::move(print)), maxCycles_(maxCycles), startDeg_(startDeg), interval_(intervalSeconds) {}
+
+void ProgressPacer::recorded(const StepRecord& row) {
+    if (!print_) return;
+    if (const auto line = stepAccepted(row.cycle, row.crankDeg, row.stepDeg, clock_.seconds())) print_(*line);
+}
+
+void ProgressPacer::linePrinted(double elapsed) { lastLine_ = std::max(lastLine_, elapsed); }
+
+std::optional<std::string> ProgressPacer::stepAccepted(int cycle, double crankDeg, double stepDeg, double elapsed) {
+    if (cycle != cycle_) {  // the cycle started with the previous step's end
+        cycle_ = cycle;
+        stepsInCycle_ = 0;
+        cycleStart_ = lastStep_;
+    }
+    ++stepsInCycle_;
+    lastStep_ = elapsed;
+    if (elapsed - lastLine_ < interval_) return std::nullopt;
+    lastLine_ = elapsed;
+    double done = std::fmod(crankDeg - startDeg_ + 720.0, 720.0);  // degrees of the cycle behind
+    if (done < 1e-9 && stepsInCycle_ > 1) done = 720.0;
+    const double inCycle = elapsed - cycleStart_;
+    std::string eta;
+    if (done > 0.0 && inCycle > 0.0) {
+        const double left = (720.0 - done) * inCycle / done;
+        eta = fmt::format(", ~{} to the cycle's end at this pace", duration(left));
+    }
+    return fmt::format("cycle {} (at most {})  crank {:.6g} deg  {} steps this cycle ({:.3g} % of it)  step {:.3g} deg  "
+                       "| {:.1f} s{}",
+                       cycle_, maxCycles_, crankDeg, stepsInCycle_, 100.0 * done / 720.0, stepDeg, elapsed, eta);
 }
 
 }  // namespace flexehd::cosim

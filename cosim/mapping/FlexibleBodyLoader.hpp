@@ -21,9 +21,15 @@ struct CaseBodies {
 /// named surface (a surface group) and interfaces.
 CaseBodies loadCaseBodies(const EngineCase& c);
 
+/// Film nodes outside a surface's image beyond which facingSurface refuses the body (fraction of
+/// the grid's film nodes).
+inline constexpr double kMaxOutsideFraction = 0.25;
+
 /// The body (of the case's body spec; role "piston" or "liner", the key bodies.ROLE) seen from a
 /// film's grid. zMin, zMax: as FlexibleSurface (liner). Throws std::invalid_argument
-/// "CASE: bodies.ROLE.surface: …" when the surface cannot face the film.
+/// "CASE: bodies.ROLE.surface: …" when the surface cannot face the film, faces it from the other
+/// role's side (a liner's bore as the piston's surface, a skirt as the liner's), or misses more than
+/// kMaxOutsideFraction of the grid's film nodes (saying how many, how far, and what the case expects).
 std::unique_ptr<FlexibleSurface> facingSurface(const EngineCase& c, std::shared_ptr<const FlexibleBody> body,
                                                const BodySpec& spec, const std::string& role,
                                                FlexibleSurface::Side side, const lube::FilmGrid& grid,

@@ -324,6 +324,20 @@ std::string mm(double v) {
 
 }  // namespace
 
+CylinderSides cylinderSides(const fem::Mesh& mesh, const fem::BoundarySurface& surf) {
+    CylinderSides sides;
+    for (std::size_t k = 0; k < surf.triangles().size(); ++k) {
+        const fem::Index t = surf.triangles()[k];
+        const Eigen::Vector3d x0 = mesh.nodes.col(mesh.surface.nodes(0, t));
+        const Eigen::Vector3d x1 = mesh.nodes.col(mesh.surface.nodes(1, t));
+        const Eigen::Vector3d x2 = mesh.nodes.col(mesh.surface.nodes(2, t));
+        const Eigen::Vector3d c = (x0 + x1 + x2) / 3.0;
+        const double dot = surf.orientation()[k] * (x1 - x0).cross(x2 - x0).dot(Eigen::Vector3d(c(0), c(1), 0.0));
+        (dot > 0.0 ? sides.away : sides.towards) += 1;
+    }
+    return sides;
+}
+
 LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
                          const lube::FilmGrid& grid, const LoadMappingOptions& options)
     : surface_(surface) {
@@ -349,16 +363,8 @@ LoadMapping::LoadMapping(const fem::Mesh& mesh, const std::string& surface,
             std::to_string(options.radiusTolerance) + ")");
 
     // Which side of the cylinder the body lies on, from the outward normals of the triangles.
-    int inside = 0, outside = 0;
-    for (std::size_t k = 0; k < surf.triangles().size(); ++k) {
-        const fem::Index t = surf.triangles()[k];
-        const Eigen::Vector3d x0 = mesh.nodes.col(mesh.surface.nodes(0, t));
-        const Eigen::Vector3d x1 = mesh.nodes.col(mesh.surface.nodes(1, t));
-        const Eigen::Vector3d x2 = mesh.nodes.col(mesh.surface.nodes(2, t));
-        const Eigen::Vector3d c = (x0 + x1 + x2) / 3.0;
-        const double dot = surf.orientation()[k] * (x1 - x0).cross(x2 - x0).dot(Eigen::Vector3d(c(0), c(1), 0.0));
-        (dot > 0.0 ? inside : outside) += 1;
-    }
+    const CylinderSides sides = cylinderSides(mesh, surf);
+    const int inside = sides.away, outside = sides.towards;
     if (inside > 0 && outside > 0)
         throw std::invalid_argument("surface '" + surface + "' faces the axis on " + std::to_string(outside) +
                                     " triangles and away from it on " + std::to_string(inside) +

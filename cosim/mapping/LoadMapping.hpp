@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "fem/BoundarySurface.hpp"
 #include "fem/Mesh.hpp"
 #include "lube/FilmGrid.hpp"
 
@@ -38,6 +39,14 @@ struct LoadMappingOptions {
 };
 
 /// What the setup found; the geometric (faceting) error is reported, not corrected.
+/// How many triangles of a body's cylindrical surface face away from the axis (the body inside
+/// the cylinder: a skirt) and towards it (the body outside: a bore), from their outward normals.
+struct CylinderSides {
+    int away = 0;
+    int towards = 0;
+};
+CylinderSides cylinderSides(const fem::Mesh& mesh, const fem::BoundarySurface& surface);
+
 struct LoadMappingStats {
     double surfaceRadius = 0.0;   ///< mean radius of the surface nodes (m)
     double radiusSpread = 0.0;    ///< (max − min) / mean of the node radii

@@ -13,6 +13,7 @@
 #include <random>
 #include <set>
 #include <stdexcept>
+#include <system_error>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -277,6 +278,10 @@ Study readStudyFile(const std::string& path, const std::string& directoryOverrid
     fs::path base(r.text(top["base_case"], "base_case"));
     s.baseCase = (base.is_relative() ? dir / base : base).lexically_normal().string();
     if (!fs::is_regular_file(s.baseCase)) r.fail("base_case", top["base_case"], s.baseCase + " does not exist");
+    if (std::error_code ec; fs::equivalent(s.baseCase, path, ec))
+        r.fail("base_case", top["base_case"],
+               "base_case points at the study file itself: expected the case file (docs/case-file.md) the variants "
+               "start from");
     fs::path out = top["directory"] ? fs::path(r.text(top["directory"], "directory")) : fs::path(path).stem();
     if (!directoryOverride.empty()) out = fs::absolute(directoryOverride);
     s.directory = (out.is_relative() ? dir / out : out).lexically_normal().string();
@@ -292,6 +297,11 @@ Study readStudyFile(const std::string& path, const std::string& directoryOverrid
         }
     }
     expandDesign(r, top, s);
+    for (const auto& [key, value] : s.fixed)
+        if (std::find(s.parameters.begin(), s.parameters.end(), key) != s.parameters.end())
+            r.fail("set." + key, top["set"][key],
+                   key + " is given both in set and in parameters: a key is the same in every variant (set) or "
+                         "varies (parameters), not both");
 
     if (top["outputs"]) {
         if (!top["outputs"].IsSequence() || top["outputs"].size() == 0)

@@ -25,24 +25,9 @@ namespace {
 // hd.yaml on the coarse grid, 100 cycles at most and never periodic: it runs until the signal
 // stops it.
 std::string longCase(const fs::path& dir) {
-    const std::string source = std::string(FLEXEHD_SOURCE_DIR) + "/examples/engine86/";
-    std::ifstream in(source + "hd.yaml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    auto replace = [&](const std::string& from, const std::string& to) {
-        const auto at = s.find(from);
-        if (at == std::string::npos) throw std::logic_error("hd.yaml lacks: " + from);
-        s.replace(at, from.size(), to);
-    };
-    replace("cylinder_pressure: cylinder_pressure.csv", "cylinder_pressure: " + source + "cylinder_pressure.csv");
-    replace("axial_nodes: 48", "axial_nodes: 24");
-    replace("circumferential_nodes: 144", "circumferential_nodes: 72");
-    replace("max_cycles: 5", "max_cycles: 100");
-    replace("periodicity_tolerance: 1.0e-6", "periodicity_tolerance: 1.0e-15");  // never periodic
-    replace("directory: ../../out/engine86/hd", "directory: " + (dir / "out").string());
-    test::writeFile(dir / "case.yaml", s);
-    return (dir / "case.yaml").string();
+    return test::coarseHdCase(dir, dir / "out",
+                              {{"max_cycles: 5", "max_cycles: 100"},
+                               {"periodicity_tolerance: 1.0e-6", "periodicity_tolerance: 1.0e-15"}});  // never periodic
 }
 
 // The exit status of `flexehd run --quiet CASE` sent `signal` after `seconds` (coreutils timeout

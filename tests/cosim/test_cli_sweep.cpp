@@ -417,8 +417,13 @@ long childOf(long parent) {
 // parent is gone and ends too.
 TEST(CliSweep, AVariantEndsWhenTheSweepIsKilled) {
     TempDir t("orphan");
-    const std::string study = writeStudy(t.path, "parameters:\n  time.max_cycles: [200]\n"
-                                                 "  time.periodicity_tolerance: [1.0e-30]\n");
+    std::string study = writeStudy(t.path, "parameters:\n  time.periodicity_tolerance: [1.0e-30]\n");
+    {  // 200 cycles instead of the set's 1 (a key is in set or in parameters, not both)
+        std::ifstream in(study);
+        std::string text((std::istreambuf_iterator<char>(in)), {});
+        text.replace(text.find("time.max_cycles: 1\n"), 19, "time.max_cycles: 200\n");
+        std::ofstream(study) << text;
+    }
     FILE* p = popen((std::string(FLEXEHD_BINARY) + " sweep " + study + " --quiet >/dev/null 2>&1 & echo $!").c_str(), "r");
     ASSERT_NE(p, nullptr);
     long sweep = 0;
