@@ -95,29 +95,6 @@ std::size_t choice(const YamlSection& s, const std::string& key, const std::vect
 
 // ---- files ----------------------------------------------------------------------------------
 
-std::string readWholeFile(const fs::path& path, std::string& error) {
-    std::error_code ec;
-    if (!fs::exists(path, ec)) {
-        error = "no such file";
-        return {};
-    }
-    if (fs::is_directory(path, ec)) {
-        error = "is a directory, not a file";
-        return {};
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = "cannot be opened for reading";
-        return {};
-    }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) error = "read error";
-    std::string text = ss.str();
-    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark (spreadsheet CSV)
-    return text;
-}
-
 /// HDF5 files carry an 8-byte signature at offset 0, 512, 1024, 2048, … (after a user block).
 bool looksLikeHdf5(const fs::path& path) {
     static const char kSignature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};

@@ -40,8 +40,7 @@ std::string text(const YamlSection& s, const std::string& key, const std::string
 /// One of `options` (the YAML spelling), returned as its index.
 std::size_t choice(const YamlSection& s, const std::string& key, const std::vector<std::string>& options,
                    std::size_t def);
-/// The file's contents, or "" with `error` saying why it cannot be read.
-std::string readWholeFile(const std::filesystem::path& path, std::string& error);
+using cosim::readWholeFile;  // the file's contents, or "" with `error` saying why (io/TextTable.hpp)
 /// HDF5's signature at offset 0, 512, 1024, … (after a user block).
 bool looksLikeHdf5(const std::filesystem::path& path);
 

@@ -14,6 +14,10 @@ YamlSection readCoupling(const YamlSection& top, CouplingSpec& k) {
     if (!(k.tolerance < 1.0))
         coupling.fail("tolerance",
                       fmt::format("expected a relative tolerance below 1, got {:g}", k.tolerance));
+    if (k.tolerance < 1e-8)
+        coupling.fail("tolerance", fmt::format("{:g} is below the film solver's own tolerance (1e-8 relative), which "
+                                               "bounds what the coupling can reach: give 1e-8 or more (default 1e-3)",
+                                               k.tolerance));
     k.maxIterations = integer(coupling, "max_iterations", 1, 10000, k.maxIterations, "iterations");
     k.keepJacobian = boolean(coupling, "keep_jacobian", k.keepJacobian);
     k.acceleration = choice(coupling, "acceleration", {"iqn-ils", "aitken"}, 0) == 0

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "cosim/io/YamlDocument.hpp"
 #include "cosim/io/YamlKeys.hpp"
 
 namespace flexehd::cosim::casefile {
@@ -179,15 +180,11 @@ RingList ringList(const YamlSection& top) {
     const YAML::Node node = top.get("rings");
     if (!node.IsScalar()) return {top.source(), node, "rings"};
     const std::filesystem::path file = top.source().resolve(node.Scalar());
-    std::string error;
-    const std::string content = readWholeFile(file, error);
-    if (!error.empty()) top.fail("rings", fmt::format("cannot read the ring-pack file {}: {}", file.string(), error));
     YAML::Node root;
     try {
-        root = YAML::Load(content);
-    } catch (const YAML::Exception& e) {
-        top.fail("rings", fmt::format("{}:{}:{}: YAML syntax error: {}", file.string(), e.mark.line + 1,
-                                      e.mark.column + 1, e.msg));
+        root = loadYamlDocument(file.string(), "the ring-pack file");
+    } catch (const std::runtime_error& e) {
+        top.fail("rings", e.what());
     }
     RingList r{{file.string(), file.parent_path()}, YAML::Node(), "rings"};
     const YamlSection fileTop(r.source, root, "", {"rings"});

@@ -4,6 +4,11 @@
 #include <fmt/format.h>
 
 namespace flexehd::cosim::casefile {
+namespace {
+
+constexpr double kFinestMotionTolerance = 1e-12;  // m of lateral shift, rad of tilt
+
+}  // namespace
 
 void readTime(const YamlSection& top, TimeSpec& t) {
     const YamlSection time(top.source(), top.get("time"), "time",
@@ -24,6 +29,18 @@ void readTime(const YamlSection& top, TimeSpec& t) {
         number(time, "lateral_tolerance", {"length", "m"}, Sign::Positive, t.lateralTolerance);
     if (time.has("tilt_tolerance_deg"))
         t.tiltTolerance = number(time, "tilt_tolerance_deg", {"angle", "deg"}, Sign::Positive, 0.0) * kDeg;
+    // The film forces are solved to a relative residual of 1e-8 (SolverControl), so the motion is
+    // no more accurate than about 1e-8 of the clearance: a tighter step tolerance is never met.
+    if (t.lateralTolerance < kFinestMotionTolerance)
+        time.fail("lateral_tolerance",
+                  fmt::format("{:g} m is below what the film solution resolves (about {:g} m, the film forces being "
+                              "solved to 1e-8 relative): no step meets it; give {:g} m or more (default 0.2e-6)",
+                              t.lateralTolerance, kFinestMotionTolerance, kFinestMotionTolerance));
+    if (t.tiltTolerance < kFinestMotionTolerance)
+        time.fail("tilt_tolerance_deg",
+                  fmt::format("{:g} deg is below what the film solution resolves (about {:g} deg): no step meets "
+                              "it; give {:g} deg or more (default 2.865e-4)",
+                              t.tiltTolerance / kDeg, kFinestMotionTolerance / kDeg, kFinestMotionTolerance / kDeg));
     t.maxCycles = integer(time, "max_cycles", 1, 1000, t.maxCycles, "cycles");
     t.periodicityTolerance =
         number(time, "periodicity_tolerance", {"length", "m"}, Sign::Positive, t.periodicityTolerance);

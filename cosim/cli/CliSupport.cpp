@@ -114,11 +114,14 @@ std::string commandLineError(const CLI::App& app, const CLI::ParseError& e, cons
     return std::string(e.what()) + help;
 }
 
-void createOutputFolder(const std::string& dir) {
+namespace {
+
+// Makes the folder `target` (absolute) and its parents: "" when it exists or was made, else why
+// not in words.
+std::string folderProblem(const std::filesystem::path& target) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    const fs::path target = fs::absolute(fs::path(dir), ec).lexically_normal();
-    if (fs::is_directory(target, ec)) return;
+    if (fs::is_directory(target, ec)) return {};
     // The nearest part of the path that exists says why it cannot be made.
     fs::path existing = target;
     while (!existing.empty() && existing != existing.root_path() && !fs::exists(existing, ec))
@@ -134,14 +137,39 @@ void createOutputFolder(const std::string& dir) {
         reason = fmt::format("{} is a kernel file system that holds no folders of files", existing.string());
     } else {
         fs::create_directories(target, ec);
-        if (!ec) return;
+        if (!ec) return {};
         if (ec == std::errc::read_only_file_system) reason = "read-only file system";
         else if (ec == std::errc::permission_denied || ec == std::errc::operation_not_permitted)
             reason = fmt::format("permission denied (in {})", existing.string());
         else if (ec == std::errc::no_space_on_device) reason = "no space left on the device";
         else reason = ec.message();
     }
-    throw std::runtime_error(fmt::format("cannot create the output folder {}: {}", target.string(), reason));
+    return reason;
+}
+
+}  // namespace
+
+void createOutputFolder(const std::string& dir) {
+    std::error_code ec;
+    const std::filesystem::path target = std::filesystem::absolute(std::filesystem::path(dir), ec).lexically_normal();
+    if (const std::string reason = folderProblem(target); !reason.empty())
+        throw std::runtime_error(fmt::format("cannot create the output folder {}: {}", target.string(), reason));
+}
+
+void prepareOutputFile(const std::string& file) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path target = fs::absolute(fs::path(file), ec).lexically_normal();
+    std::string reason;
+    const fs::path parent = target.parent_path();
+    if (target.filename().empty() || fs::is_directory(target, ec))
+        reason = "it is a folder, not a file";
+    else if (fs::exists(parent, ec) && !fs::is_directory(parent, ec))
+        reason = fmt::format("a parent is a file ({})", parent.string());
+    else
+        reason = folderProblem(parent);
+    if (!reason.empty())
+        throw std::runtime_error(fmt::format("cannot write the output file {}: {}", target.string(), reason));
 }
 
 void addMeshOptions(CLI::App* cmd, MeshArguments& mesh) {

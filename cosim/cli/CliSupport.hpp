@@ -34,6 +34,11 @@ std::string commandLineError(const CLI::App& app, const CLI::ParseError& e, cons
 /// system, a kernel file system).
 void createOutputFolder(const std::string& dir);
 
+/// Before the work of a command that writes the single file `file`: creates its folder (and the
+/// folder's parents) or throws "cannot write the output file FILE: REASON" with the reason in
+/// words (as createOutputFolder's; also when FILE is a folder).
+void prepareOutputFile(const std::string& file);
+
 /// The mesh options every mesh-reading subcommand shares: --mesh, --order, --size.
 struct MeshArguments {
     std::string path;

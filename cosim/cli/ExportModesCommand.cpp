@@ -25,6 +25,7 @@ void runExportModes(const ExportModesArgs& a) {
     const modal::ReducedBody body = modal::readReducedBody(a.file);
     const double readSeconds = total.seconds();
 
+    createOutputFolder(a.out);
     Stopwatch w;
     // K_r is diag(ω²) for an orthonormalised basis, so its diagonal is the eigenvalue.
     const Eigen::VectorXd eigenvalues = body.stiffnessMatrix.diagonal();

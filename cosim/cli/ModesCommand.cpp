@@ -51,6 +51,7 @@ void runModes(const ModesArgs& a) {
             "{} values); {} are available: ask for fewer modes",
             a.count, a.count, dofs, cosim::formatBytes(2.0 * basisBytes), fem::lanczosBasisSize(dofs, a.count), dofs,
             cosim::formatBytes(double(avail))));
+    if (!a.out.empty()) createOutputFolder(a.out);  // before the solve, with the reason in words
     spdlog::info("assembling and solving for {} modes ({} DOFs, Lanczos basis {} vectors, {})", a.count, dofs,
                  fem::lanczosBasisSize(dofs, a.count), cosim::formatBytes(basisBytes));
     opt.progress = [](int solves, double seconds) {

@@ -58,6 +58,7 @@ void runReduce(const ReduceArgs& a) {
     std::vector<modal::InterfaceSpec> specs;
     for (const auto& s : a.interfaces) specs.push_back(modal::parseInterface(s));
     for (const auto& b : a.dampingBands) modal::parseDampingBand(b);  // fail before the long work
+    prepareOutputFile(a.out);
     spdlog::info("reading mesh {}", a.mesh.path);
     fem::MeshOptions options = a.mesh.options;
     options.beforeMeshing = [&](const fem::MeshEstimate& e) {

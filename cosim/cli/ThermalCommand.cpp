@@ -31,6 +31,7 @@ void runThermal(const ThermalArgs& a) {
     Stopwatch total;
     const cosim::ThermalCase c = cosim::readThermalCaseFile(a.casePath);
     const std::string dir = !a.out.empty() ? a.out : !c.outputDirectory.empty() ? c.outputDirectory : "thermal";
+    createOutputFolder(dir);  // before the solves, with the reason in words
     const cosim::ThermalResult r = cosim::runThermalAnalysis(c, [](const std::string& s) { spdlog::info("{}", s); });
 
     const nlohmann::json doc = cosim::writeThermalResults(dir, a.casePath, c, r, total);

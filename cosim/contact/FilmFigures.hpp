@@ -31,6 +31,12 @@ struct FilmFigures {
     double elasticFilmChange = 0.0;
     /// the share of the film's area in full film (φ = 1); the mass-conserving film only
     double wettedShare = 0.0;
+    /// Not history columns: the grid nodes across the region of the thinnest film
+    /// (lube::minimumFilmSpan, band max(h_min, σ)), along the grid row and column through it;
+    /// 0 for a contact that does not say (docs/lube.md §8)
+    int minFilmNodesCircumferential = 0;
+    int minFilmNodesAxial = 0;
+    bool minFilmAtAxialEdge = false;  ///< the thinnest film on the film's axial edge (a skirt edge)
 };
 
 /// The film's fields at a written crank angle (a part of Snapshot), per node of its grid.

@@ -10,6 +10,7 @@
 #include "cosim/contact/ReynoldsFilm.hpp"
 #include "cosim/mapping/FlexibleBodyLoader.hpp"
 #include "fem/Stopwatch.hpp"
+#include "lube/MinimumFilmRegion.hpp"
 #include "lube/ShearStressFactor.hpp"
 
 #include <fmt/format.h>
@@ -320,6 +321,13 @@ bool SkirtContact::filmFigures(const ContactIterate& it, FilmFigures& r) const {
     r.minFilm = it.minGap;  // unfloored: < 0 where the surfaces overlap
     r.maxPressure = it.p.size() ? it.p.maxCoeff() : 0.0;
     const lube::FilmGrid& g = film_.grid();
+    // The band of the thinnest film's region: h < 2 h_min in a full film, the roughness where the
+    // asperities carry the load (their pressure changes over about σ).
+    const double band = std::max({it.minGap, case_.contact.sigma, 1e-3 * case_.piston.clearance});
+    const lube::MinimumFilmSpan span = lube::minimumFilmSpan(g, it.hTotal, band);
+    r.minFilmNodesCircumferential = span.circumferential;
+    r.minFilmNodesAxial = span.axial;
+    r.minFilmAtAxialEdge = span.atAxialEdge;
     if (mp_ + ml_ > 0)
         for (int k = 0; k < g.size(); ++k)
             if (g.kind(k) != lube::NodeKind::Void)

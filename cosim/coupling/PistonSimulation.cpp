@@ -17,6 +17,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
@@ -267,6 +268,11 @@ std::string PistonSimulation::stepSizeExhausted(const StepState& s, int cycle, b
               "the rigid rate in coupling.method: newton (docs/coupling.md section 1). "
               "coupling.method: newton with coupling.elastic_squeeze: true (the defaults) runs the "
               "whole map."
+        : converged
+            ? fmt::format("Every iteration converged, but the local error stays above the step error tolerance "
+                          "(time.lateral_tolerance {:g} m, time.tilt_tolerance_deg {:g}) at the smallest step: "
+                          "loosen them, or let the step go smaller (time.min_step_deg)",
+                          case_.time.lateralTolerance, case_.time.tiltTolerance * 180.0 / std::numbers::pi)
             : "Try a smaller time.max_step_deg, a finer film grid, more coupling.max_iterations, or "
               "check the loads and clearances of the case.";
     return fmt::format(

@@ -1,8 +1,34 @@
 #include "cosim/io/TextTable.hpp"
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 namespace flexehd::cosim {
+
+std::string readWholeFile(const std::filesystem::path& path, std::string& error) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+        error = "no such file";
+        return {};
+    }
+    if (fs::is_directory(path, ec)) {
+        error = "is a directory, not a file";
+        return {};
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = "cannot be opened for reading";
+        return {};
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) error = "read error";
+    std::string text = ss.str();
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark (spreadsheet CSV)
+    return text;
+}
 
 namespace {
 constexpr std::string_view kBlanks = " \t\r\n";

@@ -3,6 +3,7 @@
 // trimmed, a line split into fields, a whole field read as a number, and the data lines of a
 // table with '#' comments and blank lines skipped.
 #include <charconv>
+#include <filesystem>
 #include <istream>
 #include <string>
 #include <string_view>
@@ -10,6 +11,10 @@
 #include <vector>
 
 namespace flexehd::cosim {
+
+/// The file's contents (a UTF-8 byte-order mark skipped), or "" with `error` saying in words why
+/// it cannot be read ("no such file", "is a directory, not a file", ...).
+std::string readWholeFile(const std::filesystem::path& path, std::string& error);
 
 /// `s` without the blanks (space, tab, CR, LF) at either end.
 std::string_view trim(std::string_view s);

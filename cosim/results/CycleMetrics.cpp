@@ -38,6 +38,16 @@ CycleMetrics cycleMetrics(const std::vector<StepRecord>& c, const PistonDynamics
             m.minFilmDeg = r.crankDeg;
         }
         m.maxPressure = std::max(m.maxPressure, r.maxPressure);
+        if (r.minFilmNodesCircumferential > 0 &&
+            (m.minFilmNodesCircumferential == 0 || r.minFilmNodesCircumferential < m.minFilmNodesCircumferential)) {
+            m.minFilmNodesCircumferential = r.minFilmNodesCircumferential;
+            m.minFilmNodesCircumferentialDeg = r.crankDeg;
+        }
+        if (r.minFilmNodesAxial > 0 && !r.minFilmAtAxialEdge &&
+            (m.minFilmNodesAxial == 0 || r.minFilmNodesAxial < m.minFilmNodesAxial)) {
+            m.minFilmNodesAxial = r.minFilmNodesAxial;
+            m.minFilmNodesAxialDeg = r.crankDeg;
+        }
         m.contactForceMax = std::max(m.contactForceMax, std::abs(r.contactForce));
         m.hardContactForceMax = std::max(m.hardContactForceMax, std::abs(r.hardContactForce));
         m.sideForceMax = std::max(m.sideForceMax, std::abs(r.sideForce));

@@ -27,6 +27,12 @@ struct CycleMetrics {
     double contactForceMax = 0.0;     ///< N, largest |lateral contact force| (asperities + hard contact)
     double hardContactForceMax = 0.0; ///< N, largest |lateral hard-contact force|
     double sideForceMax = 0.0;        ///< N, largest |rod side force|
+    /// The fewest grid nodes across the thinnest film's region over the cycle, along the grid row
+    /// and along the column (FilmFigures::minFilmNodes*; 0: the contact does not say), the crank
+    /// angles (°) where they occur; the axial count over the steps whose thinnest film lies
+    /// inside the film, not on its axial edge (an edge in contact cuts the region)
+    int minFilmNodesCircumferential = 0, minFilmNodesAxial = 0;
+    double minFilmNodesCircumferentialDeg = 0.0, minFilmNodesAxialDeg = 0.0;
     double meanIterations = 0.0;      ///< film solves per step
     int maxIterations = 0;
 };

@@ -14,6 +14,7 @@
 #include "cosim/coupling/RunProgress.hpp"
 #include "cosim/results/CycleSeries.hpp"
 #include "cosim/results/FieldSeriesWriter.hpp"
+#include "cosim/results/CycleMetrics.hpp"
 #include "cosim/results/HistoryWriter.hpp"
 #include "cosim/results/WearMapWriter.hpp"
 #include "cosim/run/OutputEstimate.hpp"
@@ -128,6 +129,23 @@ void writeSummary(const std::string& dir, const nlohmann::json& doc) {
     fem::writeTextAtomically(dir + "/summary.json", jsonText(doc, 2) + "\n");
 }
 
+// The thinnest film's region spanned by fewer than 4 grid nodes (a journal bearing's load is then
+// 5-35 % low, docs/lube.md section 8): the minimum film and the contact force there depend on the
+// grid. A warning naming the grid key to raise.
+void warnUnresolvedFilm(const CycleMetrics& m, const RunLog& log) {
+    constexpr int kFewestNodes = 4;
+    const auto warn = [&](int nodes, double deg, const char* along, const char* key) {
+        if (nodes <= 0 || nodes >= kFewestNodes) return;
+        say(log.warn, fmt::format("the thinnest film's region (h within max(h_min, sigma) of h_min) is spanned by only "
+                                  "{} grid node(s) {} at {:.1f} deg: the minimum film and the contact force there "
+                                  "depend on the grid (summary.json min_film_region_nodes; docs/lube.md section 8); "
+                                  "raise grid.{}",
+                                  nodes, along, deg, key));
+    };
+    warn(m.minFilmNodesCircumferential, m.minFilmNodesCircumferentialDeg, "around the bore", "circumferential_nodes");
+    warn(m.minFilmNodesAxial, m.minFilmNodesAxialDeg, "along the skirt", "axial_nodes");
+}
+
 // The run's files as an observer of it: history.csv row by row, the VTK series snapshot by
 // snapshot, each cycle's series committed at its end; the seconds they take inside the run.
 class RunFiles final : public RunObserver {
@@ -239,6 +257,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
         throw std::runtime_error(message.empty() ? std::string(e.what())
                                                  : message + "; and the summary: " + e.what());
     }
+    if (cycle.size() >= 2) warnUnresolvedFilm(cycleMetrics(cycle, sim.dynamics(), sweptVolume(c.engine)), log);
     if (signal) throw RunInterrupted(signal, message + " (partial results in " + dir + ", summary.json status: interrupted)");
     if (status != "ok") throw std::runtime_error(message + " (partial results in " + dir + ")");
     result.cycles = sim.statistics().cycles;

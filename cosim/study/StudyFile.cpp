@@ -2,6 +2,7 @@
 #include "cosim/contact/OilControlRingBand.hpp"
 #include "cosim/results/RunSummary.hpp"
 #include "cosim/ringpack/RingContact.hpp"
+#include "cosim/io/YamlDocument.hpp"
 #include "cosim/io/YamlKeys.hpp"
 #include "cosim/io/YamlSection.hpp"
 
@@ -260,15 +261,7 @@ bool isReduceParameter(const std::string& path) { return path.rfind("reduce.", 0
 
 Study readStudyFile(const std::string& path, const std::string& directoryOverride) {
     const Reader r(path);
-    YAML::Node top;
-    try {
-        top = YAML::LoadFile(path);
-    } catch (const YAML::BadFile&) {
-        throw std::runtime_error(path + ": cannot open the study file");
-    } catch (const YAML::Exception& e) {
-        throw std::runtime_error(fmt::format("{}: line {}, column {}: {}", path, e.mark.line + 1, e.mark.column + 1,
-                                             e.msg));
-    }
+    YAML::Node top = loadYamlDocument(path, "the study file");
     r.checkKeys(top, "", kTopKeys);
     const fs::path dir = fs::absolute(path).parent_path();
     Study s;

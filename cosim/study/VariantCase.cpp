@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "cosim/casefile/CaseFile.hpp"
+#include "cosim/io/YamlDocument.hpp"
 
 namespace flexehd::cosim {
 namespace {
@@ -72,9 +73,9 @@ void apply(YAML::Node root, const std::string& key, const std::string& valueText
 YAML::Node loadBase(const Study& study) {
     YAML::Node root;
     try {
-        root = YAML::LoadFile(study.baseCase);
-    } catch (const YAML::Exception& e) {
-        throw std::runtime_error(fmt::format("{}: base case {}: {}", study.path, study.baseCase, e.what()));
+        root = loadYamlDocument(study.baseCase, "the case file");
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(fmt::format("{}: base_case: {}", study.path, e.what()));
     }
     if (!root.IsMap()) throw std::runtime_error(study.path + ": base case " + study.baseCase + " is not a mapping");
     const fs::path dir = fs::path(study.baseCase).parent_path();

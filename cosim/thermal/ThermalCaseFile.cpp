@@ -1,4 +1,5 @@
 #include "cosim/thermal/ThermalCaseFile.hpp"
+#include "cosim/io/YamlDocument.hpp"
 #include "cosim/io/YamlKeys.hpp"
 #include "cosim/io/YamlSection.hpp"
 
@@ -240,12 +241,7 @@ LinerThermalCase liner(const YamlSource& ctx, const YAML::Node& node) {
 ThermalCase readThermalCaseFile(const std::string& path) {
     YamlSource ctx{path, fs::absolute(fs::path(path)).parent_path()};
     if (!fs::is_regular_file(path)) throw std::runtime_error(path + ": thermal case file not found");
-    YAML::Node root;
-    try {
-        root = YAML::LoadFile(path);
-    } catch (const YAML::Exception& e) {
-        throw std::runtime_error(fmt::format("{}: line {}: not valid YAML: {}", path, e.mark.line + 1, e.msg));
-    }
+    const YAML::Node root = loadYamlDocument(path, "the thermal case file");
     const YamlSection top(ctx, root, "", {"name", "reference_temperature", "grid", "output", "piston", "liner"});
     ThermalCase c;
     c.file = path;

@@ -57,6 +57,10 @@ const File kCase{"case.yaml", minimalCase()};
 const std::string kPngBytes = std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\x01\0\0\0\x01\0\x08\x06\0\0\0", 29) +
                               "\x5c\x72\xa8\x66\n\0\0\0\x04sBIT" + std::string(40, '\x01');
 
+const std::string kSource = FLEXEHD_SOURCE_DIR;
+const std::string kBeamMesh = " --mesh " + kSource + "/tests/fem/data/beam.geo --E 2.1e11 --nu 0.3 --rho 7850";
+const std::string kStudy = "base_case: case.yaml\nparameters:\n  engine.speed_rpm: [1000, 2000]\n";
+
 const std::vector<Probe> kProbes = {
     // a. an option given twice
     {"OptionGivenTwice", {kCase, kPressure}, "run {dir}/case.yaml --out {dir}/a --out {dir}/b", 1,
@@ -126,7 +130,49 @@ const std::vector<Probe> kProbes = {
     {"ClearanceBelowTheRoughnessSaysWhy",
      {{"case.yaml", caseWith("  skirt_bottom: -0.025\n", "  skirt_bottom: -0.025\n  clearance: 1.0e-9\n")},
       kPressure},
-     "run {dir}/case.yaml", 1, "is below 1 um, less than the surfaces' roughness", "composite_modulus"},
+     "run {dir}/case.yaml", 1, "is below 1 um, less than the surfaces' roughness", "composite_modulus"},    // the study file's YAML, read as the case file's is
+    {"StudyFileWithCrOnlyLineEnds",
+     {kCase, kPressure, {"study.yaml", caseWithLineEnds(kStudy + "samplez: 3\n", "\r")}},
+     "sweep --dry-run {dir}/study.yaml", 1, "samplez (line 4): unknown key", "YAML syntax error"},
+    {"StudyFileWithNulByte",
+     {kCase, kPressure, {"study.yaml", "base_case: case.yaml\nparameters:\n  engine.sp" + std::string(1, '\0') +
+                                           "eed_rpm: [1000, 2000]\n"}},
+     "sweep --dry-run {dir}/study.yaml", 1, "the study file contains a NUL byte at line 3 (a binary file?)",
+     "escape character"},
+    {"StudyFileWithTwoDocuments", {kCase, kPressure, {"study.yaml", kStudy + "---\nname: second\n"}},
+     "sweep --dry-run {dir}/study.yaml", 1, "the study file holds 2 YAML documents; flexehd reads one", "v0001"},
+    // output paths under a file, refused before the work with the reason in words
+    {"ThermalOutputFolderUnderAFile", {{"afile", "x"}},
+     "thermal " + kSource + "/examples/engine86/thermal.yaml --out {dir}/afile/x", 1,
+     "cannot create the output folder", "filesystem error"},
+    {"ThermalOutputFolderUnderAFileSaysWhy", {{"afile", "x"}},
+     "thermal " + kSource + "/examples/engine86/thermal.yaml --out {dir}/afile/x", 1, "a parent is a file",
+     "thermoelastic solve"},
+    {"ReduceOutputFileUnderAFile", {{"afile", "x"}},
+     "reduce" + kBeamMesh + " --interface clamped:rbe2 --modes 2 --out {dir}/afile/x.h5", 1,
+     "cannot write the output file", "Not a directory"},
+    {"ReduceOutputFileUnderAFileSaysWhy", {{"afile", "x"}},
+     "reduce" + kBeamMesh + " --interface clamped:rbe2 --modes 2 --out {dir}/afile/x.h5", 1, "a parent is a file",
+     "reading mesh"},
+    {"ReduceOutputFileIsAFolder", {}, "reduce" + kBeamMesh + " --interface clamped:rbe2 --modes 2 --out {dir}", 1,
+     "it is a folder, not a file", "Is a directory"},
+    {"ModesOutputFolderUnderAFile", {{"afile", "x"}}, "modes" + kBeamMesh + " --count 2 --out {dir}/afile/m", 1,
+     "cannot create the output folder", "filesystem error"},
+    // inputs refused today, kept refused
+    {"CaseNameInLatin1", {{"case.yaml", minimalCase() + "name: M\xfcller\n"}, kPressure}, "run {dir}/case.yaml", 1,
+     "name (line 14): expected UTF-8 text", "M\xfc"},
+    {"BearingZeroLength", {}, "bearing --eccentricity 0.5 --length 0", 1, "--length must be positive", "nan"},
+    {"StudyRangeOfABillionValues",
+     {kCase, kPressure,
+      {"study.yaml", "base_case: case.yaml\nparameters:\n  engine.speed_rpm: {start: 1000, stop: 7000, count: "
+                     "1000000000}\n"}},
+     "sweep --dry-run {dir}/study.yaml", 1, "a study runs at most 1000000 variants", "v0001"},
+    {"MaxStepOfAMicroDegree",
+     {{"case.yaml", minimalCase() + "time:\n  max_step_deg: 1.0e-6\n  min_step_deg: 1.0e-6\n"}, kPressure},
+     "run {dir}/case.yaml", 1, "time.max_step_deg", "cycle 1"},
+    {"ReduceMeshBeyondTheMemory", {},
+     "reduce --mesh " + kSource + "/meshes/piston.geo --size 1e-6 --E 7.5e10 --nu 0.33 --rho 2700 --interface "
+     "pin_bore:rbe2@0,0,0 --modes 4 --out {dir}/x.h5", 1, "would make about", "bad_alloc"},
 };
 
 // gtest prints a failing parameter by this instead of its bytes.

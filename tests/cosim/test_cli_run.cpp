@@ -278,7 +278,12 @@ TEST(CliRun, GlobalQuietSilencesTheProgress) {
     for (const std::string& q : {"-q run " + file, "run " + file + " --quiet"}) {
         const auto quiet = runFlexehd(q + " --cycles 1");
         ASSERT_EQ(quiet.status, 0) << quiet.err;
-        EXPECT_EQ(quiet.err, "") << q;
+        // Warnings stay (this coarse grid's: the thinnest film under-resolved); progress goes.
+        std::istringstream lines(quiet.err);
+        std::string progress;
+        for (std::string line; std::getline(lines, line);)
+            if (line.find("the thinnest film's region") == std::string::npos) progress += line + "\n";
+        EXPECT_EQ(progress, "") << q;
         EXPECT_EQ(quiet.out, "") << q;
     }
     fs::remove_all(dir);
