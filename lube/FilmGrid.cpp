@@ -46,6 +46,10 @@ FilmGrid::FilmGrid(double radius, std::vector<double> axial, int nTheta, bool pe
     }
     refreshKinds();
     resetColumnGeometry();
+    for (int j = 0; j < nTheta_; ++j) {
+        cosTheta_.push_back(std::cos(theta(j)));
+        sinTheta_.push_back(std::sin(theta(j)));
+    }
 }
 
 void FilmGrid::resetColumnGeometry() {

@@ -53,6 +53,9 @@ public:
     double z(int i) const { return z_[static_cast<std::size_t>(i)]; }
     const std::vector<double>& axial() const { return z_; }
     double theta(int j) const { return theta0_ + j * dTheta_; }
+    /// cos θ_j and sin θ_j, computed once with the grid (the film integrals' frame per node).
+    double cosTheta(int j) const { return cosTheta_[static_cast<std::size_t>(j)]; }
+    double sinTheta(int j) const { return sinTheta_[static_cast<std::size_t>(j)]; }
     double dTheta() const { return dTheta_; }
     /// Length of the bearing along z and its angular extent.
     double length() const { return z_.back() - z_.front(); }
@@ -143,6 +146,7 @@ private:
     std::vector<double> fixedPressure_;
     // Column geometry (rad), per column j: control-volume width, covered width, face j | j + 1.
     std::vector<double> cvWidth_, coveredWidth_, coveredBelow_, faceAngle_;
+    std::vector<double> cosTheta_, sinTheta_;  // per column j, of theta(j)
     std::vector<std::pair<double, double>> arcs_;
 };
 

@@ -20,7 +20,7 @@ struct NodeFrame {
 };
 
 inline NodeFrame nodeFrame(const FilmGrid& g, int i, int j) {
-    const double th = g.theta(j), c = std::cos(th), s = std::sin(th), R = g.radius();
+    const double c = g.cosTheta(j), s = g.sinTheta(j), R = g.radius();
     return {g.area(g.index(i, j)), g.surfaceArea(g.index(i, j)), Eigen::Vector3d(c, s, 0.0), Eigen::Vector3d(-s, c, 0.0),
             Eigen::Vector3d(0.0, 0.0, 1.0), Eigen::Vector3d(R * c, R * s, g.z(i))};
 }
