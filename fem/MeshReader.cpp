@@ -57,6 +57,18 @@ std::string gmshTypeName(int type) {
     return name;
 }
 
+// OpenCASCADE's volume (dim 3) or area (dim 2) of an entity; 0 where the entity is not
+// OpenCASCADE's (the built-in kernel) or the query fails.
+double occMeasure(int dim, int tag) {
+    double m = 0.0;
+    try {
+        gmsh::model::occ::getMass(dim, tag, m);
+    } catch (...) {
+        m = 0.0;
+    }
+    return m;
+}
+
 // Volume and boundary area of the current model's 3-D entities: OpenCASCADE's exact values, or
 // for entities of the built-in kernel those of their bounding boxes (an upper bound).
 void geometryMeasures(double& volume, double& area) {
@@ -64,13 +76,7 @@ void geometryMeasures(double& volume, double& area) {
     gmsh::vectorpair vols;
     gmsh::model::getEntities(vols, 3);
     for (const auto& [dim, tag] : vols) {
-        double v = 0.0;
-        try {
-            gmsh::model::occ::getMass(dim, tag, v);
-        } catch (...) {
-            v = 0.0;
-        }
-        if (v > 0.0) {
+        if (const double v = occMeasure(dim, tag); v > 0.0) {
             volume += v;
             continue;
         }
@@ -81,13 +87,7 @@ void geometryMeasures(double& volume, double& area) {
     gmsh::vectorpair faces;
     gmsh::model::getBoundary(vols, faces, false, false, false);
     for (const auto& [dim, tag] : faces) {
-        double a = 0.0;
-        try {
-            gmsh::model::occ::getMass(2, std::abs(tag), a);
-        } catch (...) {
-            a = 0.0;
-        }
-        if (a > 0.0) {
+        if (const double a = occMeasure(2, std::abs(tag)); a > 0.0) {
             area += a;
             continue;
         }

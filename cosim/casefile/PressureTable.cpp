@@ -1,5 +1,7 @@
 #include "cosim/casefile/PressureTable.hpp"
+#include "cosim/io/JsonText.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -42,20 +44,23 @@ void requireText(const std::string& path, const std::string& content) {
     }
 }
 
-// The line for a message: bytes outside printable ASCII and valid UTF-8 as \xNN.
+// The line for a message: control bytes (but tab) and bytes that are not valid UTF-8
+// (invalidUtf8At) as \xNN.
 std::string printable(std::string_view line) {
-    std::string out;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const auto b = static_cast<unsigned char>(line[i]);
-        std::size_t n = b < 0x80 ? 1 : (b >> 5) == 0x6 ? 2 : (b >> 4) == 0xE ? 3 : (b >> 3) == 0x1E ? 4 : 0;
-        bool valid = n > 0 && i + n <= line.size() && (b >= 0x20 || b == '\t');
-        for (std::size_t k = 1; valid && k < n; ++k) valid = (static_cast<unsigned char>(line[i + k]) >> 6) == 0x2;
-        if (valid) {
-            out.append(line.substr(i, n));
-            i += n - 1;
-        } else {
-            out += fmt::format("\\x{:02X}", b);
+    const auto control = [](char c) {
+        const auto b = static_cast<unsigned char>(c);
+        return b == 0x7F || (b < 0x20 && b != '\t');
+    };
+    std::string out, rest(line);
+    while (!rest.empty()) {
+        const auto firstControl = static_cast<std::size_t>(std::find_if(rest.begin(), rest.end(), control) - rest.begin());
+        const std::size_t bad = std::min(invalidUtf8At(rest), firstControl);
+        if (bad >= rest.size()) {
+            out += rest;
+            break;
         }
+        out += rest.substr(0, bad) + fmt::format("\\x{:02X}", static_cast<unsigned char>(rest[bad]));
+        rest.erase(0, bad + 1);
     }
     return out;
 }

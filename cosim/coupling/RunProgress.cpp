@@ -57,18 +57,13 @@ std::string RunProgress::cycleDoneLine(double elapsed, std::optional<double> per
                               *more * lastCycleSeconds_, cycle_ + *more >= maxCycles_ ? ", up to time.max_cycles" : "");
 }
 
-namespace {
-
-// "3.5 h", "12 days": the time left to a cycle's end.
-std::string duration(double s) {
+std::string formatDuration(double s) {
     if (s < 120.0) return fmt::format("{:.0f} s", s);
     if (s < 7200.0) return fmt::format("{:.0f} min", s / 60.0);
     if (s < 2.0 * 86400.0) return fmt::format("{:.1f} h", s / 3600.0);
     if (s < 2.0 * 365.0 * 86400.0) return fmt::format("{:.0f} days", s / 86400.0);
     return fmt::format("{:.3g} years", s / (365.0 * 86400.0));
 }
-
-}  // namespace
 
 ProgressPacer::ProgressPacer(int maxCycles, double startDeg, std::function<void(const std::string&)> print,
                              double intervalSeconds)
@@ -97,7 +92,7 @@ std::optional<std::string> ProgressPacer::stepAccepted(int cycle, double crankDe
     std::string eta;
     if (done > 0.0 && inCycle > 0.0) {
         const double left = (720.0 - done) * inCycle / done;
-        eta = fmt::format(", ~{} to the cycle's end at this pace", duration(left));
+        eta = fmt::format(", ~{} to the cycle's end at this pace", formatDuration(left));
     }
     return fmt::format("cycle {} (at most {})  crank {:.6g} deg  {} steps this cycle ({:.3g} % of it)  step {:.3g} deg  "
                        "| {:.1f} s{}",

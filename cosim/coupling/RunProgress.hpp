@@ -13,6 +13,9 @@
 
 namespace flexehd::cosim {
 
+/// "3.5 h", "12 days": a duration for messages.
+std::string formatDuration(double seconds);
+
 class RunProgress {
 public:
     RunProgress(int maxCycles, double periodicityTolerance);

@@ -1,4 +1,5 @@
 #include "cosim/run/OutputEstimate.hpp"
+#include "cosim/coupling/RunProgress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -78,14 +79,6 @@ OutputLayout outputLayout(const EngineCase& c, const PistonSimulation& sim) {
         l.bodies.push_back(b);
     }
     return l;
-}
-
-std::string formatDuration(double s) {
-    if (s < 120.0) return fmt::format("{:.0f} s", s);
-    if (s < 7200.0) return fmt::format("{:.0f} min", s / 60.0);
-    if (s < 2.0 * 86400.0) return fmt::format("{:.1f} h", s / 3600.0);
-    if (s < 2.0 * 365.0 * 86400.0) return fmt::format("{:.0f} days", s / 86400.0);
-    return fmt::format("{:.3g} years", s / (365.0 * 86400.0));
 }
 
 OutputVerdict judgeOutput(const OutputLayout& l, const OutputEstimate& e, std::optional<double> freeBytes) {

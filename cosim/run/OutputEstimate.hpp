@@ -79,9 +79,6 @@ struct OutputVerdict {
 };
 OutputVerdict judgeOutput(const OutputLayout& layout, const OutputEstimate& e, std::optional<double> freeBytes);
 
-/// "3.5 h", "12 days": a duration for messages.
-std::string formatDuration(double seconds);
-
 /// Estimates the run of `c` by `sim` into `directory` (existing), passes the warnings to `warn`
 /// and throws std::runtime_error with the refusal.
 void checkOutputEstimate(const EngineCase& c, const PistonSimulation& sim, const std::string& directory,
