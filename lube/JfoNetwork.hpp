@@ -33,11 +33,12 @@ struct JfoTopology {
         int a, b;
         bool axial;
         double L, d;  // face length and distance (m)
+        bool interior;  // neither node Void: h_f = (h_a + h_b)/2
+        int slotA, slotB;  // the face's adjacency entries of a and of b
     };
     std::vector<FaceGeometry> faces;
     std::vector<int> start, adj;
     std::vector<int> other;           // per adjacency entry: the face's other node
-    std::vector<char> outward;        // per adjacency entry: 1 if the node is the face's a
     std::vector<char> otherFilm;      // per adjacency entry: the other node is a Film node
     std::vector<int> boundaryFaces;   // faces with one Film and one Fixed or Void node
     std::vector<double> area;  // control-volume area per node (m²)
@@ -60,7 +61,7 @@ struct JfoTopology {
             ringStart[static_cast<std::size_t>(i) + 1] += ringStart[static_cast<std::size_t>(i)];
         forEachFace(g, [&](int a, int b, bool axial, double L, double d) {
             if (g.kind(a) != NodeKind::Film && g.kind(b) != NodeKind::Film) return;
-            faces.push_back({a, b, axial, L, d});
+            faces.push_back({a, b, axial, L, d, g.kind(a) != NodeKind::Void && g.kind(b) != NodeKind::Void, -1, -1});
         });
         const int n = g.size();
         start.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -72,33 +73,43 @@ struct JfoTopology {
         for (int k = 0; k < n; ++k) start[static_cast<std::size_t>(k) + 1] += start[static_cast<std::size_t>(k)];
         std::vector<int> fill(start.begin(), start.end() - 1);
         for (std::size_t i = 0; i < faces.size(); ++i) {
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].a)]++)] = static_cast<int>(i);
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(faces[i].b)]++)] = static_cast<int>(i);
+            faces[i].slotA = fill[static_cast<std::size_t>(faces[i].a)]++;
+            faces[i].slotB = fill[static_cast<std::size_t>(faces[i].b)]++;
+            adj[static_cast<std::size_t>(faces[i].slotA)] = static_cast<int>(i);
+            adj[static_cast<std::size_t>(faces[i].slotB)] = static_cast<int>(i);
             if ((g.kind(faces[i].a) == NodeKind::Film) != (g.kind(faces[i].b) == NodeKind::Film))
                 boundaryFaces.push_back(static_cast<int>(i));
         }
         other.resize(adj.size());
-        outward.resize(adj.size());
         otherFilm.resize(adj.size());
         for (int k = 0; k < n; ++k)
             for (int q = start[static_cast<std::size_t>(k)]; q < start[static_cast<std::size_t>(k) + 1]; ++q) {
                 const FaceGeometry& f = faces[static_cast<std::size_t>(adj[static_cast<std::size_t>(q)])];
                 const auto sq = static_cast<std::size_t>(q);
-                outward[sq] = f.a == k;
                 other[sq] = f.a == k ? f.b : f.a;
                 otherFilm[sq] = g.kind(other[sq]) == NodeKind::Film;
             }
     }
 };
 
+// The faces' coefficients for the film h and the viscosity eta (Pa s), and each adjacency entry's
+// conductance c and Couette coefficient qo out of its node (c, qo sized to the adjacency).
 inline void buildFaces(const JfoTopology& t, const FilmGrid& g, const FilmState& film, double eta,
-                       std::vector<JfoFace>& faces) {
-    faces.clear();
-    faces.reserve(t.faces.size());
-    const double Uz = film.sumAxial(), Ut = film.sumCircumferential();
-    for (const JfoTopology::FaceGeometry& f : t.faces) {
-        const double hf = faceValue(g, film.h, f.a, f.b);
-        faces.push_back({f.a, f.b, hf * hf * hf * f.L / (12.0 * eta * f.d), 0.5 * (f.axial ? Uz : Ut) * hf * f.L});
+                       std::vector<JfoFace>& faces, std::vector<double>& c, std::vector<double>& qo) {
+    faces.resize(t.faces.size());
+    c.resize(t.adj.size());
+    qo.resize(t.adj.size());
+    const double Uz = 0.5 * film.sumAxial(), Ut = 0.5 * film.sumCircumferential();
+    const double* h = film.h.data();
+    for (std::size_t i = 0; i < t.faces.size(); ++i) {
+        const JfoTopology::FaceGeometry& f = t.faces[i];
+        const double hf = f.interior ? 0.5 * (h[f.a] + h[f.b]) : faceValue(g, h, f.a, f.b);
+        const double cf = hf * hf * hf * f.L / (12.0 * eta * f.d), qf = (f.axial ? Uz : Ut) * hf * f.L;
+        faces[i] = {f.a, f.b, cf, qf};
+        c[static_cast<std::size_t>(f.slotA)] = cf;
+        c[static_cast<std::size_t>(f.slotB)] = cf;
+        qo[static_cast<std::size_t>(f.slotA)] = qf;
+        qo[static_cast<std::size_t>(f.slotB)] = -qf;
     }
 }
 
@@ -122,8 +133,8 @@ public:
                JfoNetworkStorage* storage = nullptr)
         : g_(g), film_(film), dt_(dt), previous_(previous), inlet_(inlet), pcav_(pcav),
           s_(storage ? *storage : own_), t_(t), area_(t.area.data()) {
-        buildFaces(t, g, film, eta, s_.faces);
-        fillAdjacency();
+        buildFaces(t, g, film, eta, s_.faces, s_.c, s_.qo);
+        sumPerNode();
     }
 
     // visit(m, c, qo) for each face of node k: its other node m, Poiseuille coefficient c and the
@@ -145,31 +156,41 @@ public:
     double area(int k) const { return area_[k]; }
     double inlet(int m) const { return inlet_[static_cast<std::size_t>(m)]; }
 
-    // D and B do not depend on the iterate: summed once per solve (fillAdjacency), in this order.
-    Balance balance(int k, const double* p, const double* phi) const {
+    // D and B do not depend on the iterate: summed once per solve (sumPerNode), in this order.
+    // With `missing`, also the Couette inflow that the upstream partial films (or starved inlets)
+    // do not bring, Σ_in −q_f (1 − φ_up) (m³/s), into *missing.
+    template <bool WithMissing = false>
+    Balance balance(int k, const double* p, const double* phi, double* missing = nullptr) const {
         const auto sk = static_cast<std::size_t>(k);
         Balance bl{D_[sk], 0.0, B_[sk], 0.0};
         const int* other = t_.other.data();
         const char* film = t_.otherFilm.data();
         const double* cs = c_;
         const double* qos = qo_;
+        double lost = 0.0;
         for (int q = t_.start[sk]; q < t_.start[sk + 1]; ++q) {
             const double qo = qos[q];
             const int m = other[q];
             bl.S += cs[q] * p[m];
-            if (qo < 0.0) bl.Sin -= qo * (film[q] ? phi[m] : inlet(m));  // non-Film: its inlet fraction
+            if (qo < 0.0) {
+                const double up = film[q] ? phi[m] : inlet(m);  // non-Film: its inlet fraction
+                bl.Sin -= qo * up;
+                if constexpr (WithMissing) lost -= qo * (1.0 - up);
+            }
         }
+        if constexpr (WithMissing) *missing = lost;
         if (transient()) bl.Sin += previousOil(k);
         return bl;
     }
 
-    // The convergence criterion (header): scaled mass residual of the iterate.
-    double residual(const std::vector<int>& rows, const double* p, const double* phi) const {
+    // The convergence criterion (header): scaled mass residual of the iterate. With `missing`
+    // (one value per node), each row's missing Couette inflow (balance) at the iterate, too.
+    double residual(const std::vector<int>& rows, const double* p, const double* phi, double* missing = nullptr) const {
         const double pAmb = g_.ambientPressure();
-        double scale = 0.0, rmax = 0.0;
-        for (int k = 0; k < g_.size(); ++k) scale = std::max(scale, std::abs(p[k] - pAmb));
+        const double scale = (Eigen::Map<const Eigen::ArrayXd>(p, g_.size()) - pAmb).abs().maxCoeff();
+        double rmax = 0.0;
         for (int k : rows) {
-            const Balance bl = balance(k, p, phi);
+            const Balance bl = missing ? balance<true>(k, p, phi, missing + k) : balance(k, p, phi);
             const double F = bl.D * p[k] - bl.S + bl.B * phi[k] - bl.Sin;
             const bool full = phi[k] >= 1.0 && p[k] > pcav_;
             const double r = (full || !(bl.B > 0.0)) ? std::abs(F) / bl.D / std::max(scale, 1e-300)
@@ -180,23 +201,19 @@ public:
     }
 
 private:
-    // Per adjacency entry, contiguous per node: the face's conductance and its Couette
-    // coefficient out of the node (the loops read these, not the faces); per node D and B.
-    void fillAdjacency() {
-        const std::size_t na = t_.adj.size(), n = t_.area.size();
-        s_.c.resize(na);
-        s_.qo.resize(na);
+    // Per node D and B from the adjacency entries' conductances and Couette coefficients out of the
+    // node (contiguous per node: the loops read these, not the faces).
+    void sumPerNode() {
+        const std::size_t n = t_.area.size();
         s_.D.resize(n);
         s_.B.resize(n);
+        const double* cs = s_.c.data();
+        const double* qos = s_.qo.data();
         for (std::size_t k = 0; k < n; ++k) {
             double d = 0.0, b = 0.0;
             for (int q = t_.start[k]; q < t_.start[k + 1]; ++q) {
-                const auto sq = static_cast<std::size_t>(q);
-                const JfoFace& f = s_.faces[static_cast<std::size_t>(t_.adj[sq])];
-                s_.c[sq] = f.c;
-                s_.qo[sq] = t_.outward[sq] ? f.q : -f.q;
-                d += s_.c[sq];
-                if (s_.qo[sq] > 0.0) b += s_.qo[sq];
+                d += cs[q];
+                b += std::max(qos[q], 0.0);
             }
             if (transient()) b += storage(static_cast<int>(k));
             s_.D[k] = d;

@@ -178,19 +178,31 @@ void gaussSeidelSolve(const JfoNetwork& net, const std::vector<int>& rows, const
 
 // The effective squeeze rate that turns the Reynolds-condition problem into the JFO balance of
 // every full-film node (docs/lube.md §3b, "the multigrid method"): the content term
-// (h − φₙhₙ)/Δt and the Couette inflow an upstream partial film (or starved inlet) does not bring,
-// Σ_in q_f (1 − φ_up)/V_k.
-void effectiveSqueeze(const JfoNetwork& net, const FilmGrid& g, const FilmState& film, double dt,
-                      const JfoState* previous, const std::vector<int>& rows, const double* phi, Eigen::VectorXd& dhdt) {
+// (h − φₙhₙ)/Δt (`content`, per node, none when steady) and the Couette inflow an upstream
+// partial film (or starved inlet) does not bring, Σ_in q_f (1 − φ_up)/V_k (`missing`, per node:
+// JfoNetwork::balance).
+void effectiveSqueeze(const JfoNetwork& net, const FilmGrid& g, const std::vector<int>& rows,
+                      const Eigen::VectorXd& missing, const Eigen::VectorXd* content, Eigen::VectorXd& dhdt) {
     dhdt.setZero(g.size());
     for (int k : rows) {
-        double missing = 0.0;
-        net.forFaces(k, [&](int m, double, double qo) {
-            if (qo < 0.0) missing -= qo * (1.0 - (g.kind(m) == NodeKind::Film ? phi[m] : net.inlet(m)));
-        });
-        dhdt[k] = missing / net.area(k);
-        if (dt > 0.0) dhdt[k] += (film.h[k] - previous->fraction[k] * previous->h[k]) / dt;
+        dhdt[k] = missing[k] / net.area(k);
+        if (content) dhdt[k] += (*content)[k];
     }
+}
+
+// The content term (h − φₙhₙ)/Δt of every row (the same in every pass of a solve).
+Eigen::VectorXd contentRate(const FilmGrid& g, const FilmState& film, double dt, const JfoState& previous,
+                            const std::vector<int>& rows) {
+    Eigen::VectorXd content = Eigen::VectorXd::Zero(g.size());
+    for (int k : rows) content[k] = (film.h[k] - previous.fraction[k] * previous.h[k]) / dt;
+    return content;
+}
+
+// The missing Couette inflow of every row at the iterate (p, φ) (JfoNetwork::balance).
+void missingInflow(const JfoNetwork& net, const std::vector<int>& rows, const double* p, const double* phi,
+                   Eigen::VectorXd& missing) {
+    missing.setZero(static_cast<Eigen::Index>(net.topology().area.size()));
+    for (int k : rows) net.balance<true>(k, p, phi, &missing[k]);
 }
 
 // The nodal JFO update of node k (Ausas et al.; without over-relaxation), its neighbours frozen.
@@ -198,14 +210,15 @@ void effectiveSqueeze(const JfoNetwork& net, const FilmGrid& g, const FilmState&
 // neighbours whose Couette flow enters k, not its own p.
 inline void nodalUpdate(const JfoNetwork& net, int k, double pcav, double* p, double* phi) {
     const JfoNetwork::Balance bl = net.balance(k, p, phi);
-    const double phiStar = bl.B > 0.0 ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
-    if (bl.B > 0.0 && phiStar < 1.0) {  // cavitated: p = p_cav, φ from the balance
-        p[k] = pcav;
-        phi[k] = std::max(phiStar, 0.0);
-    } else {                            // full film: φ = 1, p from the balance
-        if (bl.B > 0.0) phi[k] = 1.0;
-        p[k] = std::max(pcav, (bl.S + bl.Sin - bl.B * phi[k]) / bl.D);
-    }
+    const bool carried = bl.B > 0.0;  // a Couette outflow or storage can carry a partial film
+    const double phiStar = carried ? (bl.S + bl.Sin - bl.D * pcav) / bl.B : 1.0;
+    const bool cavitated = carried && phiStar < 1.0;  // p = p_cav, φ from the balance
+    const double phiFull = carried ? 1.0 : phi[k];    // full film: φ = 1, p from the balance
+    const double pFull = std::max(pcav, (bl.S + bl.Sin - bl.B * phiFull) / bl.D);
+    // Both candidates computed and one kept, without a branch: at the fronts the choice changes
+    // from node to node.
+    p[k] = cavitated ? pcav : pFull;
+    phi[k] = cavitated ? std::max(phiStar, 0.0) : phiFull;
 }
 
 bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
@@ -362,8 +375,11 @@ bool multigridSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState& f
     FilmState eff = film;
     Eigen::VectorXd warm = res.pressure;
     std::vector<double> history;  // the residual of each pass
+    Eigen::VectorXd missing;      // each row's missing Couette inflow at the iterate (m³/s)
+    missingInflow(net, rows, res.pressure.data(), res.fraction.data(), missing);
+    const Eigen::VectorXd content = dt > 0.0 ? contentRate(g, film, dt, *previous, rows) : Eigen::VectorXd();
     for (int outer = 1; outer <= o.maxMultigridPasses; ++outer) {
-        effectiveSqueeze(net, g, film, dt, previous, rows, res.fraction.data(), eff.dhdt);
+        effectiveSqueeze(net, g, rows, missing, dt > 0.0 ? &content : nullptr, eff.dhdt);
         // Cold, the first pass is the multigrid's own cold start (nested from the coarse grids);
         // the later ones change only the squeeze rate: the assembled system is reused.
         res.pressure = outer == 1 ? rs.solve(eff, warmStarted ? &warm : nullptr).pressure
@@ -371,7 +387,7 @@ bool multigridSolve(const JfoNetwork& net, const FilmGrid& g, const FilmState& f
         warm = res.pressure;
         sweepAlongFlow(net, g, film, pcav, res.pressure.data(), res.fraction.data());
         res.iterations = outer;
-        res.residual = net.residual(rows, res.pressure.data(), res.fraction.data());
+        res.residual = net.residual(rows, res.pressure.data(), res.fraction.data(), missing.data());
         if (res.residual <= o.control.tolerance) return true;
         // Stalled (a front alternating between two nodes, as at the meniscus of a steady starved
         // film): the active set takes over.
@@ -481,8 +497,7 @@ JfoSolver::JfoSolver(JfoSolver&&) noexcept = default;
 
 double JfoSolver::oilVolume(const FilmState& film, const Eigen::VectorXd& fraction) const {
     double v = 0.0;
-    for (int k = 0; k < grid_.size(); ++k)
-        if (grid_.kind(k) == NodeKind::Film) v += grid_.area(k) * fraction[k] * film.h[k];
+    for (int k : topology_->filmRows) v += topology_->area[static_cast<std::size_t>(k)] * fraction[k] * film.h[k];
     return v;
 }
 

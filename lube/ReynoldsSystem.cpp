@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -21,7 +22,11 @@ void validateFilmState(const FilmGrid& grid, const FilmState& film) {
     if (film.dhdt.size() != 0 && film.dhdt.size() != n)
         throw std::invalid_argument("FilmState: dhdt has " + std::to_string(film.dhdt.size()) +
                                     " values, expected 0 (steady) or " + std::to_string(n));
-    for (int k = 0; k < n; ++k) {
+    // Every node positive and finite (a NaN or infinity makes the sum non-finite): nothing to
+    // name. Else the loop finds the first offending non-Void node (Void nodes may hold anything).
+    const bool allValid = n > 0 && film.h.minCoeff() > 0.0 && std::isfinite(film.h.sum()) &&
+                          (film.dhdt.size() == 0 || std::isfinite(film.dhdt.sum()));
+    for (int k = 0; k < n && !allValid; ++k) {
         if (grid.kind(k) == NodeKind::Void) continue;
         if (!(film.h[k] > 0.0) || !std::isfinite(film.h[k]))
             throw std::invalid_argument(
