@@ -4,9 +4,11 @@
 //
 //   ω_k = −ω_{k−1} r_{k−1}ᵀ(r_k − r_{k−1}) / ‖r_k − r_{k−1}‖²,   y_{k+1} = y_k + ω_k r_k,
 //
-// the first iteration the relaxed step y + ω₀ r (ω kept where r_k = r_{k−1}).
+// the first iteration the relaxed step y + ω₀ r (ω kept where r_k = r_{k−1}): lube's
+// AitkenRelaxation without bounds on ω.
 
 #include "cosim/coupling/CouplingAccelerator.hpp"
+#include "lube/AitkenRelaxation.hpp"
 
 namespace flexehd::cosim {
 
@@ -18,9 +20,7 @@ public:
     Eigen::VectorXd next(const Eigen::VectorXd& y, const Eigen::VectorXd& Hy) override;
 
 private:
-    double omega0_, omega_;
-    bool first_ = true;
-    Eigen::VectorXd lastR_;
+    lube::AitkenRelaxation relaxation_;
 };
 
 }  // namespace flexehd::cosim
