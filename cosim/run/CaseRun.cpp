@@ -18,6 +18,7 @@
 #include "cosim/results/HistoryWriter.hpp"
 #include "cosim/results/WearMapWriter.hpp"
 #include "cosim/run/OutputEstimate.hpp"
+#include "cosim/run/StarvedStepTolerance.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/results/RunSummary.hpp"
 #include "cosim/wear/SkirtWear.hpp"
@@ -205,6 +206,7 @@ CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<
     for (const ContactBuilder& build : contacts) sim.addContact(build(c, sim));
     const SkirtContact& skirt = sim.contact<SkirtContact>();
     checkOutputEstimate(c, sim, dir, log.warn);  // refuses a run whose steps or files cannot fit
+    if (const auto loose = looseStarvedStepTolerance(c)) say(log.warn, *loose);
     std::optional<SkirtWear> wear;
     if (SkirtWear::wanted(c)) sim.addObserver(wear.emplace(c, sim));
     reportBodies(c, skirt, log);

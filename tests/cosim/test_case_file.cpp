@@ -20,6 +20,7 @@
 #include <Eigen/LU>
 
 #include "cosim/casefile/CaseFile.hpp"
+#include "cosim/run/StarvedStepTolerance.hpp"
 #include "cosim/engine/CylinderPressure.hpp"
 #include "fem/MeshReader.hpp"
 #include "fem/Quadrature.hpp"
@@ -36,6 +37,7 @@ using cosim::PressureTableError;
 using cosim::readCaseFile;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 namespace fs = std::filesystem;
@@ -329,7 +331,12 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
         EXPECT_EQ(v->time.startDeg, ehd.time.startDeg);
         EXPECT_EQ(v->time.maxStepDeg, ehd.time.maxStepDeg);
         EXPECT_EQ(v->time.minStepDeg, ehd.time.minStepDeg);
-        if (v != &starved && v != &starvedEhd) {  // a starved skirt's slaps need the tighter step error (docs/coupling.md §1)
+        if (v == &flooded) {  // the defaults, for studies that switch it to a starved supply: the
+                              // same lateral value, 5e-6 rad exactly against the others' 2.865e-4 deg
+            EXPECT_EQ(v->time.lateralTolerance, ehd.time.lateralTolerance);
+            EXPECT_EQ(v->time.tiltTolerance, cosim::TimeSpec{}.tiltTolerance);
+            EXPECT_NEAR(v->time.tiltTolerance, ehd.time.tiltTolerance, 1e-4 * ehd.time.tiltTolerance);
+        } else if (v != &starved && v != &starvedEhd) {  // a starved skirt's slaps need the tighter step error (docs/coupling.md §1)
             EXPECT_EQ(v->time.lateralTolerance, ehd.time.lateralTolerance);
             EXPECT_EQ(v->time.tiltTolerance, ehd.time.tiltTolerance);
         } else {  // the liner layer's defaults
@@ -654,6 +661,29 @@ TEST(CaseFile, AStarvedSkirtGetsATighterStepToleranceByDefault) {
     EXPECT_EQ(flooded.lateralTolerance, general.lateralTolerance);
     EXPECT_EQ(flooded.tiltTolerance, general.tiltTolerance);
     EXPECT_EQ(time("name: small").lateralTolerance, general.lateralTolerance);
+}
+
+// A starved case given the flooded film's tolerances (copied from hd.yaml) is warned, naming the
+// keys and the defaults; at the defaults, tighter, or flooded, it is not.
+TEST(CaseFile, LooseStepToleranceOnALinerLayerIsWarned) {
+    const fs::path dir = scratchDir();
+    const std::string starved =
+        "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: 3e-6}}\n";
+    auto warning = [&](const std::string& text) {
+        return cosim::looseStarvedStepTolerance(readCaseFile(caseWith(dir, "name: small", text)));
+    };
+    const auto loose = warning(starved + "time: {lateral_tolerance: 0.2e-6, tilt_tolerance_deg: 2.865e-4}");
+    ASSERT_TRUE(loose.has_value());
+    EXPECT_THAT(*loose, AllOf(HasSubstr("time.lateral_tolerance 2e-07 m (liner layer default 2e-08 m)"),
+                              HasSubstr("time.tilt_tolerance_deg 0.0002865 (default 2.865e-05)"),
+                              HasSubstr("remove the key")));
+    const auto tiltOnly = warning(starved + "time: {tilt_tolerance_deg: 1.0e-4}");
+    ASSERT_TRUE(tiltOnly.has_value());
+    EXPECT_THAT(*tiltOnly, Not(HasSubstr("lateral")));
+    EXPECT_FALSE(warning(starved).has_value());
+    EXPECT_FALSE(warning(starved + "time: {lateral_tolerance: 0.01e-6}").has_value());
+    EXPECT_FALSE(warning("name: small\nlubricant: {cavitation: mass_conserving}\n"
+                         "time: {lateral_tolerance: 0.2e-6}").has_value());
 }
 
 TEST(CaseFile, TheKeptJacobianCanBeTurnedOff) {

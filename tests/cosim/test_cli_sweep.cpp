@@ -176,7 +176,9 @@ TEST(StudyFile, ARingPackFileIsFoundFromTheVariantsCase) {
 }
 
 // Every study the examples ship names case-file keys only, and every variant's case reads
-// (values in their ranges; the bodies' files are not looked for).
+// (values in their ranges; the bodies' files are not looked for). A variant on the liner's oil
+// layer runs at that layer's step tolerance (a starved skirt's cycles repeat only then,
+// docs/coupling.md §1): no base case or study sets the flooded film's value for it.
 TEST(StudyFile, ShippedExampleStudiesGiveValidCases) {
     TempDir t("examples");
     int studies = 0;
@@ -193,7 +195,12 @@ TEST(StudyFile, ShippedExampleStudiesGiveValidCases) {
             const fs::path file = t.path / (name + "." + v.id + ".yaml");
             std::ofstream(file) << flexehd::cosim::variantCaseText(s, v);
             try {
-                flexehd::cosim::readCaseFile(file.string(), noBodyFiles);
+                const flexehd::cosim::EngineCase c = flexehd::cosim::readCaseFile(file.string(), noBodyFiles);
+                if (c.lubricant.supply.model == flexehd::cosim::OilSupplyModel::LinerLayer) {
+                    EXPECT_EQ(c.time.lateralTolerance, flexehd::cosim::TimeSpec::kStarvedLateralTolerance)
+                        << name << " " << v.id;
+                    EXPECT_EQ(c.time.tiltTolerance, flexehd::cosim::TimeSpec::kStarvedTiltTolerance) << name << " " << v.id;
+                }
             } catch (const std::exception& e) {
                 ADD_FAILURE() << name << " " << v.id << ": " << e.what();
             }
