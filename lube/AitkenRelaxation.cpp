@@ -9,15 +9,13 @@ AitkenRelaxation::AitkenRelaxation(double initial, double lowest, double highest
     : omega0_(initial), lowest_(lowest), highest_(highest), omega_(initial) {}
 
 void AitkenRelaxation::reset() {
-    first_ = true;
+    lastR_.resize(0);
     omega_ = omega0_;
 }
 
 Eigen::VectorXd AitkenRelaxation::next(const Eigen::VectorXd& x, const Eigen::VectorXd& Gx) {
     Eigen::VectorXd r = Gx - x;
-    if (first_) {
-        first_ = false;
-    } else {
+    if (lastR_.size() != 0) {  // not the first iteration
         const Eigen::VectorXd dr = r - lastR_;
         const double d = dr.squaredNorm();
         if (d > 0.0) omega_ = std::clamp(-omega_ * lastR_.dot(dr) / d, lowest_, highest_);

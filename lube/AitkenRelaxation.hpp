@@ -26,8 +26,7 @@ public:
 
 private:
     double omega0_, lowest_, highest_, omega_;
-    bool first_ = true;
-    Eigen::VectorXd lastR_;
+    Eigen::VectorXd lastR_;  // the last iteration's r (none before the first)
 };
 
 }  // namespace flexehd::lube
