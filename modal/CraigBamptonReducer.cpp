@@ -86,6 +86,26 @@ CraigBamptonReducer::CraigBamptonReducer(const fem::Mesh& mesh, const fem::Elast
 
 namespace {
 
+// The uniform-pressure groups: known surface groups, each once, none an interface (a held
+// surface's load goes straight into the reference node; its static response is not elastic).
+void requirePressurePatterns(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs,
+                             const std::vector<std::string>& groups) {
+    for (const std::string& g : groups) {
+        try {
+            fem::BoundarySurface(mesh, g);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("pressure pattern '" + g + "': " + e.what());
+        }
+        if (std::count(groups.begin(), groups.end(), g) > 1)
+            throw std::invalid_argument("pressure pattern '" + g + "' is listed twice; each group gets one vector");
+        for (const auto& s : specs)
+            if (s.group == g)
+                throw std::invalid_argument("pressure pattern '" + g +
+                                            "' is also an interface; a held surface's load goes into its reference "
+                                            "node, so a uniform-pressure vector there adds nothing");
+    }
+}
+
 // The cheap checks, before anything that can take minutes on a production mesh.
 void requireReducible(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs, const ReductionSettings& settings) {
     if (specs.empty())
@@ -101,6 +121,7 @@ void requireReducible(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& s
         if (mesh.group(s.group).dim != 2)
             throw std::invalid_argument("interface '" + s.group + "' is a volume group of mesh '" + mesh.source +
                                         "'; an interface is a surface group (the surfaces where the body is held)");
+    requirePressurePatterns(mesh, specs, settings.pressurePatterns);
 }
 
 // The interfaces: node sets tied to reference nodes (RBE2, or averaging) in dofs.
@@ -126,18 +147,37 @@ std::vector<Interface> tieInterfaces(const fem::Mesh& mesh, const std::vector<In
     return interfaces;
 }
 
+// Residual attachment vectors K_ii⁻¹ F_i of interior loads, M-orthogonalised against Φ:
+// (I − Φ Φᵀ M_ii) K_ii⁻¹ F_i (Craig & Bampton 1968; docs/modal.md, "The basis").
+Eigen::MatrixXd attachment(const fem::StaticSolver& factor, const fem::SparseMatrix& Mii, const Eigen::MatrixXd& Phi,
+                           const Eigen::MatrixXd& Fi) {
+    Eigen::MatrixXd X = factor.solve(Fi);
+    if (Phi.cols() > 0) X -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * X));
+    return X;
+}
+
+void appendColumns(Eigen::MatrixXd& X, const Eigen::MatrixXd& more) {
+    X.conservativeResize(Eigen::NoChange, X.cols() + more.cols());
+    X.rightCols(more.cols()) = more;
+}
+
 // The static correction: residual attachment modes, M-orthogonal to Φ. Always inertia relief,
 // the interior's static response to the inertia forces of a unit boundary acceleration,
 // −(M_ii Ψ + M_ib): it carries the coupling between the interface's (rigid) motion and elastic
 // deformation that fixed-interface modes converge to slowly; then the responses to the surface
-// pressure patterns of settings.staticCorrection.
+// pressure patterns of settings.staticCorrection, and to a uniform unit pressure on each group
+// of settings.pressurePatterns (also flat surfaces such as the crown, where the z–θ patterns
+// do not apply).
 Eigen::MatrixXd staticCorrection(const fem::Mesh& mesh, const fem::ElasticityAssembler& assembler,
                                  const fem::DofMap& dofs, const fem::StaticSolver& factor, const fem::SparseMatrix& Mii,
                                  const Eigen::MatrixXd& Mib, const Eigen::MatrixXd& Psi, const Eigen::MatrixXd& Phi,
                                  const ReductionSettings& settings, int& inertiaRelief) {
     const Eigen::Index ni = Mii.rows();
-    Eigen::MatrixXd X = factor.solve(Eigen::MatrixXd(-(Mii.selfadjointView<Eigen::Upper>() * Psi + Mib)));
-    if (Phi.cols() > 0) X -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * X));
+    // Nodal forces in the free DOFs (u = T u_free), interior part.
+    const auto interiorLoad = [&](const Eigen::VectorXd& f) -> Eigen::VectorXd {
+        return (dofs.transformation().transpose() * f).head(ni);
+    };
+    Eigen::MatrixXd X = attachment(factor, Mii, Phi, -(Mii.selfadjointView<Eigen::Upper>() * Psi + Mib));
     inertiaRelief = int(X.cols());
     for (const auto& surface : settings.staticCorrection) {
         const fem::BoundarySurface s(mesh, surface);
@@ -145,13 +185,15 @@ Eigen::MatrixXd staticCorrection(const fem::Mesh& mesh, const fem::ElasticityAss
             surfacePressurePatterns(mesh, surface, settings.axialOrder, settings.circumferentialOrder, settings.axialHats);
         Eigen::MatrixXd Fi(ni, P.cols());
         for (Eigen::Index j = 0; j < P.cols(); ++j)
-            Fi.col(j) = (dofs.transformation().transpose() * assembler.pressureLoad(s, Eigen::VectorXd(P.col(j))))
-                            .head(ni);
-        Eigen::MatrixXd Xs = factor.solve(Fi);
-        if (Phi.cols() > 0) Xs -= Phi * (Phi.transpose() * (Mii.selfadjointView<Eigen::Upper>() * Xs));
-        X.conservativeResize(Eigen::NoChange, X.cols() + Xs.cols());
-        X.rightCols(Xs.cols()) = Xs;
+            Fi.col(j) = interiorLoad(assembler.pressureLoad(s, Eigen::VectorXd(P.col(j))));
+        appendColumns(X, attachment(factor, Mii, Phi, Fi));
     }
+    if (settings.pressurePatterns.empty()) return X;
+    Eigen::MatrixXd Fi(ni, Eigen::Index(settings.pressurePatterns.size()));
+    for (std::size_t k = 0; k < settings.pressurePatterns.size(); ++k)
+        Fi.col(Eigen::Index(k)) =
+            interiorLoad(assembler.pressureLoad(fem::BoundarySurface(mesh, settings.pressurePatterns[k]), 1.0));
+    appendColumns(X, attachment(factor, Mii, Phi, Fi));
     return X;
 }
 

@@ -3,8 +3,9 @@
 //   u = [u_i; u_b] ≈ [[Ψ, Φ, X], [I, 0, 0]] [q_b; η; ξ],
 //   Ψ = -K_ii⁻¹ K_ib (constraint modes), Φ: K_ii φ = ω² M_ii φ (fixed-interface modes),
 //   X = (I - Φ Φᵀ M_ii) K_ii⁻¹ F_i (static-correction / residual attachment modes: inertia
-//   relief F_i = -(M_ii Ψ + M_ib), and the pressure patterns of LoadPatterns on the named
-//   surfaces).
+//   relief F_i = -(M_ii Ψ + M_ib), the pressure patterns of LoadPatterns on the
+//   staticCorrection surfaces, and one uniform unit pressure per pressurePatterns group,
+//   e.g. the crown under the cylinder's gas pressure).
 // Boundary DOFs are the 6 DOFs of a reference node per interface: a node set tied to it
 // rigidly (RBE2) or followed by it on average (RBE3). The basis is then orthonormalised: Mᵣ = I, Kᵣ = diag(ω²), rigid-body modes flagged.
 // One factorization of K_ii serves Ψ, the Lanczos iterations and X.
@@ -39,8 +40,9 @@ public:
     CraigBamptonReducer(const fem::Mesh& mesh, const fem::ElasticMaterial& material);
 
     /// Throws std::invalid_argument for unknown groups, empty or overlapping interfaces,
-    /// more modes than interior DOFs; std::runtime_error if the interfaces do not hold the
-    /// body (K_ii singular: a disconnected part, or no interface).
+    /// more modes than interior DOFs, a pressure-pattern group listed twice or also an
+    /// interface; std::runtime_error if the interfaces do not hold the body (K_ii singular:
+    /// a disconnected part, or no interface).
     ReducedBody reduce(const std::vector<InterfaceSpec>& interfaces, const ReductionSettings& settings,
                        ReductionReport* report = nullptr) const;
 

@@ -29,6 +29,7 @@ struct ReductionSettings {
     int normalModes = 0;           ///< fixed-interface normal modes kept (after cut-off)
     double cutoffHz = 0.0;         ///< 0: none; else keep modes below this frequency
     std::vector<std::string> staticCorrection;  ///< surfaces with residual attachment modes
+    std::vector<std::string> pressurePatterns;  ///< surfaces with one uniform-pressure static-correction vector each
     int axialOrder = 0;            ///< load patterns: Legendre degree 0..axialOrder along z
     int axialHats = 0;             ///< if > 0: this many piecewise-linear hats along z instead
     int circumferentialOrder = 0;  ///< and Fourier orders 0..circumferentialOrder in θ

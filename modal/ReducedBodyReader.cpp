@@ -101,6 +101,12 @@ public:
         return values;
     }
 
+    /// An attribute added after version 1 of the format: absent in older files, which read
+    /// as an empty list (docs/reduced-body-format.md, "Versioning").
+    std::vector<std::string> optionalStringsAttr(const std::string& object, const std::string& name) const {
+        return hasAttribute(object, name) ? stringsAttr(object, name) : std::vector<std::string>{};
+    }
+
     std::string stringAttr(const std::string& object, const std::string& name) const {
         const auto values = stringsAttr(object, name);
         if (values.size() != 1) fail("attribute '" + name + "' of " + object + " is not a single string");
@@ -273,6 +279,7 @@ ReducedBody readContent(const Reader& r) {
     s.normalModes = int(r.intAttr("/settings", "normal_modes"));
     s.cutoffHz = r.realAttr("/settings", "cutoff_hz");
     s.staticCorrection = r.stringsAttr("/settings", "static_correction");
+    s.pressurePatterns = r.optionalStringsAttr("/settings", "pressure_patterns");
     s.axialOrder = int(r.intAttr("/settings", "axial_order"));
     s.axialHats = int(r.intAttr("/settings", "axial_hats"));
     s.circumferentialOrder = int(r.intAttr("/settings", "circumferential_order"));

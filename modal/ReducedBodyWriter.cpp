@@ -169,6 +169,7 @@ void writeContent(const ReducedBody& b, const Writer& w) {
     w.intAttribute("/settings", "normal_modes", s.normalModes);
     w.realAttribute("/settings", "cutoff_hz", s.cutoffHz);
     w.stringsAttribute("/settings", "static_correction", s.staticCorrection);
+    w.stringsAttribute("/settings", "pressure_patterns", s.pressurePatterns);
     w.intAttribute("/settings", "axial_order", s.axialOrder);
     w.intAttribute("/settings", "axial_hats", s.axialHats);
     w.intAttribute("/settings", "circumferential_order", s.circumferentialOrder);

@@ -27,7 +27,8 @@ mkdir -p "$out"
 # both seats tied. Coarse meshes keep the example to a few minutes.
 echo "== reducing the piston and the liner"
 "$flexehd" reduce --mesh "$root/meshes/piston.geo" --size 0.0065 --E 7.5e10 --nu 0.33 --rho 2700 \
-  --interface pin_bore:rbe2@0,0,0 --modes 20 --static-correction skirt --out "$out/piston.h5" | tail -n 2
+  --interface pin_bore:rbe2@0,0,0 --modes 20 --static-correction skirt --pressure-pattern crown \
+  --out "$out/piston.h5" | tail -n 2
 "$flexehd" reduce --mesh "$root/meshes/liner.geo" --size 0.009 --E 1.1e11 --nu 0.26 --rho 7200 \
   --interface top_seat:rbe2 --interface bottom_seat:rbe2 --modes 20 --static-correction bore \
   --axial-hats 17 --out "$out/liner.h5" | tail -n 2
@@ -40,10 +41,10 @@ echo "== HD with the ring pack (examples/engine86/rings.yaml)"
   --labels "HD with rings" "HD, skirt alone" --out "$out/plots_rings"
 echo "== EHD: flexible piston"
 "$flexehd" run "$root/examples/engine86/case.yaml"
-echo "== EHD with the ring pack"
+echo "== EHD with the ring pack, the gas pressure and inertia on the flexible piston"
 "$flexehd" run "$root/examples/engine86/ehd_rings.yaml"
 /usr/bin/python3 "$root/scripts/plot_results.py" "$out/ehd_rings" --compare "$out/ehd" \
-  --labels "EHD with rings" "EHD, skirt alone" --out "$out/plots_rings_ehd"
+  --labels "EHD with rings, gas and inertia on the piston" "EHD, skirt alone" --out "$out/plots_rings_ehd"
 echo "== thermal state of piston and liner (templug calibration, thermal expansion)"
 "$flexehd" thermal "$root/examples/engine86/thermal.yaml" | tail -n 4
 echo "== HD with the thermal state: cold clearance 75 um, hot running clearance 20-40 um"

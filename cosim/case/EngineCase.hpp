@@ -125,8 +125,16 @@ struct PressureSample {
 enum class BodyModel { Rigid, Flexible };
 enum class ElasticResponse { QuasiStatic, Dynamic };
 
+/// Loads on a flexible piston besides its films' (case key bodies.piston.loads; docs/coupling.md §2).
+struct PistonLoadSpec {
+    bool gasPressure = false;           ///< the cylinder's gas pressure (gauge) on gasSurface
+    std::string gasSurface = "crown";   ///< the surface group it acts on
+    bool inertia = false;               ///< the inertia of the piston's rigid motion
+};
+
 struct BodySpec {
     BodyModel model = BodyModel::Rigid;
+    PistonLoadSpec loads;     ///< the piston only
     std::string file;         ///< reduced-body HDF5 file (Flexible), resolved to an absolute path
     std::string surface;      ///< physical surface facing the film: `skirt` / `bore`
     std::string interface;    ///< interface held in the quasi-static response: `pin_bore` / seats

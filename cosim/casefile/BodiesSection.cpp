@@ -20,6 +20,35 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// bodies.piston.loads: a list of gas_pressure and inertia (docs/case-file.md, "bodies").
+PistonLoadSpec readLoads(const YamlSection& s, bool piston) {
+    PistonLoadSpec l;
+    if (!s.has("loads") && !s.has("gas_surface")) return l;
+    if (!piston)
+        s.fail(s.has("loads") ? "loads" : "gas_surface",
+               "loads act on the piston only (the cylinder's gas pressure on its crown, its inertia); the liner takes "
+               "its films' loads");
+    if (s.has("loads")) {
+        const YAML::Node n = s.get("loads");
+        const YamlSource& ctx = s.source();
+        const std::string expected = "a list of gas_pressure, inertia";
+        if (!n.IsSequence()) s.fail("loads", "expected " + expected + ", got " + describeNode(n));
+        for (std::size_t i = 0; i < n.size(); ++i) {
+            const std::string path = fmt::format("{}[{}]", s.keyPath("loads"), i);
+            const std::string v = n[i].IsScalar() ? std::string(trim(n[i].Scalar())) : std::string();
+            bool& on = v == "gas_pressure" ? l.gasPressure : l.inertia;
+            if (v != "gas_pressure" && v != "inertia")
+                ctx.fail(path, n[i], "expected gas_pressure or inertia, got " + (v.empty() ? describeNode(n[i]) : "'" + v + "'"));
+            if (on) ctx.fail(path, n[i], "'" + v + "' listed twice");
+            on = true;
+        }
+    }
+    l.gasSurface = text(s, "gas_surface", l.gasSurface, "the name of a physical surface");
+    if (s.has("gas_surface") && !l.gasPressure)
+        s.fail("gas_surface", "gas_surface is the surface of the gas_pressure load, which bodies.piston.loads does not list");
+    return l;
+}
+
 BodySpec readBody(const YamlSection& bodies, const std::string& key, const std::string& defSurface,
                   const std::vector<std::string>& defInterfaces, const CaseFileOptions& options) {
     BodySpec b;
@@ -38,7 +67,7 @@ BodySpec readBody(const YamlSection& bodies, const std::string& key, const std::
     if (!n.IsMap())
         ctx.fail(path, n,
              "expected 'rigid' or a mapping {file: ..., surface: ..., interface: ...}, got " + describeNode(n));
-    const YamlSection s(ctx, n, path, {"file", "surface", "interface"});
+    const YamlSection s(ctx, n, path, {"file", "surface", "interface", "loads", "gas_surface"});
     b.model = BodyModel::Flexible;
     const std::string file = text(s, "file", "", "the reduced-body file (HDF5, from `flexehd reduce`)", true);
     const fs::path resolved = ctx.resolve(file);
@@ -78,6 +107,7 @@ BodySpec readBody(const YamlSection& bodies, const std::string& key, const std::
         }
     }
     b.interface = b.interfaces.empty() ? std::string() : b.interfaces.front();
+    b.loads = readLoads(s, key == "piston");
     return b;
 }
 

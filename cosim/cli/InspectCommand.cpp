@@ -64,6 +64,7 @@ nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
     doc["settings"] = {{"normal_modes", s.normalModes},
                        {"cutoff_hz", s.cutoffHz},
                        {"static_correction", s.staticCorrection},
+                       {"pressure_patterns", s.pressurePatterns},
                        {"axial_order", s.axialOrder},
                        {"axial_hats", s.axialHats},
                        {"circumferential_order", s.circumferentialOrder},
@@ -75,6 +76,29 @@ nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
     doc["rigid_body"] = b.rigidBody;
     doc["mass_identity_error"] = massIdentityError(b);
     return doc;
+}
+
+std::string listOrNone(const std::vector<std::string>& names) {
+    return names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "));
+}
+
+/// The static-correction vectors the basis carries, in one line (docs/modal.md, "The basis"):
+/// e.g. "inertia relief (pin_bore), static correction skirt (axial order 4, circumferential
+/// order 6), uniform pressure crown".
+std::string loadPatternsText(const modal::ReducedBody& b) {
+    const auto& s = b.settings;
+    std::vector<std::string> parts, held;
+    for (const auto& itf : b.interfaces) held.push_back(itf.group);
+    if (!held.empty()) parts.push_back(fmt::format("inertia relief ({})", fmt::join(held, ", ")));
+    if (!s.staticCorrection.empty()) {
+        const std::string axial = s.axialHats > 0 ? fmt::format("{} axial hats", s.axialHats)
+                                                  : fmt::format("axial order {}", s.axialOrder);
+        parts.push_back(fmt::format("static correction {} ({}, circumferential order {})",
+                                    fmt::join(s.staticCorrection, ", "), axial, s.circumferentialOrder));
+    }
+    if (!s.pressurePatterns.empty())
+        parts.push_back(fmt::format("uniform pressure {}", fmt::join(s.pressurePatterns, ", ")));
+    return parts.empty() ? std::string("none") : fmt::format("{}", fmt::join(parts, ", "));
 }
 
 void printSummary(const std::string& file, const modal::ReducedBody& b) {
@@ -100,10 +124,11 @@ void printSummary(const std::string& file, const modal::ReducedBody& b) {
     const std::string axial = s.axialHats > 0 ? fmt::format("{} axial hats", s.axialHats)
                                               : fmt::format("axial order {}", s.axialOrder);
     fmt::print("settings     {} normal modes, cut-off {}, static correction {} ({}, circumferential order {}), "
-               "damping ratio {:g}\n",
+               "pressure patterns {}, damping ratio {:g}\n",
                s.normalModes, s.cutoffHz > 0.0 ? fmt::format("{:g} Hz", s.cutoffHz) : std::string("none"),
-               s.staticCorrection.empty() ? std::string("none") : fmt::format("{}", fmt::join(s.staticCorrection, ", ")),
-               axial, s.circumferentialOrder, s.dampingRatio);
+               listOrNone(s.staticCorrection), axial, s.circumferentialOrder, listOrNone(s.pressurePatterns),
+               s.dampingRatio);
+    fmt::print("load patterns  {}\n", loadPatternsText(b));
     const auto rigid = std::count(b.rigidBody.begin(), b.rigidBody.end(), 1);
     fmt::print("modes        {} ({} rigid-body), max |M_r - I| = {:.2g}\n", b.numModes(), rigid, massIdentityError(b));
     fmt::print("{:>6}  {:>16}  {:>13}\n", "mode", "frequency [Hz]", "damping ratio");

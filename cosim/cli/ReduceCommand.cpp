@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include "cosim/cli/CliSupport.hpp"
@@ -68,8 +69,12 @@ void runReduce(const ReduceArgs& a) {
     const fem::Mesh mesh = fem::readMesh(a.mesh.path, options);
     spdlog::info("mesh: {} nodes, {} {} elements, {} DOFs ({:.1f} s)", mesh.numNodes(), mesh.volume.size(),
                  fem::name(mesh.volume.type), 3 * mesh.numNodes(), meshing.seconds());
-    spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s)", specs.size(),
-                 a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "", a.settings.staticCorrection.size());
+    const auto& uniform = a.settings.pressurePatterns;
+    const std::string uniformText =
+        uniform.empty() ? "" : fmt::format(", uniform pressure on {}", fmt::join(uniform, ", "));
+    spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s){}", specs.size(),
+                 a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "",
+                 a.settings.staticCorrection.size(), uniformText);
     modal::ReductionReport rep;
     modal::ReducedBody body = modal::CraigBamptonReducer(mesh, a.material).reduce(specs, a.settings, &rep);
     if (!a.dampingBands.empty()) {
@@ -101,6 +106,7 @@ void runReduce(const ReduceArgs& a) {
                         {"inertia_relief", rep.inertiaReliefModes},
                         {"static_correction", rep.staticCorrectionModes},
                         {"dropped_dependent", rep.droppedDependent}};
+        doc["pressure_patterns"] = uniform;
         doc["rigid_body_modes"] = rigid;
         doc["frequencies_hz"] = std::vector<double>(body.frequenciesHz.data(),
                                                     body.frequenciesHz.data() + body.frequenciesHz.size());
@@ -116,9 +122,9 @@ void runReduce(const ReduceArgs& a) {
         printJson(doc);
         return;
     }
-    std::printf("%s -> %s: %d modes (%d constraint, %d normal, %d static correction), %d rigid-body\n",
+    std::printf("%s -> %s: %d modes (%d constraint, %d normal, %d static correction%s), %d rigid-body\n",
                 a.mesh.path.c_str(), a.out.c_str(), body.numModes(), rep.constraintModes, rep.normalModes,
-                rep.staticCorrectionModes, rigid);
+                rep.staticCorrectionModes, uniformText.c_str(), rigid);
     std::printf("%6s  %16s\n", "mode", "frequency [Hz]");
     for (int k = 0; k < body.numModes(); ++k)
         std::printf("%6d  %16.6g%s\n", k + 1, body.frequenciesHz(k), body.rigidBody[k] ? "  (rigid-body)" : "");
@@ -146,6 +152,9 @@ void addReduceCommand(CLI::App& app) {
         ->check(positiveNumber());
     cmd->add_option("--static-correction", a->settings.staticCorrection,
                     "Surface group with static-correction modes for pressure loads; repeatable");
+    cmd->add_option("--pressure-pattern", a->settings.pressurePatterns,
+                    "Surface group with one static-correction vector for a uniform pressure (e.g. crown for the "
+                    "cylinder's gas pressure); repeatable");
     cmd->add_option("--axial-order", a->settings.axialOrder, "Load patterns: Legendre degree along z")
         ->check(wholeNumberFromTo(0, 20));
     cmd->add_option("--axial-hats", a->settings.axialHats,

@@ -113,6 +113,9 @@ Eigen::MatrixXd CoupledNewtonScheme::coupledJacobian(const StepContext& ctx) {
     auto respond = [&](const FlexibleBody& body, modal::HeldModalDynamics* dynamics, int row, int rows) {
         Eigen::MatrixXd F(rows, k - first);
         if (P.motionColumns) F.leftCols(2) = P.modalX.middleRows(row - 2, rows);
+        // The piston's inertia load at the iterate's (ë, β̈): ∂(ë, β̈)/∂(e, β) = (a0/Δt)² I.
+        if (P.motionColumns && row == 2 && step_.pistonLoads_)
+            F.leftCols(2) += rate * rate * step_.pistonLoads_->secondaryAccelerationColumns();
         F.rightCols(m) = P.modalH.middleRows(row - 2, rows);
         if (elasticRate) F.rightCols(m) += rate * P.modalRate.middleRows(row - 2, rows);
         if (dynamics) {

@@ -6,7 +6,9 @@
 // CoupledNewtonScheme with coupling.method newton and flexible bodies, PartitionedScheme
 // otherwise; both take the motion's finite-difference columns from perturbedMotion. The bodies'
 // response to the contacts' summed modal load is the solver's: quasi-static (FlexibleBody) or,
-// with bodies.response: dynamic, the BDF2 modal dynamics (modal::HeldModalDynamics).
+// with bodies.response: dynamic, the BDF2 modal dynamics (modal::HeldModalDynamics); with
+// bodies.piston.loads the piston's modal load also carries the crown's gas pressure and the
+// inertia of its rigid motion at the iterate's accelerations (PistonBodyLoads).
 //
 // Translation units: StepSolver.cpp (the step), IterateEvaluation.cpp (one iterate).
 
@@ -19,6 +21,7 @@
 #include "cosim/engine/PistonDynamics.hpp"
 #include "cosim/ringpack/RingPackGas.hpp"
 #include "cosim/mapping/FlexibleBody.hpp"
+#include "cosim/mapping/PistonBodyLoads.hpp"
 #include "modal/HeldModalDynamics.hpp"
 
 #include <Eigen/Core>
@@ -112,6 +115,7 @@ private:
     std::unique_ptr<modal::HeldModalDynamics> pistonDynamics_, linerDynamics_;
     std::unique_ptr<CouplingScheme> scheme_;  // chosen once (ctor)
     std::unique_ptr<RingPackGas> packGas_;    // ring_gas: the lands' gas (null: none)
+    std::unique_ptr<PistonBodyLoads> pistonLoads_;  // bodies.piston.loads on the flexible piston (null: none)
     std::size_t preparedContacts_ = 0;       // contacts told the scheme's needs
     int foldedJacobians_ = 0;        // Jacobians of the current step with det(I − ∂H/∂y) < 0 (quasi-static, rigid rate)
 };

@@ -45,6 +45,8 @@ public:
     /// v_G = (ė + z_g β̇, −x_g β̇) the CG velocity relative to the primary motion, i.e.
     /// ½ (m_p + m_pin) ė² + m_p z_g ė β̇ + ½ [I_g + m_p (x_g² + z_g²)] β̇² = ½ vᵀ M(ψ = 0) v.
     double kineticEnergy(double lateralVelocity, double tiltRate) const;
+    /// The gravity the equations carry (m/s², along −z): A = Z̈ + g.
+    double gravity() const { return g_; }
     /// Net gas force (N) for the absolute cylinder pressure p (Pa).
     double gasForce(double cylinderPressure) const;
 

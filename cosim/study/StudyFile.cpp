@@ -31,7 +31,7 @@ const std::vector<std::string> kTopKeys = {"name", "base_case", "directory", "de
 const std::vector<std::string> kDesigns = {"full_factorial", "table", "latin_hypercube"};
 // `flexehd reduce` options a recipe may give (docs/sweep.md); `mesh` is the mesh file.
 const std::vector<std::string> kReduceOptions = {"mesh", "order", "size", "E", "nu", "rho", "interface", "modes",
-                                                 "cutoff", "static_correction", "axial_order", "axial_hats",
+                                                 "cutoff", "static_correction", "pressure_pattern", "axial_order", "axial_hats",
                                                  "circumferential_order", "damping", "damping_band"};
 const auto& joined = joinedKeys;
 

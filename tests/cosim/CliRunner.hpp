@@ -74,11 +74,11 @@ inline CommandResult reduceSmallPiston(const std::string& file) {
                       "--modes 8 --static-correction skirt --axial-order 2 --circumferential-order 4 --out " + file);
 }
 
-/// The example engine's piston as scripts/example.sh reduces it (20 modes + skirt correction).
+/// The example engine's piston as scripts/example.sh reduces it (20 modes, skirt and crown patterns).
 inline CommandResult reduceExamplePiston(const std::string& file) {
     return runFlexehd("reduce --mesh " + std::string(FLEXEHD_SOURCE_DIR) +
                       "/meshes/piston.geo --size 0.0065 --E 7.5e10 --nu 0.33 --rho 2700 --interface pin_bore:rbe2@0,0,0 "
-                      "--modes 20 --static-correction skirt --out " + file);
+                      "--modes 20 --static-correction skirt --pressure-pattern crown --out " + file);
 }
 
 }  // namespace flexehd::test

@@ -537,6 +537,37 @@ TEST(CaseFileErrors, MissingRequiredKeys) {
                       HasSubstr("expected an interface name or a list of them, got an empty list")));
 }
 
+TEST(CaseFile, PistonLoadsAreReadAndCheckedKeyByKey) {
+    const fs::path dir = scratchDir();
+    const std::string file = (dir / "case.yaml").string();
+    const auto withBodies = [&](const std::string& bodies) {
+        return caseWith(dir, "name: small", "name: small\nbodies: " + bodies);
+    };
+    const CaseFileOptions noFiles = noBodyFiles();
+    const EngineCase c = readCaseFile(withBodies("{piston: {file: p.h5, loads: [inertia, gas_pressure]}}"), noFiles);
+    EXPECT_TRUE(c.pistonBody.loads.gasPressure);
+    EXPECT_TRUE(c.pistonBody.loads.inertia);
+    EXPECT_EQ(c.pistonBody.loads.gasSurface, "crown");
+    const EngineCase d =
+        readCaseFile(withBodies("{piston: {file: p.h5, loads: [gas_pressure], gas_surface: top}}"), noFiles);
+    EXPECT_TRUE(d.pistonBody.loads.gasPressure);
+    EXPECT_FALSE(d.pistonBody.loads.inertia);
+    EXPECT_EQ(d.pistonBody.loads.gasSurface, "top");
+    const auto error = [&](const std::string& bodies) {
+        return caseError(dir, "name: small", "name: small\nbodies: " + bodies, kPressureCsv, noBodyFiles());
+    };
+    EXPECT_THAT(error("{piston: {file: p.h5, loads: [gravity]}}"),
+                AllOf(StartsWith(file + ": bodies.piston.loads[0]"), HasSubstr("expected gas_pressure or inertia, got 'gravity'")));
+    EXPECT_THAT(error("{piston: {file: p.h5, loads: [inertia, inertia]}}"),
+                AllOf(StartsWith(file + ": bodies.piston.loads[1]"), HasSubstr("listed twice")));
+    EXPECT_THAT(error("{piston: {file: p.h5, loads: inertia}}"),
+                AllOf(StartsWith(file + ": bodies.piston.loads"), HasSubstr("expected a list of gas_pressure, inertia")));
+    EXPECT_THAT(error("{piston: {file: p.h5, loads: [inertia], gas_surface: crown}}"),
+                AllOf(StartsWith(file + ": bodies.piston.gas_surface"), HasSubstr("does not list")));
+    EXPECT_THAT(error("{liner: {file: l.h5, loads: [inertia]}}"),
+                AllOf(StartsWith(file + ": bodies.liner.loads"), HasSubstr("loads act on the piston only")));
+}
+
 TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
     const fs::path dir = scratchDir();
     const std::string file = (dir / "case.yaml").string();

@@ -42,6 +42,7 @@ void expectSameBody(const modal::ReducedBody& a, const modal::ReducedBody& b) {
     EXPECT_EQ(a.settings.normalModes, b.settings.normalModes);
     EXPECT_EQ(a.settings.cutoffHz, b.settings.cutoffHz);
     EXPECT_EQ(a.settings.staticCorrection, b.settings.staticCorrection);
+    EXPECT_EQ(a.settings.pressurePatterns, b.settings.pressurePatterns);
     EXPECT_EQ(a.settings.axialOrder, b.settings.axialOrder);
     EXPECT_EQ(a.settings.axialHats, b.settings.axialHats);
     EXPECT_EQ(a.settings.circumferentialOrder, b.settings.circumferentialOrder);
@@ -93,6 +94,9 @@ struct RawFile {
         H5Aclose(a);
     }
     void remove(const char* object) const { EXPECT_GE(H5Ldelete(id, object, H5P_DEFAULT), 0); }
+    void removeAttribute(const char* object, const char* name) const {
+        EXPECT_GE(H5Adelete_by_name(id, object, name, H5P_DEFAULT), 0);
+    }
     void vector(const char* object, const std::vector<double>& values) const {
         const hsize_t n = values.size();
         const hid_t space = H5Screate_simple(1, &n, nullptr);
@@ -188,6 +192,27 @@ TEST_F(ReducedBodyFileTest, EmptyListsRoundTrip) {
     const std::string path = (dir_ / "empty.h5").string();
     modal::writeReducedBody(b, path);
     expectSameBody(b, modal::readReducedBody(path));
+}
+
+TEST_F(ReducedBodyFileTest, PressurePatternsRoundTrip) {
+    modal::ReducedBody b = *body_;
+    b.settings.pressurePatterns = {"xmax", "boundary"};
+    const std::string path = (dir_ / "patterns.h5").string();
+    modal::writeReducedBody(b, path);
+    const modal::ReducedBody r = modal::readReducedBody(path);
+    EXPECT_EQ(r.settings.pressurePatterns, (std::vector<std::string>{"xmax", "boundary"}));
+    expectSameBody(b, r);
+}
+
+// A file written before /settings had `pressure_patterns` reads as a body without them.
+TEST_F(ReducedBodyFileTest, FileWithoutPressurePatternsReadsAsEmpty) {
+    modal::ReducedBody b = *body_;
+    b.settings.pressurePatterns = {"xmax"};
+    modal::writeReducedBody(b, good_);
+    RawFile(good_).removeAttribute("/settings", "pressure_patterns");
+    const modal::ReducedBody r = modal::readReducedBody(good_);
+    EXPECT_TRUE(r.settings.pressurePatterns.empty());
+    EXPECT_EQ(r.settings.staticCorrection, b.settings.staticCorrection);
 }
 
 TEST_F(ReducedBodyFileTest, LayoutAsDocumented) {
