@@ -180,9 +180,11 @@ struct CouplingSpec {
     /// ≤ tolerance × piston.clearance (docs/coupling.md §1).
     double tolerance = 1e-3;
     int maxIterations = 30;    ///< passes per step, one film solve each (+ 2 for the first pass's Jacobian)
-    /// The default of maxIterations with a flexible body on the mass-conserving film, flooded or
-    /// on the liner's oil layer (its partition changes within the step; docs/coupling.md §6).
-    static constexpr int kMassConservingFlexiblePasses = 150;
+    /// The default of maxIterations with a flexible body: on the mass-conserving film its partition
+    /// changes within the step (docs/coupling.md §6), and where the skirt rides on its asperities
+    /// with almost no side force to hold it a step takes up to about 150 passes on either film
+    /// (docs/coupling.md §1, "Passes per step").
+    static constexpr int kFlexiblePasses = 150;
     /// coupling.keep_jacobian: the step's Jacobian kept from step to step while it serves (rigid
     /// bodies: the motion's while the step size is the same; flexible bodies with method Newton:
     /// the coupled one, re-formed from its parts for a new step size) and formed anew where a pass

@@ -63,8 +63,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
         c.time.tiltTolerance = TimeSpec::kStarvedTiltTolerance;
     }
     readTime(top, c.time);
-    if (c.hasFlexibleBody() && c.lubricant.cavitation == CavitationModel::MassConserving)
-        c.coupling.maxIterations = CouplingSpec::kMassConservingFlexiblePasses;  // coupling.max_iterations' default
+    if (c.hasFlexibleBody()) c.coupling.maxIterations = CouplingSpec::kFlexiblePasses;  // coupling.max_iterations' default
     const YamlSection coupling = readCoupling(top, c.coupling);
     requireSupportedMassConserving(coupling, c);
     requireOilControlRingOnPiston(lubricant, c);

@@ -257,7 +257,7 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
     EXPECT_EQ(starvedEhd.lubricant.supply.oilControlRing->bottom, starved.lubricant.supply.oilControlRing->bottom);
     EXPECT_EQ(starvedEhd.lubricant.supply.oilControlRing->top, starved.lubricant.supply.oilControlRing->top);
     EXPECT_EQ(starvedEhd.lubricant.supply.oilControlRing->thickness, starved.lubricant.supply.oilControlRing->thickness);
-    EXPECT_EQ(starvedEhd.coupling.maxIterations, CouplingSpec::kMassConservingFlexiblePasses);
+    EXPECT_EQ(starvedEhd.coupling.maxIterations, CouplingSpec::kFlexiblePasses);
     // The oil-supply pair: hd.yaml with the mass-conserving film, flooded and on a 3 µm liner layer.
     EXPECT_EQ(hd.lubricant.cavitation, cosim::CavitationModel::Reynolds);
     for (const EngineCase* v : {&flooded, &starved}) {
@@ -348,9 +348,10 @@ TEST(CaseFileExample, VariantsDifferOnlyInBodiesOutputAndThermalState) {
         }
         EXPECT_EQ(v->time.periodicityTolerance, ehd.time.periodicityTolerance);
         EXPECT_EQ(v->coupling.tolerance, ehd.coupling.tolerance);
-        if (v != &starvedEhd) {  // a flexible body on the layer: more passes (docs/coupling.md §6)
-            EXPECT_EQ(v->coupling.maxIterations, ehd.coupling.maxIterations);
-        }
+        // Every example takes the passes' default: more with a flexible body (docs/coupling.md §1,
+        // "Passes per step").
+        EXPECT_EQ(v->coupling.maxIterations,
+                  v->hasFlexibleBody() ? CouplingSpec::kFlexiblePasses : CouplingSpec{}.maxIterations);
         EXPECT_EQ(v->coupling.acceleration, ehd.coupling.acceleration);
         if (v != &dynamic) {
             EXPECT_EQ(v->coupling.response, ehd.coupling.response);
@@ -652,10 +653,10 @@ TEST(CaseFileErrors, OutOfRangeAndInconsistentValues) {
                 AllOf(StartsWith(file + ": engine.pin_tdc_depth"), HasSubstr("above the deck")));
 }
 
-// A flexible body on the mass-conserving film, flooded or on the liner's oil layer, runs (the
-// coupled Newton method, more passes per step by default: docs/coupling.md §6); a rigid one, or
-// the Reynolds film, keeps the general default, and the key given wins.
-TEST(CaseFile, FlexibleBodiesOnTheMassConservingFilmGetMorePassesByDefault) {
+// A flexible body, on the mass-conserving film (flooded or on the liner's oil layer) or the
+// Reynolds film, gets more passes per step by default (docs/coupling.md §1, "Passes per step",
+// and §6); a rigid one keeps the general default, and the key given wins.
+TEST(CaseFile, FlexibleBodiesGetMorePassesByDefault) {
     const fs::path dir = scratchDir();
     const std::string starved =
         "name: small\nlubricant: {cavitation: mass_conserving, supply: {model: liner_layer, thickness: 3e-6}}\n";
@@ -663,13 +664,14 @@ TEST(CaseFile, FlexibleBodiesOnTheMassConservingFilmGetMorePassesByDefault) {
     auto passes = [&](const std::string& text) {
         return readCaseFile(caseWith(dir, "name: small", text), noBodyFiles()).coupling.maxIterations;
     };
-    EXPECT_EQ(passes(starved + flexible), CouplingSpec::kMassConservingFlexiblePasses);
+    EXPECT_EQ(passes(starved + flexible), CouplingSpec::kFlexiblePasses);
     EXPECT_EQ(passes(starved + flexible + "coupling: {max_iterations: 40}"), 40);
     EXPECT_EQ(passes(starved), CouplingSpec{}.maxIterations);
     EXPECT_EQ(passes("name: small\nlubricant: {cavitation: mass_conserving}\n" + flexible),
-              CouplingSpec::kMassConservingFlexiblePasses);
-    EXPECT_EQ(passes("name: small\n" + flexible), CouplingSpec{}.maxIterations);
-    EXPECT_GT(CouplingSpec::kMassConservingFlexiblePasses, CouplingSpec{}.maxIterations);
+              CouplingSpec::kFlexiblePasses);
+    EXPECT_EQ(passes("name: small\n" + flexible), CouplingSpec::kFlexiblePasses);
+    EXPECT_EQ(passes("name: small\n"), CouplingSpec{}.maxIterations);
+    EXPECT_GT(CouplingSpec::kFlexiblePasses, CouplingSpec{}.maxIterations);
 }
 
 // On the liner's oil layer the step error tolerances default to a tenth of the general ones (a

@@ -210,7 +210,7 @@ void checkFlexibleSteps(EngineCase c, const std::string& tag) {
     c.grid = flexible.grid;
     c.pistonBody = flexible.pistonBody;
     flexehd::test::checkableSteps(c);
-    c.coupling.maxIterations = CouplingSpec::kMassConservingFlexiblePasses;  // as the case reader's default
+    c.coupling.maxIterations = CouplingSpec::kFlexiblePasses;  // as the case reader's default
     PistonSimulation sim(c);
     ASSERT_EQ(sim.contact<SkirtContact>().clearance(), nullptr);  // h_rigid is the skirt film's alone
     const flexehd::test::RecordedRun run = flexehd::test::recordRun(sim, 400.0);
@@ -326,7 +326,7 @@ TEST(MassConservingSkirt, FlexibilityOnAStarvedLayerSpreadsTheLoad) {
     rigid.grid = small.grid;
     EngineCase flexible = rigid;
     flexible.pistonBody = small.pistonBody;
-    flexible.coupling.maxIterations = CouplingSpec::kMassConservingFlexiblePasses;  // as the case reader's default
+    flexible.coupling.maxIterations = CouplingSpec::kFlexiblePasses;  // as the case reader's default
     struct Figures {
         double minFilm = 1.0, maxPressure = 0.0, wetted = 0.0, power = 0.0, swing = 0.0;
     };
