@@ -37,11 +37,8 @@ public:
              Eigen::Ref<Eigen::VectorXd> f) const;
     /// ∂g/∂(ë, β̈) (m × 2): zero without inertia.
     const Eigen::MatrixXd& secondaryAccelerationColumns() const { return inertiaSecondary_; }
-    /// Modal load of a unit gauge gas pressure (m), zero without gas.
-    const Eigen::VectorXd& unitGasLoad() const { return gasUnit_; }
     /// Worst relative residual |Φ c − R| / |R| of the rigid fields' fit (0 without inertia).
     double rigidFitResidual() const { return fitResidual_; }
-    bool active() const { return spec_.gasPressure || spec_.inertia; }
 
 private:
     PistonLoadSpec spec_;
