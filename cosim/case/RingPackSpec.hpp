@@ -67,6 +67,10 @@ struct RingGasSpec {
     /// K, per land (between ring i and ring i + 1, top first), the gas at the land's metal
     /// temperature; empty: kLandTemperature each (an assumed value, not a measured one)
     std::vector<double> landTemperatures;
+    /// Each ring's axial motion in its groove (RingAxialMotion) and its groove as a volume of its
+    /// own, open to the land above or below through the flank clearance the ring leaves; false:
+    /// every ring rests on its lower flank, its groove part of the land above.
+    bool ringLift = false;
     static constexpr double kLandTemperature = 450.0;
 };
 

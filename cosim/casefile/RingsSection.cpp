@@ -225,7 +225,7 @@ void readRingGas(const YamlSection& top, EngineCase& c) {
     c.ringGas = RingGasSpec{};
     if (!top.has("ring_gas")) return;
     const YamlSection g(top.source(), top.get("ring_gas"), "ring_gas",
-                        {"model", "discharge_coefficient", "land_clearance", "land_temperatures"});
+                        {"model", "discharge_coefficient", "land_clearance", "land_temperatures", "ring_lift"});
     RingGasSpec& r = c.ringGas;
     r.model = choice(g, "model", {"none", "lands"}, 0) == 1 ? RingGasModel::Lands : RingGasModel::None;
     r.dischargeCoefficient =
@@ -234,6 +234,7 @@ void readRingGas(const YamlSection& top, EngineCase& c) {
         g.fail("discharge_coefficient", fmt::format("expected a discharge coefficient in (0, 1], got {:g}",
                                                     r.dischargeCoefficient));
     r.landClearance = number(g, "land_clearance", kLength, Sign::Positive, r.landClearance);
+    r.ringLift = boolean(g, "ring_lift", r.ringLift);
     if (g.has("land_temperatures")) {
         const YAML::Node list = g.get("land_temperatures");
         const std::string expected = fmt::format("a list of {} temperatures in K (one per land between the rings, "

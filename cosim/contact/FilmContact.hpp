@@ -33,10 +33,13 @@ namespace flexehd::cosim {
 
 /// The gas round one ring of the pack at a step's end (docs/ring-pack.md, "The pack's gas in a
 /// run"): pressures (Pa, gauge: relative to the crankcase) above its face, behind it and below
-/// it, and the mass flow through its end gap (kg/s, towards the crankcase > 0).
+/// it, the mass flow past it (kg/s, towards the crankcase > 0: through its end gap and, off its
+/// lower flank, its groove's lower flank clearance) and, with ring_gas.ring_lift, its axial
+/// position in the groove (m above the lower flank).
 struct RingGas {
     double above = 0.0, behind = 0.0, below = 0.0;
     double flow = 0.0;
+    double position = 0.0;
 };
 
 /// What a contact sees of the step: its BDF2 coefficients, the piston's axial velocity and where
@@ -77,6 +80,8 @@ struct ContactState {
     /// m, smallest unfloored film thickness over the film's nodes (< 0: the surfaces overlap;
     /// +∞ for a contact that does not say)
     double minGap = std::numeric_limits<double>::infinity();
+    /// N, the contact's axial force on the piston at the step (+z towards the head)
+    double axialForce = 0.0;
 };
 
 /// A contact's film at one iterate (x, y) of a step.
@@ -202,6 +207,10 @@ public:
     /// What the coupling scheme needs of the contact (CouplingNeeds.hpp), told once before the
     /// contact's first step; nothing to prepare by default.
     virtual void prepare(const CouplingNeeds& /*needs*/) {}
+    /// A ring of the pack's gas model (docs/ring-pack.md, "The pack's gas in a run"): its place in
+    /// the pack, top first, whose ContactStep::ringGas entry it reads and whose axial balance takes
+    /// its friction (ContactState::axialForce); −1 (the default) for any other contact.
+    virtual int packRing() const { return -1; }
 };
 
 }  // namespace flexehd::cosim

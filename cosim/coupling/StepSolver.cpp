@@ -65,7 +65,8 @@ StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, d
     const double cylinderPressure = pressure_(crankAngle720(ctx.crankDeg));
     ctx.gas = dyn_.gasForce(cylinderPressure);
     st.cylinderPressure = cylinderPressure - case_.engine.crankcasePressure;
-    if (packGas_) st.ringGas = &packGas_->trial(st.dt, cylinderPressure);
+    if (packGas_) st.ringGas = &packGas_->trial(st.dt, cylinderPressure, ctx.crank.acceleration + dyn_.gravity(),
+                                                ringFriction(s));
     st.linerOffset = linerOffset_(ctx.crankDeg);
     st.oil = s.oil.layer ? &s.oil : nullptr;
     ctx.now = &s;
@@ -79,6 +80,16 @@ StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, d
         if (linerDynamics_) linerDynamics_->setStep(st.a0, st.dt);
     }
     return ctx;
+}
+
+std::vector<double> StepSolver::ringFriction(const StepState& s) const {
+    std::vector<double> friction(case_.rings.size(), 0.0);
+    for (std::size_t c = 0; c < contacts_.size() && c < s.films.size(); ++c) {
+        const int ring = contacts_[c]->packRing();
+        if (ring >= 0 && static_cast<std::size_t>(ring) < friction.size())
+            friction[static_cast<std::size_t>(ring)] = s.films[c].axialForce;
+    }
+    return friction;
 }
 
 StepTolerances StepSolver::stepTolerances() const {

@@ -101,6 +101,8 @@ private:
                          int& solves);
     void acceptStep(const StepContext& ctx, const StepState& s, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
                     const StepEvaluation& ev, StepState& out) const;
+    /// N per ring of the pack's gas model (top first): the liner film's axial force on it at s.
+    std::vector<double> ringFriction(const StepState& s) const;
 
     const EngineCase& case_;
     const CrankKinematics& kin_;

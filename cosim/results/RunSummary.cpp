@@ -165,10 +165,12 @@ Json::json_pointer pointer(const std::string& dotted) {
 }
 
 // A figure of column k of the records' contact values over the cycle (at least two records).
-double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleStatistic statistic, double volume) {
+Json columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleStatistic statistic, double volume) {
     double least = cycle.front().contactValues[k], largest = least, integral = 0.0;
+    Json departures = Json::array();
     for (std::size_t i = 1; i < cycle.size(); ++i) {
         const double v = cycle[i].contactValues[k];
+        if (cycle[i - 1].contactValues[k] <= 0.0 && v > 0.0) departures.push_back(cycle[i].crankDeg);
         least = std::min(least, v);
         largest = std::max(largest, v);
         integral += 0.5 * (v + cycle[i - 1].contactValues[k]) * (cycle[i].time - cycle[i - 1].time);
@@ -179,6 +181,8 @@ double columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleSt
         case CycleStatistic::Maximum: return largest;
         case CycleStatistic::Mean: return duration > 0.0 ? integral / duration : cycle.front().contactValues[k];
         case CycleStatistic::Fmep: return integral / volume;
+        case CycleStatistic::Departures: return static_cast<double>(departures.size());
+        case CycleStatistic::DepartureAngles: return departures;
     }
     return 0.0;
 }
@@ -195,11 +199,11 @@ void addContactFigures(const RunSummaryInput& in, Json& d) {
         for (const ColumnFigure& f : columns[k].figures) {
             if (d.contains(pointer(f.key)))
                 throw std::logic_error("summary.json: the contact figure '" + f.key + "' repeats a key");
-            const double value = columnFigure(in.cycle, k, f.statistic, volume);
+            const Json value = columnFigure(in.cycle, k, f.statistic, volume);
             d[pointer(f.key)] = value;
             if (f.statistic == CycleStatistic::Fmep) {
                 fmep = true;
-                total += value;
+                total += value.get<double>();
             }
         }
     if (fmep) d["fmep_total_pa"] = total;

@@ -1,29 +1,74 @@
 #include "cosim/ringpack/InterRingGas.hpp"
 
+#include <Eigen/LU>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace flexehd::cosim {
 
+namespace {
+
+std::vector<GasOrifice> chain(const std::vector<double>& areas) {
+    std::vector<GasOrifice> o;
+    const int n = static_cast<int>(areas.size()) - 1;  // volumes
+    for (int i = 0; i <= n; ++i)
+        o.push_back({i == 0 ? GasOrifice::kCylinder : i - 1, i == n ? GasOrifice::kCrankcase : i,
+                     areas[static_cast<std::size_t>(i)]});
+    return o;
+}
+
+void checkArea(double a) {
+    if (!(a >= 0.0) || !std::isfinite(a)) throw std::invalid_argument("InterRingGas: orifice areas must be >= 0");
+}
+
+}  // namespace
+
 InterRingGas::InterRingGas(GasProperties gas, std::vector<double> volumes, std::vector<double> temperatures,
                            std::vector<double> orifices, double initialPressure)
-    : gas_(gas), volume_(std::move(volumes)), temperature_(std::move(temperatures)), cda_(std::move(orifices)) {
+    : gas_(gas), volume_(std::move(volumes)), temperature_(std::move(temperatures)) {
     const std::size_t n = volume_.size();
-    if (n == 0 || temperature_.size() != n || cda_.size() != n + 1)
+    if (n == 0 || temperature_.size() != n || orifices.size() != n + 1)
         throw std::invalid_argument("InterRingGas: one temperature per volume and one orifice more than the volumes "
                                     "expected (" + std::to_string(n) + " volumes, " +
                                     std::to_string(temperature_.size()) + " temperatures, " +
-                                    std::to_string(cda_.size()) + " orifices)");
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(volume_[i] > 0.0) || !(temperature_[i] > 0.0))
+                                    std::to_string(orifices.size()) + " orifices)");
+    *this = InterRingGas(gas, volume_, temperature_, chain(orifices), initialPressure);
+}
+
+InterRingGas::InterRingGas(GasProperties gas, std::vector<double> volumes, std::vector<double> temperatures,
+                           std::vector<GasOrifice> orifices, double initialPressure)
+    : gas_(gas), volume_(std::move(volumes)), temperature_(std::move(temperatures)), orifice_(std::move(orifices)) {
+    const int n = static_cast<int>(volume_.size());
+    if (n == 0 || temperature_.size() != volume_.size())
+        throw std::invalid_argument("InterRingGas: one temperature per volume expected (" + std::to_string(n) +
+                                    " volumes, " + std::to_string(temperature_.size()) + " temperatures)");
+    for (int i = 0; i < n; ++i)
+        if (!(volume_[static_cast<std::size_t>(i)] > 0.0) || !(temperature_[static_cast<std::size_t>(i)] > 0.0))
             throw std::invalid_argument("InterRingGas: volume " + std::to_string(i) + " needs a positive size and temperature");
-    for (double a : cda_)
-        if (!(a >= 0.0) || !std::isfinite(a)) throw std::invalid_argument("InterRingGas: orifice areas must be >= 0");
+    std::vector<bool> reached(static_cast<std::size_t>(n), false);
+    for (const GasOrifice& o : orifice_) {
+        checkArea(o.area);
+        for (int end : {o.from, o.to}) {
+            if (end >= n || (end < 0 && end != GasOrifice::kCylinder && end != GasOrifice::kCrankcase))
+                throw std::invalid_argument("InterRingGas: an orifice ends at no volume (" + std::to_string(end) + ")");
+            if (end >= 0) reached[static_cast<std::size_t>(end)] = true;
+        }
+        if (o.from == o.to) throw std::invalid_argument("InterRingGas: an orifice joins a volume to itself");
+    }
+    for (int i = 0; i < n; ++i)
+        if (!reached[static_cast<std::size_t>(i)])
+            throw std::invalid_argument("InterRingGas: volume " + std::to_string(i) + " has no orifice");
     if (!(initialPressure > 0.0)) throw std::invalid_argument("InterRingGas: the initial pressure must be positive");
-    p_ = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(n), initialPressure);
-    flow_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n) + 1);
+    p_ = Eigen::VectorXd::Constant(n, initialPressure);
+    flow_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(orifice_.size()));
     cylinder_ = crankcase_ = initialPressure;
+}
+
+void InterRingGas::setOrificeArea(int i, double area) {
+    checkArea(area);
+    orifice_.at(static_cast<std::size_t>(i)).area = area;
 }
 
 double InterRingGas::litresPerMinute(double massFlow, const GasProperties& gas) {
@@ -38,17 +83,32 @@ double InterRingGas::mass() const {
     return m;
 }
 
-void InterRingGas::flows(const Eigen::VectorXd& p, Eigen::VectorXd& f, Eigen::VectorXd& dUp,
-                         Eigen::VectorXd& dDown) const {
-    const int n = static_cast<int>(volume_.size());
-    f.resize(n + 1);
-    dUp.resize(n + 1);
-    dDown.resize(n + 1);
-    for (int i = 0; i <= n; ++i) {
-        const double pu = i == 0 ? cylinder_ : p[i - 1], pd = i == n ? crankcase_ : p[i];
-        const double tu = temperature_[static_cast<std::size_t>(i == 0 ? 0 : i - 1)];
-        const double td = temperature_[static_cast<std::size_t>(i == n ? n - 1 : i)];
-        f[i] = orificeFlow(gas_, cda_[static_cast<std::size_t>(i)], pu, pd, tu, td, &dUp[i], &dDown[i]);
+double InterRingGas::blowBy() const {
+    double q = 0.0;
+    for (std::size_t k = 0; k < orifice_.size(); ++k) {
+        if (orifice_[k].to == GasOrifice::kCrankcase) q += flow_[static_cast<Eigen::Index>(k)];
+        if (orifice_[k].from == GasOrifice::kCrankcase) q -= flow_[static_cast<Eigen::Index>(k)];
+    }
+    return q;
+}
+
+double InterRingGas::endPressure(int end, const Eigen::VectorXd& p) const {
+    return end == GasOrifice::kCylinder ? cylinder_ : end == GasOrifice::kCrankcase ? crankcase_ : p[end];
+}
+
+void InterRingGas::flows(const Eigen::VectorXd& p, Eigen::VectorXd& f, Eigen::VectorXd& dFrom,
+                         Eigen::VectorXd& dTo) const {
+    const Eigen::Index m = static_cast<Eigen::Index>(orifice_.size());
+    f.resize(m);
+    dFrom.resize(m);
+    dTo.resize(m);
+    for (Eigen::Index k = 0; k < m; ++k) {
+        const GasOrifice& o = orifice_[static_cast<std::size_t>(k)];
+        // A boundary's gas enters at the temperature of the volume on the other side.
+        const int inner = o.from >= 0 ? o.from : o.to >= 0 ? o.to : 0;
+        const double tFrom = temperature_[static_cast<std::size_t>(o.from >= 0 ? o.from : inner)];
+        const double tTo = temperature_[static_cast<std::size_t>(o.to >= 0 ? o.to : inner)];
+        f[k] = orificeFlow(gas_, o.area, endPressure(o.from, p), endPressure(o.to, p), tFrom, tTo, &dFrom[k], &dTo[k]);
     }
 }
 
@@ -57,39 +117,57 @@ void InterRingGas::advance(double dt, double cylinderPressure, double crankcaseP
         throw std::invalid_argument("InterRingGas::advance: the step and the pressures must be positive");
     cylinder_ = cylinderPressure;
     crankcase_ = crankcasePressure;
-    const int n = static_cast<int>(volume_.size());
+    const Eigen::Index n = p_.size();
     const Eigen::VectorXd old = p_;
-    Eigen::VectorXd p = p_, f, dUp, dDown, c(n), r(n), sub(n), diag(n), sup(n);
-    for (int i = 0; i < n; ++i) c[i] = volume_[static_cast<std::size_t>(i)] / (gas_.gasConstant * temperature_[static_cast<std::size_t>(i)] * dt);
+    Eigen::VectorXd p = p_, f, dFrom, dTo, c(n), r(n);
+    Eigen::MatrixXd J(n, n);
+    for (Eigen::Index i = 0; i < n; ++i)
+        c[i] = volume_[static_cast<std::size_t>(i)] / (gas_.gasConstant * temperature_[static_cast<std::size_t>(i)] * dt);
+    // The residual r_i = c_i (p_i − p_i,n) − Σ in + Σ out and, when asked, its Jacobian.
+    auto residual = [&](const Eigen::VectorXd& p, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+        flows(p, f, dFrom, dTo);
+        r = c.cwiseProduct(p - old);
+        if (J) *J = c.asDiagonal();
+        for (std::size_t k = 0; k < orifice_.size(); ++k) {
+            const GasOrifice& o = orifice_[k];
+            const Eigen::Index e = static_cast<Eigen::Index>(k);
+            if (o.from >= 0) r[o.from] += f[e];
+            if (o.to >= 0) r[o.to] -= f[e];
+            if (!J) continue;
+            if (o.from >= 0) {
+                (*J)(o.from, o.from) += dFrom[e];
+                if (o.to >= 0) (*J)(o.from, o.to) += dTo[e];
+            }
+            if (o.to >= 0) {
+                (*J)(o.to, o.to) -= dTo[e];
+                if (o.from >= 0) (*J)(o.to, o.from) -= dFrom[e];
+            }
+        }
+    };
+    Eigen::VectorXd trial(n), rTrial(n);
+    residual(p, r, &J);
     for (int it = 0; it < 100; ++it) {
-        flows(p, f, dUp, dDown);
-        // r_i = c_i (p_i − p_i,n) − (ṁ_i − ṁ_{i+1}); ṁ_i depends on p_{i−1} (up) and p_i (down).
-        for (int i = 0; i < n; ++i) {
-            r[i] = c[i] * (p[i] - old[i]) - (f[i] - f[i + 1]);
-            diag[i] = c[i] - dDown[i] + dUp[i + 1];
-            sub[i] = i > 0 ? -dUp[i] : 0.0;
-            sup[i] = i + 1 < n ? dDown[i + 1] : 0.0;
-        }
-        // Thomas algorithm on the tridiagonal Jacobian.
-        Eigen::VectorXd cp(n), dp(n);
-        for (int i = 0; i < n; ++i) {
-            const double m = diag[i] - (i > 0 ? sub[i] * cp[i - 1] : 0.0);
-            cp[i] = sup[i] / m;
-            dp[i] = (-r[i] - (i > 0 ? sub[i] * dp[i - 1] : 0.0)) / m;
-        }
-        for (int i = n - 2; i >= 0; --i) dp[i] -= cp[i] * dp[i + 1];
-        // Damped: the pressures stay positive.
+        const Eigen::VectorXd dp = J.partialPivLu().solve(-r);
+        // Damped: the pressures stay positive, and the residual falls (a flow's square-root law
+        // near equal pressures makes plain Newton steps cycle about the root).
         double scale = 1.0;
-        for (int i = 0; i < n; ++i)
+        for (Eigen::Index i = 0; i < n; ++i)
             if (p[i] + dp[i] <= 0.0) scale = std::min(scale, 0.5 * p[i] / -dp[i]);
-        p += scale * dp;
-        if (dp.cwiseAbs().maxCoeff() <= 1e-12 * p.maxCoeff()) {
+        const double merit = r.norm();
+        for (int half = 0; half < 30; ++half, scale *= 0.5) {
+            trial = p + scale * dp;
+            residual(trial, rTrial, nullptr);
+            if (rTrial.norm() <= (1.0 - 1e-4 * scale) * merit) break;
+        }
+        p = trial;
+        if ((scale * dp).cwiseAbs().maxCoeff() <= 1e-12 * p.maxCoeff() || rTrial.norm() == 0.0) {
             p_ = p;
-            flows(p_, flow_, dUp, dDown);
+            flows(p_, flow_, dFrom, dTo);
             return;
         }
+        residual(p, r, &J);
     }
-    throw std::runtime_error("InterRingGas: the land pressures did not converge in 100 Newton iterations (step " +
+    throw std::runtime_error("InterRingGas: the pack's gas pressures did not converge in 100 Newton iterations (step " +
                              std::to_string(dt) + " s, cylinder " + std::to_string(cylinderPressure) + " Pa)");
 }
 

@@ -85,6 +85,7 @@ RingContact::RingContact(const EngineCase& c, const RingSpec& ring, bool top, in
             if (c.rings[i].name == ring.name) {
                 gasIndex_ = static_cast<int>(i);
                 lastInPack_ = i + 1 == c.rings.size();
+                lift_ = c.ringGas.ringLift;
             }
     crankcasePressure_ = c.engine.crankcasePressure;
     if (!liner) return;
@@ -274,6 +275,7 @@ ContactState RingContact::accepted(const ContactStep& step, const ContactState& 
     s.p = it.p;
     s.linerOffset = step.linerOffset;
     s.minGap = it.minGap;
+    s.axialForce = it.action.fz;
     s.fraction = it.fraction;
     s.oilBalance = afterStep(now.oilBalance, it, step.dt);
     return s;
@@ -287,7 +289,8 @@ void RingContact::exchangeOil(const ContactState& now, const ContactState& next,
 const std::vector<std::string>& RingContact::figureNames() {
     static const std::vector<std::string> names{"min_film_m", "friction_power_mean_w", "fmep_pa",
                                                 "boundary_friction_power_mean_w", "gas_below_max_pa",
-                                                "gas_flow_mean_kg_per_s", "gas_flow_mean_l_per_min"};
+                                                "gas_flow_mean_kg_per_s", "gas_flow_mean_l_per_min",
+                                                "lifts_per_cycle", "gas_behind_max_pa"};
     return names;
 }
 
@@ -321,6 +324,11 @@ std::vector<ContactColumn> RingContact::columns() const {
         if (lastInPack_)  // the gas through the last ring's gap is the blow-by
             for (std::size_t k = 0; k < 2; ++k)
                 all[all.size() - 2 + k].figures.push_back({blowByFigures()[k], CycleStatistic::Mean});
+        if (lift_) {
+            all.push_back({column + "axial_position_m",
+                           {{figure + f[7], CycleStatistic::Departures}, {figure + "lift_deg", CycleStatistic::DepartureAngles}}});
+            all.push_back({column + "gas_behind_pa", {{figure + f[8], CycleStatistic::Maximum}}});
+        }
     }
     return all;
 }
@@ -335,6 +343,10 @@ void RingContact::columnValues(const ContactIterate& it, std::vector<double>& va
         values.push_back(gas_.below + crankcasePressure_);
         values.push_back(gas_.flow);
         values.push_back(InterRingGas::litresPerMinute(gas_.flow, GasProperties{}));
+        if (lift_) {
+            values.push_back(gas_.position);
+            values.push_back(gas_.behind + crankcasePressure_);
+        }
     }
 }
 

@@ -69,7 +69,9 @@ public:
     /// ring_<name>_min_film_m, _friction_force_n, _friction_power_w (the power the ring's friction
     /// takes from the piston, −F_z v_p), _boundary_friction_power_w; summary.json
     /// rings.<name>.min_film_m, the powers' cycle means and the ring's fmep_pa; on the liner's
-    /// oil layer also _oil_left_m, the layer its trailing edge leaves (outflow / |U|).
+    /// oil layer also _oil_left_m, the layer its trailing edge leaves (outflow / |U|); with
+    /// ring_gas its gas columns and, with ring lift, _axial_position_m and _gas_behind_pa (its
+    /// lifts per cycle and their crank angles in summary.json).
     std::vector<ContactColumn> columns() const override;
     void columnValues(const ContactIterate& it, std::vector<double>& values) const override;
 
@@ -81,6 +83,7 @@ public:
     /// The load grid (piston-frame z rows, θ columns round the bore; null on a rigid liner).
     const lube::FilmGrid* loadGrid() const { return loadGrid_.get(); }
 
+    int packRing() const override { return gasIndex_; }
     bool carriesOil() const override { return oil_.has_value(); }
     std::optional<LinerFootprint> linerFootprint() const override;
     LinerCover linerCover(double linerOffset) const override { return oil_ ? oil_->cover(linerOffset) : LinerCover{}; }
@@ -119,6 +122,7 @@ private:
     std::unique_ptr<FlexibleSurface> linerSurface_;
     int gasIndex_ = -1;               // its place in the pack with ring_gas (-1: no gas model)
     bool lastInPack_ = false;         // with ring_gas: the last ring (its gas flow is the blow-by)
+    bool lift_ = false;               // with ring_gas.ring_lift: the ring moves in its groove
     double crankcasePressure_ = 0.0;  // Pa, absolute
     RingGas gas_;                     // round the ring at the last evaluated step
     struct Cached {

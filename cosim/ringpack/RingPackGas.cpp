@@ -1,5 +1,5 @@
-// RingPackGas: the pack's lands and end gaps as InterRingGas's chain (docs/ring-pack.md, "The
-// pack's gas in a run").
+// RingPackGas: the pack's lands, grooves and end gaps as InterRingGas's network (docs/ring-pack.md,
+// "The pack's gas in a run").
 #include "cosim/ringpack/RingPackGas.hpp"
 
 #include <fmt/format.h>
@@ -11,26 +11,36 @@ namespace flexehd::cosim {
 
 namespace {
 
-// Land i: the annulus of the land's height between ring i's groove and ring i + 1's, and ring
-// i + 1's groove space above it (its side clearance) and behind it (its back clearance).
-double landVolume(const EngineCase& c, std::size_t i) {
+constexpr double kPi = std::numbers::pi;
+
+// Ring r's groove space behind it (its back clearance over the groove's width) and beside it (its
+// side clearance over its radial width).
+double grooveVolume(const EngineCase& c, const RingSpec& r) {
+    const double bore = c.engine.bore;
+    const double width = r.height + r.groove.sideClearance;
+    const double backDiameter = bore - 2.0 * r.radialWidth - r.groove.backClearance;
+    const double back = kPi * backDiameter * width * r.groove.backClearance;
+    const double side = kPi * (bore - r.radialWidth) * r.radialWidth * r.groove.sideClearance;
+    return back + side;
+}
+
+// Land i: the annulus of the land's height between ring i's groove and ring i + 1's.
+double landAnnulus(const EngineCase& c, std::size_t i) {
     const RingSpec &upper = c.rings[i], &lower = c.rings[i + 1];
-    const double bore = c.engine.bore, pi = std::numbers::pi;
     const double height = upper.groove.lowerFlank - lower.grooveTop();
     if (!(height > 0.0))
         throw std::invalid_argument(fmt::format("ring_gas: no land between rings '{}' and '{}' (their grooves meet)",
                                                 upper.name, lower.name));
-    const double land = pi * bore * height * c.ringGas.landClearance;
-    const double width = lower.height + lower.groove.sideClearance;
-    const double backDiameter = bore - 2.0 * lower.radialWidth - lower.groove.backClearance;
-    const double back = pi * backDiameter * width * lower.groove.backClearance;
-    const double side = pi * (bore - lower.radialWidth) * lower.radialWidth * lower.groove.sideClearance;
-    return land + back + side;
+    return kPi * c.engine.bore * height * c.ringGas.landClearance;
 }
 
 }  // namespace
 
-RingPackGas::RingPackGas(const EngineCase& c) : crankcase_(c.engine.crankcasePressure) {
+RingPackGas::RingPackGas(const EngineCase& c)
+    : crankcase_(c.engine.crankcasePressure),
+      circumference_(kPi * c.engine.bore),
+      dischargeCoefficient_(c.ringGas.dischargeCoefficient),
+      lift_(c.ringGas.ringLift) {
     const RingGasSpec& g = c.ringGas;
     const std::size_t n = c.rings.size();
     if (n == 0) throw std::invalid_argument("ring_gas: needs a ring pack (rings)");
@@ -38,45 +48,124 @@ RingPackGas::RingPackGas(const EngineCase& c) : crankcase_(c.engine.crankcasePre
         throw std::invalid_argument(fmt::format("ring_gas.land_temperatures: expected one temperature per land "
                                                 "between the rings ({}), got {}",
                                                 n - 1, g.landTemperatures.size()));
-    for (std::size_t i = 0; i < n; ++i) gaps_.push_back(g.dischargeCoefficient * c.rings[i].closedGap * g.landClearance);
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-        volumes_.push_back(landVolume(c, i));
-        temperatures_.push_back(g.landTemperatures.empty() ? RingGasSpec::kLandTemperature : g.landTemperatures[i]);
+    auto landTemperature = [&](std::size_t i) {
+        return g.landTemperatures.empty() ? RingGasSpec::kLandTemperature : g.landTemperatures[i];
+    };
+    std::vector<GasOrifice> orifices;
+    for (std::size_t i = 0; i < n; ++i) {
+        const RingSpec& r = c.rings[i];
+        gaps_.push_back(g.dischargeCoefficient * r.closedGap * g.landClearance);
+        rings_.push_back({kPi * (c.engine.bore - r.radialWidth) * r.radialWidth, kPi * (c.engine.bore - r.radialWidth),
+                          r.mass, r.groove.sideClearance});
     }
-    if (!volumes_.empty()) accepted_.emplace(GasProperties{}, volumes_, temperatures_, gaps_, crankcase_);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        // Without lift ring i + 1's groove is part of the land above it.
+        volumes_.push_back(landAnnulus(c, i) + (lift_ ? 0.0 : grooveVolume(c, c.rings[i + 1])));
+        temperatures_.push_back(landTemperature(i));
+    }
+    std::vector<double> all = volumes_, temperatures = temperatures_;
+    if (lift_)
+        for (std::size_t i = 0; i < n; ++i) {
+            // Each groove at the metal temperature of the land below it (the last: of the land above).
+            grooves_.push_back(grooveVolume(c, c.rings[i]));
+            all.push_back(grooves_.back());
+            temperatures.push_back(n == 1 ? RingGasSpec::kLandTemperature : landTemperature(std::min(i, n - 2)));
+            motion_.emplace_back(c.rings[i].mass / circumference_, c.rings[i].groove.sideClearance);
+        }
+    // Orifices: each ring's end gap (index i), then with lift its upper and lower flank clearances
+    // (n + 2i, n + 2i + 1), closed while the ring rests on its lower flank.
+    for (std::size_t i = 0; i < n; ++i) orifices.push_back({above(i), below(i), gaps_[i]});
+    if (lift_)
+        for (std::size_t i = 0; i < n; ++i) {
+            orifices.push_back({above(i), behind(i), dischargeCoefficient_ * rings_[i].flankLength * rings_[i].sideClearance});
+            orifices.push_back({behind(i), below(i), 0.0});
+        }
+    if (!all.empty()) accepted_.emplace(GasProperties{}, all, temperatures, orifices, crankcase_);
     around_.resize(n);
 }
 
-const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressure) {
+int RingPackGas::above(std::size_t i) const { return i == 0 ? GasOrifice::kCylinder : static_cast<int>(i) - 1; }
+
+int RingPackGas::below(std::size_t i) const {
+    return i + 1 == rings_.size() ? GasOrifice::kCrankcase : static_cast<int>(i);
+}
+
+int RingPackGas::behind(std::size_t i) const {
+    return lift_ ? static_cast<int>(volumes_.size() + i) : above(i);
+}
+
+double RingPackGas::pressure(int node, const InterRingGas* gas, double cylinder) const {
+    if (node == GasOrifice::kCylinder) return cylinder;
+    if (node == GasOrifice::kCrankcase) return crankcase_;
+    return gas->pressures()[node];
+}
+
+void RingPackGas::moveRings(double dt, double cylinderPressure, double acceleration,
+                            const std::vector<double>& friction) {
+    // The net upward force on each ring (N), per unit of the bore's circumference: the gas on its
+    // side faces — on each face the mean of the pressures at its outer and inner edges (the space
+    // beside the face and the groove behind the ring: linear across a seated flank, the groove's
+    // own across an open one, where the groove takes the pressure of the side it opens to), which
+    // nets to the faces' area times half the pressure difference below − above — its inertia
+    // −m A and the liner film's friction at the last accepted step.
+    trialMotion_ = motion_;
+    const std::size_t n = rings_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double pAbove = pressure(above(i), &*accepted_, cylinderPressure);
+        const double pBelow = pressure(below(i), &*accepted_, cylinderPressure);
+        const double force = 0.5 * rings_[i].faceArea * (pBelow - pAbove) - rings_[i].mass * acceleration +
+                             (i < friction.size() ? friction[i] : 0.0);
+        trialMotion_[i].step(dt, force / circumference_);
+        const double z = trialMotion_[i].position(), clearance = rings_[i].sideClearance;
+        const double opening = dischargeCoefficient_ * rings_[i].flankLength;
+        trial_->setOrificeArea(static_cast<int>(n + 2 * i), opening * (clearance - z));
+        trial_->setOrificeArea(static_cast<int>(n + 2 * i + 1), opening * z);
+    }
+}
+
+const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressure, double acceleration,
+                                               const std::vector<double>& friction) {
     const std::size_t n = around_.size();
-    std::vector<double> p(n + 1);  // absolute: above ring 0, the lands, below the last ring
-    p.front() = cylinderPressure;
-    p.back() = crankcase_;
     if (accepted_) {
         trial_ = *accepted_;
+        if (lift_) moveRings(dt, cylinderPressure, acceleration, friction);
         trial_->advance(dt, cylinderPressure, crankcase_);
-        for (std::size_t i = 0; i + 1 < n; ++i) p[i + 1] = trial_->pressures()[static_cast<Eigen::Index>(i)];
     }
+    const InterRingGas* gas = trial_ ? &*trial_ : nullptr;
     for (std::size_t i = 0; i < n; ++i) {
         RingGas& r = around_[i];
-        r.above = p[i] - crankcase_;
-        r.behind = r.above;  // the ring on its groove's lower flank: its back open to the land above
-        r.below = p[i + 1] - crankcase_;
-        r.flow = trial_ ? trial_->flow(static_cast<int>(i))
-                        : orificeFlow(GasProperties{}, gaps_[i], p[i], p[i + 1], RingGasSpec::kLandTemperature,
-                                      RingGasSpec::kLandTemperature);
+        r.above = pressure(above(i), gas, cylinderPressure) - crankcase_;
+        r.behind = pressure(behind(i), gas, cylinderPressure) - crankcase_;
+        r.below = pressure(below(i), gas, cylinderPressure) - crankcase_;
+        const auto k = static_cast<int>(i);
+        r.flow = gas ? gas->flow(k) + (lift_ ? gas->flow(static_cast<int>(n) + 2 * k + 1) : 0.0)
+                     : orificeFlow(GasProperties{}, gaps_[i], cylinderPressure, crankcase_,
+                                   RingGasSpec::kLandTemperature, RingGasSpec::kLandTemperature);
+        r.position = lift_ ? trialMotion_[i].position() : 0.0;
     }
     return around_;
 }
 
 void RingPackGas::accept() {
     if (trial_) accepted_ = *trial_;
+    if (lift_) motion_ = trialMotion_;
+}
+
+double RingPackGas::inflow() const {
+    // From the cylinder: the top ring's end gap (orifice 0) and, with lift, its upper flank (n).
+    if (!trial_) return around_.empty() ? 0.0 : around_.front().flow;
+    return trial_->flow(0) + (lift_ ? trial_->flow(static_cast<int>(around_.size())) : 0.0);
+}
+
+double RingPackGas::blowBy() const {
+    if (!trial_) return around_.empty() ? 0.0 : around_.back().flow;
+    return trial_->blowBy();
 }
 
 std::vector<double> RingPackGas::landPressures() const {
     std::vector<double> p;
     if (accepted_)
-        for (Eigen::Index i = 0; i < accepted_->pressures().size(); ++i) p.push_back(accepted_->pressures()[i]);
+        for (std::size_t i = 0; i < volumes_.size(); ++i) p.push_back(accepted_->pressures()[static_cast<Eigen::Index>(i)]);
     return p;
 }
 

@@ -1,45 +1,79 @@
 #pragma once
 // RingPackGas: the ring pack's gas in a run (docs/ring-pack.md, "The pack's gas in a run"). The
-// lands between the rings are InterRingGas's volumes, each ring's end gap its orifice:
+// lands between the rings are InterRingGas's volumes, each ring's end gap an orifice:
 //
 //   cylinder → gap of ring 0 → land 0 → gap of ring 1 → … → land n−2 → gap of ring n−1 → crankcase.
 //
 // Land i (between ring i and ring i + 1) holds the annulus between the piston's land and the bore
 // and, ring i + 1 resting on its groove's lower flank, that ring's groove space above and behind
-// it. A step's land pressures follow from the cylinder pressure at its end (backward Euler, from
-// the last accepted step's); they are kept when the step is accepted.
+// it. With ring_gas.ring_lift each ring moves axially in its groove (RingAxialMotion, "Ring lift in
+// a run") and each groove is a volume of its own, joined to the space above the ring through its
+// upper flank's clearance and to the space below through its lower flank's, each opening as the
+// ring leaves that flank. A step's pressures follow from the cylinder pressure at its end
+// (backward Euler, from the last accepted step's); they are kept when the step is accepted.
 #include <optional>
 #include <vector>
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
 #include "cosim/ringpack/InterRingGas.hpp"
+#include "cosim/ringpack/RingAxialMotion.hpp"
 
 namespace flexehd::cosim {
 
 class RingPackGas {
 public:
     /// The case's pack and `ring_gas` (model Lands, at least one ring); starts at the crankcase
-    /// pressure. Throws std::invalid_argument when a land has no height (rings' grooves overlap).
+    /// pressure, every ring on its lower flank. Throws std::invalid_argument when a land has no
+    /// height (rings' grooves overlap).
     explicit RingPackGas(const EngineCase& c);
 
     /// The gas round each ring at the end of a step of dt (s) to the cylinder pressure there
-    /// (Pa, absolute), from the last accepted state; the step's trial until accept().
-    const std::vector<RingGas>& trial(double dt, double cylinderPressure);
+    /// (Pa, absolute), from the last accepted state; the step's trial until accept(). With ring
+    /// lift the rings first move in their grooves under the gas at the step's start (the
+    /// cylinder's at its end), their inertia at the piston's axial acceleration A = Z̈ + g
+    /// (m/s², +z towards the head) and `friction` (N per ring, top first, the liner film's axial
+    /// force on each ring at the last accepted step; empty: none).
+    const std::vector<RingGas>& trial(double dt, double cylinderPressure, double acceleration = 0.0,
+                                      const std::vector<double>& friction = {});
     /// The last trial becomes the accepted state.
     void accept();
 
-    /// m³, the volume of each land (top first).
+    /// m³, the volume of each land (top first); with ring lift without the grooves.
     const std::vector<double>& landVolumes() const { return volumes_; }
+    /// m³, with ring lift the volume of each ring's groove behind and beside it (empty without).
+    const std::vector<double>& grooveVolumes() const { return grooves_; }
     /// m², C_d A of each ring's end gap (top first).
     const std::vector<double>& gapAreas() const { return gaps_; }
     /// Pa, absolute, the accepted state's land pressures.
     std::vector<double> landPressures() const;
+    /// kg/s at the last trial: from the cylinder into the pack, and out of it into the crankcase.
+    double inflow() const;
+    double blowBy() const;
+    /// kg, the gas in the lands and grooves at the accepted state.
+    double mass() const { return accepted_ ? accepted_->mass() : 0.0; }
 
 private:
-    double crankcase_;
-    std::vector<double> volumes_, temperatures_, gaps_;
-    std::optional<InterRingGas> accepted_, trial_;  // lands (none with a single ring)
+    // The network's ends round ring i: the space above it, below it, and behind it (its groove).
+    int above(std::size_t i) const;
+    int below(std::size_t i) const;
+    int behind(std::size_t i) const;
+    double pressure(int node, const InterRingGas* gas, double cylinder) const;
+    /// Each ring's step in its groove and its flanks' openings (ring lift).
+    void moveRings(double dt, double cylinderPressure, double acceleration, const std::vector<double>& friction);
+
+    struct Ring {
+        double faceArea;       // m², the ring's side face π (D − w) w
+        double flankLength;    // m, the flank clearance's circumference π (D − w)
+        double mass;           // kg
+        double sideClearance;  // m
+    };
+    double crankcase_, circumference_, dischargeCoefficient_;
+    bool lift_;
+    std::vector<Ring> rings_;
+    std::vector<double> volumes_, grooves_, temperatures_, gaps_;
+    std::optional<InterRingGas> accepted_, trial_;  // lands and grooves (none: a single ring without lift)
+    std::vector<RingAxialMotion> motion_, trialMotion_;
     std::vector<RingGas> around_;
 };
 

@@ -187,6 +187,9 @@ TEST(CaseFileRings, TheLandsGasIsReadAndBadValuesAreRefused) {
     EXPECT_EQ(lands.ringGas.dischargeCoefficient, 0.86);
     EXPECT_EQ(lands.ringGas.landClearance, 0.3e-3);
     EXPECT_TRUE(lands.ringGas.landTemperatures.empty());
+    EXPECT_FALSE(lands.ringGas.ringLift);
+    EXPECT_TRUE(readCaseFile(caseWith(dir, {}, std::string(kTwoRings) + "ring_gas: {model: lands, ring_lift: true}\n"))
+                    .ringGas.ringLift);
     const EngineCase given = readCaseFile(caseWith(
         dir, {},
         std::string(kTwoRings) +
@@ -199,6 +202,7 @@ TEST(CaseFileRings, TheLandsGasIsReadAndBadValuesAreRefused) {
         return errorOf([&] { readCaseFile(path); });
     };
     EXPECT_THAT(error("ring_gas: {model: blowby}\n"), StartsWith(file + ": ring_gas.model"));
+    EXPECT_THAT(error("ring_gas: {model: lands, ring_lift: sometimes}\n"), StartsWith(file + ": ring_gas.ring_lift"));
     EXPECT_THAT(error("ring_gas: {model: lands, discharge_coefficient: 1.5}\n"),
                 AllOf(StartsWith(file + ": ring_gas.discharge_coefficient"), HasSubstr("(0, 1]")));
     EXPECT_THAT(error("ring_gas: {model: lands, land_clearance: -1e-4}\n"), StartsWith(file + ": ring_gas.land_clearance"));

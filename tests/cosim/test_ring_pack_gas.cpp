@@ -36,6 +36,7 @@ EngineCase examplePack(bool gas) {
     c.time.maxCycles = 1;
     c.output.vtkEveryDeg = 0.0;
     c.ringGas.model = gas ? RingGasModel::Lands : RingGasModel::None;
+    c.ringGas.ringLift = false;  // the lands' chain, every ring on its lower flank (ring lift: test_ring_lift)
     return c;
 }
 
