@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -26,12 +27,24 @@ Face sorted(Face f) {
 }
 }  // namespace
 
-BoundarySurface::BoundarySurface(const Mesh& mesh, const std::string& group) : mesh_(mesh), name_(group) {
+BoundarySurface::BoundarySurface(const Mesh& mesh, const std::string& group)
+    : BoundarySurface(mesh, group, -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()) {}
+
+BoundarySurface::BoundarySurface(const Mesh& mesh, const std::string& group, double zLow, double zHigh)
+    : mesh_(mesh), name_(group) {
     const PhysicalGroup& g = mesh.group(group);
     if (g.dim != 2)
         throw std::invalid_argument("physical group '" + group + "' of mesh '" + mesh.source +
                                     "' is a volume; a surface group is needed here");
-    triangles_ = g.elements;
+    for (Index t : g.elements) {
+        const double z = (mesh.nodes(2, mesh.surface.nodes(0, t)) + mesh.nodes(2, mesh.surface.nodes(1, t)) +
+                          mesh.nodes(2, mesh.surface.nodes(2, t))) / 3.0;
+        if (z >= zLow && z <= zHigh) triangles_.push_back(t);
+    }
+    if (triangles_.empty() && !g.elements.empty())
+        throw std::invalid_argument("surface group '" + group + "' of mesh '" + mesh.source +
+                                    "' has no triangle with its centroid at " + std::to_string(zLow) +
+                                    " <= z <= " + std::to_string(zHigh) + " m");
     // Which tetrahedron has each triangle as a face, and its vertex opposite that face.
     std::unordered_map<Face, std::pair<int, Index>, FaceHash> faces;  // (tets found, opposite)
     faces.reserve(triangles_.size() * 2);

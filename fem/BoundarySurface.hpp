@@ -14,6 +14,9 @@ public:
     /// Throws std::invalid_argument if the group is unknown or not a surface, and
     /// std::runtime_error if a triangle is not a face of exactly one tetrahedron.
     BoundarySurface(const Mesh& mesh, const std::string& group);
+    /// The group's triangles whose centroid lies in zLow ≤ z ≤ zHigh (m, mesh frame); throws
+    /// std::invalid_argument also when there is none.
+    BoundarySurface(const Mesh& mesh, const std::string& group, double zLow, double zHigh);
 
     const std::string& name() const { return name_; }
     const std::vector<Index>& triangles() const { return triangles_; }  ///< into mesh.surface

@@ -1,4 +1,5 @@
 #include "modal/CraigBamptonReducer.hpp"
+#include "modal/PressurePattern.hpp"
 #include "fem/Stopwatch.hpp"
 
 #include <algorithm>
@@ -89,18 +90,19 @@ namespace {
 // The uniform-pressure groups: known surface groups, each once, none an interface (a held
 // surface's load goes straight into the reference node; its static response is not elastic).
 void requirePressurePatterns(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs,
-                             const std::vector<std::string>& groups) {
-    for (const std::string& g : groups) {
+                             const std::vector<std::string>& patterns) {
+    for (const std::string& text : patterns) {
+        const PressurePattern p = PressurePattern::parse(text);
         try {
-            fem::BoundarySurface(mesh, g);
+            p.surface(mesh);
         } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("pressure pattern '" + g + "': " + e.what());
+            throw std::invalid_argument("pressure pattern '" + text + "': " + e.what());
         }
-        if (std::count(groups.begin(), groups.end(), g) > 1)
-            throw std::invalid_argument("pressure pattern '" + g + "' is listed twice; each group gets one vector");
+        if (std::count(patterns.begin(), patterns.end(), text) > 1)
+            throw std::invalid_argument("pressure pattern '" + text + "' is listed twice; each pattern gets one vector");
         for (const auto& s : specs)
-            if (s.group == g)
-                throw std::invalid_argument("pressure pattern '" + g +
+            if (s.group == p.group)
+                throw std::invalid_argument("pressure pattern '" + text +
                                             "' is also an interface; a held surface's load goes into its reference "
                                             "node, so a uniform-pressure vector there adds nothing");
     }
@@ -192,7 +194,7 @@ Eigen::MatrixXd staticCorrection(const fem::Mesh& mesh, const fem::ElasticityAss
     Eigen::MatrixXd Fi(ni, Eigen::Index(settings.pressurePatterns.size()));
     for (std::size_t k = 0; k < settings.pressurePatterns.size(); ++k)
         Fi.col(Eigen::Index(k)) =
-            interiorLoad(assembler.pressureLoad(fem::BoundarySurface(mesh, settings.pressurePatterns[k]), 1.0));
+            interiorLoad(assembler.pressureLoad(PressurePattern::parse(settings.pressurePatterns[k]).surface(mesh), 1.0));
     appendColumns(X, attachment(factor, Mii, Phi, Fi));
     return X;
 }

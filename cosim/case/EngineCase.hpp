@@ -130,6 +130,9 @@ struct PistonLoadSpec {
     bool gasPressure = false;           ///< the cylinder's gas pressure (gauge) on gasSurface
     std::string gasSurface = "crown";   ///< the surface group it acts on
     bool inertia = false;               ///< the inertia of the piston's rigid motion
+    /// the ring pack's gas on the lands and grooves and the rings' forces on the groove flanks
+    /// (needs `ring_gas` with `ring_lift`)
+    bool ringPack = false;
 };
 
 struct BodySpec {

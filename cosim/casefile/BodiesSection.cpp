@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// bodies.piston.loads: a list of gas_pressure and inertia (docs/case-file.md, "bodies").
+// bodies.piston.loads: a list of gas_pressure, inertia and ring_pack (docs/case-file.md, "bodies").
 PistonLoadSpec readLoads(const YamlSection& s, bool piston) {
     PistonLoadSpec l;
     if (!s.has("loads") && !s.has("gas_surface")) return l;
@@ -31,14 +31,15 @@ PistonLoadSpec readLoads(const YamlSection& s, bool piston) {
     if (s.has("loads")) {
         const YAML::Node n = s.get("loads");
         const YamlSource& ctx = s.source();
-        const std::string expected = "a list of gas_pressure, inertia";
+        const std::string expected = "a list of gas_pressure, inertia, ring_pack";
         if (!n.IsSequence()) s.fail("loads", "expected " + expected + ", got " + describeNode(n));
         for (std::size_t i = 0; i < n.size(); ++i) {
             const std::string path = fmt::format("{}[{}]", s.keyPath("loads"), i);
             const std::string v = n[i].IsScalar() ? std::string(trim(n[i].Scalar())) : std::string();
-            bool& on = v == "gas_pressure" ? l.gasPressure : l.inertia;
-            if (v != "gas_pressure" && v != "inertia")
-                ctx.fail(path, n[i], "expected gas_pressure or inertia, got " + (v.empty() ? describeNode(n[i]) : "'" + v + "'"));
+            bool& on = v == "gas_pressure" ? l.gasPressure : v == "ring_pack" ? l.ringPack : l.inertia;
+            if (v != "gas_pressure" && v != "inertia" && v != "ring_pack")
+                ctx.fail(path, n[i], "expected gas_pressure, inertia or ring_pack, got " +
+                                         (v.empty() ? describeNode(n[i]) : "'" + v + "'"));
             if (on) ctx.fail(path, n[i], "'" + v + "' listed twice");
             on = true;
         }

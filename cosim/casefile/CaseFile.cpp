@@ -56,6 +56,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     readContact(top, c.contact);
     readRings(top, engine, c);
     readRingGas(top, c);
+    requireRingPackForItsLoads(top, c);
     readCylinderPressure(top, c);
     readGrid(top, c.piston, c.grid);
     if (c.lubricant.supply.model == OilSupplyModel::LinerLayer) {  // time.*_tolerance's defaults

@@ -75,4 +75,11 @@ void requireReplenishWithinReach(const YamlSection& lubricant, const EngineCase&
                         sp.replenishBelowDepth, deepest, deepest));
 }
 
+void requireRingPackForItsLoads(const YamlSection& top, const EngineCase& c) {
+    if (!c.pistonBody.loads.ringPack || (c.ringGas.model == RingGasModel::Lands && c.ringGas.ringLift)) return;
+    top.source().fail("bodies.piston.loads", top.get("bodies")["piston"]["loads"],
+                      "ring_pack needs the gas of the lands and grooves and the rings' positions in their grooves: a "
+                      "ring pack (rings) with ring_gas: {model: lands, ring_lift: true} (docs/coupling.md section 2)");
+}
+
 }  // namespace flexehd::cosim::casefile

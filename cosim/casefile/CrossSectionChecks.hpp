@@ -20,4 +20,8 @@ void requireOilControlRingOnPiston(const YamlSection& lubricant, const EngineCas
 /// (after engine, piston and lubricant): deeper, the layer would never be replenished.
 void requireReplenishWithinReach(const YamlSection& lubricant, const EngineCase& c);
 
+/// bodies.piston.loads' ring_pack with a pack whose gas and ring positions are stepped (rings,
+/// ring_gas: {model: lands, ring_lift: true}; after bodies, rings and ring_gas).
+void requireRingPackForItsLoads(const YamlSection& top, const EngineCase& c);
+
 }  // namespace flexehd::cosim::casefile

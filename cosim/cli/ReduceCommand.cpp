@@ -154,7 +154,7 @@ void addReduceCommand(CLI::App& app) {
                     "Surface group with static-correction modes for pressure loads; repeatable");
     cmd->add_option("--pressure-pattern", a->settings.pressurePatterns,
                     "Surface group with one static-correction vector for a uniform pressure (e.g. crown for the "
-                    "cylinder's gas pressure); repeatable");
+                    "cylinder's gas pressure), or GROUP@ZLOW:ZHIGH for its part in that band of z [m]; repeatable");
     cmd->add_option("--axial-order", a->settings.axialOrder, "Load patterns: Legendre degree along z")
         ->check(wholeNumberFromTo(0, 20));
     cmd->add_option("--axial-hats", a->settings.axialHats,

@@ -17,6 +17,7 @@
 #include "cosim/contact/CouplingNeeds.hpp"
 #include "cosim/contact/FilmFigures.hpp"
 #include "cosim/engine/PistonDynamics.hpp"
+#include "cosim/engine/RingGas.hpp"
 #include "cosim/oil/LinerOil.hpp"
 #include "lube/FilmIntegrals.hpp"
 
@@ -30,17 +31,6 @@
 #include <vector>
 
 namespace flexehd::cosim {
-
-/// The gas round one ring of the pack at a step's end (docs/ring-pack.md, "The pack's gas in a
-/// run"): pressures (Pa, gauge: relative to the crankcase) above its face, behind it and below
-/// it, the mass flow past it (kg/s, towards the crankcase > 0: through its end gap and, off its
-/// lower flank, its groove's lower flank clearance) and, with ring_gas.ring_lift, its axial
-/// position in the groove (m above the lower flank).
-struct RingGas {
-    double above = 0.0, behind = 0.0, below = 0.0;
-    double flow = 0.0;
-    double position = 0.0;
-};
 
 /// What a contact sees of the step: its BDF2 coefficients, the piston's axial velocity and where
 /// the piston frame is along the liner.

@@ -48,8 +48,9 @@ void StepSolver::motionResidual(const StepContext& ctx, const Eigen::Vector2d& x
 void StepSolver::structureResponse(const StepContext& ctx, StepEvaluation& ev) {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(mp_ + ml_), q;
     for (std::size_t c = 0; c < contacts_.size(); ++c) contacts_[c]->addModalLoad(ctx.step, ev.films[c], f, work_);
-    if (pistonLoads_)  // the crown's gas pressure, the rigid motion's inertia at this iterate
-        pistonLoads_->add(ctx.step.cylinderPressure, ev.acc, ctx.crank.acceleration + dyn_.gravity(), f.head(mp_));
+    if (pistonLoads_)  // the crown's gas pressure, the rigid motion's inertia at this iterate, the ring pack's
+        pistonLoads_->add(ctx.step.cylinderPressure, ev.acc, ctx.crank.acceleration + dyn_.gravity(), ctx.step.ringGas,
+                          f.head(mp_));
     const fem::Stopwatch t0;
     ev.Hy.resize(mp_ + ml_);
     if (pistonBody_) {  // modal update: q = C f, or the BDF2 step of the modal dynamics

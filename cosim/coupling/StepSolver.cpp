@@ -35,8 +35,8 @@ StepSolver::StepSolver(const EngineCase& c, const CrankKinematics& kin, const Pi
         scheme_ = std::make_unique<PartitionedScheme>(*this);
     if (c.ringGas.model == RingGasModel::Lands) packGas_ = std::make_unique<RingPackGas>(c);
     const PistonLoadSpec& loads = c.pistonBody.loads;
-    if (pistonBody_ && (loads.gasPressure || loads.inertia))
-        pistonLoads_ = std::make_unique<PistonBodyLoads>(*pistonBody_, loads, c.pistonBody.file);
+    if (pistonBody_ && (loads.gasPressure || loads.inertia || loads.ringPack))
+        pistonLoads_ = std::make_unique<PistonBodyLoads>(*pistonBody_, loads, c.pistonBody.file, c.rings, c.engine.bore);
     contactsChanged();
 }
 

@@ -47,10 +47,12 @@ Eigen::MatrixXd rigidFields(const fem::Mesh& mesh, const Eigen::Vector3d& r0) {
 
 }  // namespace
 
-PistonBodyLoads::PistonBodyLoads(const FlexibleBody& piston, const PistonLoadSpec& spec, const std::string& file)
+PistonBodyLoads::PistonBodyLoads(const FlexibleBody& piston, const PistonLoadSpec& spec, const std::string& file,
+                                 const std::vector<RingSpec>& rings, double bore)
     : spec_(spec) {
     const modal::ReducedBody& body = piston.body();
     const Eigen::Index m = body.numModes();
+    if (spec.ringPack) ringBelt_.emplace(body, rings, bore, file);
     gasUnit_ = spec.gasPressure ? gasLoadPerPascal(body, spec.gasSurface, file) : Eigen::VectorXd::Zero(m);
     inertiaSecondary_ = Eigen::MatrixXd::Zero(m, 2);
     inertiaAxial_ = Eigen::VectorXd::Zero(m);
@@ -74,8 +76,9 @@ PistonBodyLoads::PistonBodyLoads(const FlexibleBody& piston, const PistonLoadSpe
 }
 
 void PistonBodyLoads::add(double pGauge, const Eigen::Vector2d& secondaryAcceleration, double axialAcceleration,
-                          Eigen::Ref<Eigen::VectorXd> f) const {
+                          const std::vector<RingGas>* ringGas, Eigen::Ref<Eigen::VectorXd> f) const {
     if (spec_.gasPressure) f += pGauge * gasUnit_;
+    if (ringBelt_ && ringGas) ringBelt_->add(*ringGas, f);
     if (spec_.inertia) f += inertiaSecondary_ * secondaryAcceleration + axialAcceleration * inertiaAxial_;
 }
 

@@ -17,7 +17,7 @@
 // loads summed. Flooded, or on the liner's oil layer (RingOilExchange): then each face's film is
 // mass-conserving, the lands in series (the second meets what the first leaves; what it does not
 // take in drains through the ring to the crankcase: the ring's side flow). A rigid or flexible
-// piston (the rings' groove loads do not enter its modes); a rigid or flexible liner: on a
+// piston (the pack's loads on its ring belt: RingBeltLoads); a rigid or flexible liner: on a
 // flexible one the ring's film and asperity pressure, lumped onto a load grid of kLoadRows rows
 // across the ring's height round the bore, is a modal load on the liner, and the ring's film does
 // not see the liner's deformation (the ring, free to move radially, follows the bore's local

@@ -142,6 +142,7 @@ const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressur
                      : orificeFlow(GasProperties{}, gaps_[i], cylinderPressure, crankcase_,
                                    RingGasSpec::kLandTemperature, RingGasSpec::kLandTemperature);
         r.position = lift_ ? trialMotion_[i].position() : 0.0;
+        r.flankForce = lift_ ? trialMotion_[i].flankForce() : 0.0;
     }
     return around_;
 }

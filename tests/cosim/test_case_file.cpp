@@ -558,11 +558,11 @@ TEST(CaseFile, PistonLoadsAreReadAndCheckedKeyByKey) {
         return caseError(dir, "name: small", "name: small\nbodies: " + bodies, kPressureCsv, noBodyFiles());
     };
     EXPECT_THAT(error("{piston: {file: p.h5, loads: [gravity]}}"),
-                AllOf(StartsWith(file + ": bodies.piston.loads[0]"), HasSubstr("expected gas_pressure or inertia, got 'gravity'")));
+                AllOf(StartsWith(file + ": bodies.piston.loads[0]"), HasSubstr("expected gas_pressure, inertia or ring_pack, got 'gravity'")));
     EXPECT_THAT(error("{piston: {file: p.h5, loads: [inertia, inertia]}}"),
                 AllOf(StartsWith(file + ": bodies.piston.loads[1]"), HasSubstr("listed twice")));
     EXPECT_THAT(error("{piston: {file: p.h5, loads: inertia}}"),
-                AllOf(StartsWith(file + ": bodies.piston.loads"), HasSubstr("expected a list of gas_pressure, inertia")));
+                AllOf(StartsWith(file + ": bodies.piston.loads"), HasSubstr("expected a list of gas_pressure, inertia, ring_pack")));
     EXPECT_THAT(error("{piston: {file: p.h5, loads: [inertia], gas_surface: crown}}"),
                 AllOf(StartsWith(file + ": bodies.piston.gas_surface"), HasSubstr("does not list")));
     EXPECT_THAT(error("{liner: {file: l.h5, loads: [inertia]}}"),

@@ -201,6 +201,19 @@ TEST(CaseFileRings, TheLandsGasIsReadAndBadValuesAreRefused) {
         const std::string path = caseWith(dir, {}, std::string(kTwoRings) + gas);
         return errorOf([&] { readCaseFile(path); });
     };
+    // The ring pack's loads on the flexible piston need the pack's gas with the rings' positions.
+    CaseFileOptions noBodyFiles;
+    noBodyFiles.checkBodyFiles = false;
+    const std::string piston = "bodies: {piston: {file: p.h5, loads: [gas_pressure, ring_pack]}}\n";
+    EXPECT_TRUE(readCaseFile(caseWith(dir, {}, std::string(kTwoRings) + "ring_gas: {model: lands, ring_lift: true}\n" + piston),
+                             noBodyFiles)
+                    .pistonBody.loads.ringPack);
+    for (const std::string gas : {"", "ring_gas: {model: lands}\n"}) {
+        const std::string path = caseWith(dir, {}, std::string(kTwoRings) + gas + piston);
+        EXPECT_THAT(errorOf([&] { readCaseFile(path, noBodyFiles); }),
+                    AllOf(StartsWith(file + ": bodies.piston.loads"), HasSubstr("ring_gas: {model: lands, ring_lift: true}")))
+            << gas;
+    }
     EXPECT_THAT(error("ring_gas: {model: blowby}\n"), StartsWith(file + ": ring_gas.model"));
     EXPECT_THAT(error("ring_gas: {model: lands, ring_lift: sometimes}\n"), StartsWith(file + ": ring_gas.ring_lift"));
     EXPECT_THAT(error("ring_gas: {model: lands, discharge_coefficient: 1.5}\n"),

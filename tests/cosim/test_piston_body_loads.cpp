@@ -3,13 +3,18 @@
 // to a uniform crown pressure and to the body force −ρ a(r) of its rigid acceleration.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <vector>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "cosim/mapping/FlexibleBody.hpp"
+#include "cosim/casefile/CaseFile.hpp"
 #include "cosim/mapping/PistonBodyLoads.hpp"
+#include "cosim/mapping/RingBeltLoads.hpp"
 #include "fem/DofMap.hpp"
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/MeshReader.hpp"
@@ -75,7 +80,7 @@ Eigen::VectorXd reducedStatic(const modal::ReducedBody& b, const cosim::PistonLo
     const cosim::FlexibleBody piston(b, {"pin_bore"});
     const cosim::PistonBodyLoads loads(piston, spec, "piston.h5");
     Eigen::VectorXd f = Eigen::VectorXd::Zero(b.numModes()), q;
-    loads.add(pGauge, Eigen::Vector2d(lateral, tilt), axial, f);
+    loads.add(pGauge, Eigen::Vector2d(lateral, tilt), axial, nullptr, f);
     piston.quasiStatic(f, q);
     return b.shapes * q;
 }
@@ -151,5 +156,116 @@ TEST(PistonBodyLoads, AGasLoadWithoutItsPatternIsRefusedNamingTheReduceOption) {
         FAIL() << "an unknown gas surface was accepted";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("'no_such_group'"), std::string::npos) << e.what();
+    }
+}
+
+// The ring pack's loads on the ring belt (cosim/mapping/RingBeltLoads): the example's pack.
+namespace {
+
+const cosim::EngineCase& examplePack() {
+    static const cosim::EngineCase c =
+        cosim::readCaseFile(std::string(FLEXEHD_SOURCE_DIR) + "/examples/engine86/hd_rings.yaml");
+    return c;
+}
+
+// As body(true), with every part of the pack's ring belt as a pattern.
+const modal::ReducedBody& ringBeltBody() {
+    static const modal::ReducedBody b = [] {
+        modal::ReductionSettings s;
+        s.normalModes = 20;
+        s.staticCorrection = {"skirt"};
+        s.axialOrder = 4;
+        s.circumferentialOrder = 6;
+        s.pressurePatterns = {"crown"};
+        for (const modal::PressurePattern& p : cosim::RingBeltLoads::patterns(examplePack().rings))
+            s.pressurePatterns.push_back(p.text());
+        return modal::CraigBamptonReducer(piston(), kAlu).reduce({modal::parseInterface("pin_bore:rbe2@0,0,0")}, s);
+    }();
+    return b;
+}
+
+}  // namespace
+
+// The bands cut the parts the pack's geometry says: the second groove's lower flank is the flat
+// annulus between the groove's root (R 39.2 mm) and the land (R 42.7 mm) at z = 19.8 mm, its root
+// the cylinder of R 39.2 mm over the groove's 1.5 mm (meshes/piston.geo), to the polygonal mesh's
+// chordal error (about (2π/n)²/6 with n ≈ 40 edges round the circle).
+TEST(RingBeltLoads, TheBandsAreTheGroovesFlanksAndRoots) {
+    const fem::Mesh& m = piston();
+    const double pi = std::numbers::pi, root = 39.2e-3, land = 42.7e-3;
+    const double flank = fem::BoundarySurface(m, "ring_grooves", 0.0198 - 2e-5, 0.0198 + 2e-5).area();
+    const double cylinder = fem::BoundarySurface(m, "ring_grooves", 0.0198 + 2e-5, 0.0213 - 2e-5).area();
+    std::printf("second groove: lower flank %.5g mm² (annulus %.5g), root %.5g mm² (cylinder %.5g)\n", flank * 1e6,
+                pi * (land * land - root * root) * 1e6, cylinder * 1e6, 2 * pi * root * 1.5e-3 * 1e6);
+    EXPECT_NEAR(flank, pi * (land * land - root * root), 1e-2 * flank);
+    EXPECT_NEAR(cylinder, 2.0 * pi * root * 1.5e-3, 1e-2 * cylinder);
+}
+
+// The pack's gas and flank forces near firing TDC, each ring in another state: the top ring pressed
+// on its lower flank, the second on its upper flank, the oil-control ring in flight. The full
+// model's static response to the same pressures, each part's band chosen here from the grooves'
+// and lands' positions (rings.yaml) with a band of its own width, against the reduced body's.
+TEST(RingBeltLoads, RingPackLoadsMatchTheFullModelsStaticResponse) {
+    const cosim::EngineCase& c = examplePack();
+    std::vector<cosim::RingGas> gas(3);
+    gas[0] = {40e5, 40e5, 6e5, 0.0, 0.0, 2.0e4};
+    gas[1] = {6e5, 6e5, 2e5, 0.0, 50e-6, -3.0e3};
+    gas[2] = {2e5, 1e5, 0.0, 0.0, 30e-6, 0.0};
+    const fem::Mesh& m = piston();
+    const fem::ElasticityAssembler a(m);
+    const double tol = 3e-5, circumference = std::numbers::pi * c.engine.bore;
+    auto load = [&](const std::string& group, double lo, double hi, double p) {
+        return a.pressureLoad(fem::BoundarySurface(m, group, lo, hi), p);
+    };
+    Eigen::VectorXd f = load("ring_lands", 0.0265, 1.0, gas[0].above) + load("ring_lands", 0.0213, 0.0253, gas[0].below) +
+                        load("ring_lands", 0.0163, 0.0198, gas[1].below);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const cosim::RingSpec& r = c.rings[i];
+        const double low = r.groove.lowerFlank, high = r.grooveTop(), force = gas[i].flankForce * circumference;
+        const fem::BoundarySurface lower(m, "ring_grooves", low - tol, low + tol), upper(m, "ring_grooves", high - tol, high + tol);
+        f += load("ring_grooves", low + tol, high - tol, gas[i].behind);
+        f += a.pressureLoad(lower, 0.5 * (gas[i].behind + gas[i].below) + std::max(force, 0.0) / lower.area());
+        f += a.pressureLoad(upper, 0.5 * (gas[i].behind + gas[i].above) + std::max(-force, 0.0) / upper.area());
+    }
+    const Eigen::VectorXd ref = fullStatic(f);
+    cosim::PistonLoadSpec spec;
+    spec.ringPack = true;
+    const cosim::FlexibleBody body(ringBeltBody(), {"pin_bore"});
+    const cosim::PistonBodyLoads loads(body, spec, "piston.h5", c.rings, c.engine.bore);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(ringBeltBody().numModes()), q;
+    loads.add(0.0, Eigen::Vector2d::Zero(), 0.0, &gas, g);
+    body.quasiStatic(g, q);
+    const Eigen::VectorXd u = ringBeltBody().shapes * q;
+    const double skirt = groupError("skirt", u, ref, true), belt = groupError("ring_grooves", u, ref, false);
+    const double all = (u - ref).lpNorm<Eigen::Infinity>() / ref.lpNorm<Eigen::Infinity>();
+    std::printf("ring pack loads: largest displacement %.3e m, skirt radial %.3e m; error %.2e (all), %.2e (skirt "
+                "radial), %.2e (grooves axial); %lld modes\n",
+                ref.lpNorm<Eigen::Infinity>(), [&] {
+                    double r = 0.0;
+                    for (auto n : m.groupNodes("skirt"))
+                        r = std::max(r, std::abs(ref.segment<3>(3 * n).head<2>().dot(m.nodes.col(n).head<2>().normalized())));
+                    return r;
+                }(),
+                all, skirt, belt, static_cast<long long>(ringBeltBody().numModes()));
+    EXPECT_LT(all, 1e-6);
+    EXPECT_LT(skirt, 1e-6);
+    EXPECT_LT(belt, 1e-6);
+}
+
+TEST(RingBeltLoads, ABodyWithoutTheBeltsPatternsIsRefusedNamingEveryOption) {
+    const cosim::EngineCase& c = examplePack();
+    cosim::PistonLoadSpec spec;
+    spec.ringPack = true;
+    try {
+        cosim::PistonBodyLoads(cosim::FlexibleBody(body(true), {"pin_bore"}), spec, "out/piston.h5", c.rings,
+                               c.engine.bore);
+        FAIL() << "a body without the ring belt's patterns was accepted";
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        std::printf("%s\n", what.c_str());
+        EXPECT_NE(what.find("out/piston.h5"), std::string::npos) << what;
+        EXPECT_NE(what.find("--pressure-pattern ring_lands@0.0265:"), std::string::npos) << what;
+        EXPECT_NE(what.find("--pressure-pattern ring_grooves@0.02529:0.02531"), std::string::npos) << what;
+        EXPECT_NE(what.find("--pressure-pattern ring_grooves@0.01381:0.01629"), std::string::npos) << what;
     }
 }

@@ -224,6 +224,13 @@ TEST(CraigBampton, BadInputGivesClearErrors) {
                 HasSubstr("pressure pattern 'crown' is listed twice"));
     EXPECT_THAT(errorOf([&] { reducer.reduce({modal::parseInterface("pin_bore")}, withPatterns({"pin_bore"})); }),
                 HasSubstr("pressure pattern 'pin_bore' is also an interface"));
+    // A band of a group: well formed and not empty.
+    for (const char* bad : {"crown@", "crown@0.03", "crown@0.03:0.02", "crown@a:b", "@0:1", "crown@:"})
+        EXPECT_THAT(errorOf([&] { reducer.reduce({modal::parseInterface("pin_bore")}, withPatterns({bad})); }),
+                    HasSubstr("expected GROUP or GROUP@ZLOW:ZHIGH"))
+            << bad;
+    EXPECT_THAT(errorOf([&] { reducer.reduce({modal::parseInterface("pin_bore")}, withPatterns({"crown@5:6"})); }),
+                HasSubstr("pressure pattern 'crown@5:6': surface group 'crown' of mesh"));
 }
 
 // An RBE3 interface adds no constraint: the reduced free beam converges to the plain free

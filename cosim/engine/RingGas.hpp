@@ -1,0 +1,21 @@
+#pragma once
+// RingGas: the gas round one ring of the pack at a step's end (docs/ring-pack.md, "The pack's gas
+// in a run", "Ring lift in a run"), what the ring's film contact and the flexible piston's
+// ring-belt loads read of the pack's gas.
+
+namespace flexehd::cosim {
+
+/// Pressures (Pa, gauge: relative to the crankcase) above the ring's face, behind it and below
+/// it, the mass flow past it (kg/s, towards the crankcase > 0: through its end gap and, off its
+/// lower flank, its groove's lower flank clearance) and, with ring_gas.ring_lift, its axial
+/// position in the groove (m above the lower flank) and the force per unit of the bore's
+/// circumference (N/m) its flank exerts on it (> 0 the lower flank pushing up, < 0 the upper
+/// flank pushing down, 0 in flight).
+struct RingGas {
+    double above = 0.0, behind = 0.0, below = 0.0;
+    double flow = 0.0;
+    double position = 0.0;
+    double flankForce = 0.0;
+};
+
+}  // namespace flexehd::cosim
