@@ -164,7 +164,19 @@ const RingRadialStep& RingContact::radialStep(const ContactStep& step, const Con
     conditions.pressureAbove = gas_.above;
     conditions.pressureBelow = gas_.below;
     cachedFor_.reset();  // a failed step leaves no stale result behind
-    cached_ = radial_.step(now.minGap, step.dt, conditions, pressure, guess, supply ? &*supply : nullptr);
+    try {
+        cached_ = radial_.step(now.minGap, step.dt, conditions, pressure, guess, supply ? &*supply : nullptr);
+    } catch (const std::runtime_error& e) {
+        // No gap balances the ring when the gas on its face outweighs its tension and the gas
+        // behind it: the ring collapses off the liner, which the radial balance does not model.
+        throw std::runtime_error(fmt::format(
+            "ring '{}': {} with {:.4g} Pa above its face, {:.4g} behind it and {:.4g} below (gauge){}", ring_.name,
+            e.what(), gas_.above, gas_.behind, gas_.below,
+            gas_.behind < std::max(gas_.above, gas_.below)
+                ? ": the gas on its face outweighs its tension and the gas behind it, so the ring would collapse "
+                  "radially, which is not modelled (docs/ring-pack.md, \"Ring lift in a run\")"
+                : ""));
+    }
     cachedFor_ = key;
     return cached_;
 }
