@@ -167,10 +167,11 @@ Json::json_pointer pointer(const std::string& dotted) {
 // A figure of column k of the records' contact values over the cycle (at least two records).
 Json columnFigure(const std::vector<StepRecord>& cycle, std::size_t k, CycleStatistic statistic, double volume) {
     double least = cycle.front().contactValues[k], largest = least, integral = 0.0;
+    const bool departing = statistic == CycleStatistic::Departures || statistic == CycleStatistic::DepartureAngles;
     Json departures = Json::array();
     for (std::size_t i = 1; i < cycle.size(); ++i) {
         const double v = cycle[i].contactValues[k];
-        if (cycle[i - 1].contactValues[k] <= 0.0 && v > 0.0) departures.push_back(cycle[i].crankDeg);
+        if (departing && cycle[i - 1].contactValues[k] <= 0.0 && v > 0.0) departures.push_back(cycle[i].crankDeg);
         least = std::min(least, v);
         largest = std::max(largest, v);
         integral += 0.5 * (v + cycle[i - 1].contactValues[k]) * (cycle[i].time - cycle[i - 1].time);

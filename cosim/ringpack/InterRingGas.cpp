@@ -10,9 +10,15 @@ namespace flexehd::cosim {
 
 namespace {
 
-std::vector<GasOrifice> chain(const std::vector<double>& areas) {
+// The chain's orifices (one more than the volumes), refused when the counts do not fit.
+std::vector<GasOrifice> chain(std::size_t volumes, std::size_t temperatures, const std::vector<double>& areas) {
+    if (volumes == 0 || temperatures != volumes || areas.size() != volumes + 1)
+        throw std::invalid_argument("InterRingGas: one temperature per volume and one orifice more than the volumes "
+                                    "expected (" + std::to_string(volumes) + " volumes, " +
+                                    std::to_string(temperatures) + " temperatures, " +
+                                    std::to_string(areas.size()) + " orifices)");
     std::vector<GasOrifice> o;
-    const int n = static_cast<int>(areas.size()) - 1;  // volumes
+    const int n = static_cast<int>(volumes);
     for (int i = 0; i <= n; ++i)
         o.push_back({i == 0 ? GasOrifice::kCylinder : i - 1, i == n ? GasOrifice::kCrankcase : i,
                      areas[static_cast<std::size_t>(i)]});
@@ -27,15 +33,7 @@ void checkArea(double a) {
 
 InterRingGas::InterRingGas(GasProperties gas, std::vector<double> volumes, std::vector<double> temperatures,
                            std::vector<double> orifices, double initialPressure)
-    : gas_(gas), volume_(std::move(volumes)), temperature_(std::move(temperatures)) {
-    const std::size_t n = volume_.size();
-    if (n == 0 || temperature_.size() != n || orifices.size() != n + 1)
-        throw std::invalid_argument("InterRingGas: one temperature per volume and one orifice more than the volumes "
-                                    "expected (" + std::to_string(n) + " volumes, " +
-                                    std::to_string(temperature_.size()) + " temperatures, " +
-                                    std::to_string(orifices.size()) + " orifices)");
-    *this = InterRingGas(gas, volume_, temperature_, chain(orifices), initialPressure);
-}
+    : InterRingGas(gas, volumes, temperatures, chain(volumes.size(), temperatures.size(), orifices), initialPressure) {}
 
 InterRingGas::InterRingGas(GasProperties gas, std::vector<double> volumes, std::vector<double> temperatures,
                            std::vector<GasOrifice> orifices, double initialPressure)
