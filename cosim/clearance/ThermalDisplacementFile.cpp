@@ -141,6 +141,27 @@ public:
         return f;
     }
 
+    SurfaceTemperatureProfile profile(const std::string& group) const {
+        SurfaceTemperatureProfile p;
+        p.where = path_ + ":" + group;
+        std::vector<hsize_t> dz, dt;
+        p.z = dataset(group + "/z_m", 1, dz);
+        p.temperature = dataset(group + "/temperature_k", 1, dt);
+        if (p.z.size() < 2) fail(fmt::format("{}/z_m needs at least 2 values, has {}", group, p.z.size()));
+        if (p.temperature.size() != p.z.size())
+            fail(fmt::format("{}/temperature_k has {} values, {}/z_m {}: expected one temperature per z", group,
+                             p.temperature.size(), group, p.z.size()));
+        for (std::size_t k = 1; k < p.z.size(); ++k)
+            if (!(p.z[k] > p.z[k - 1]))
+                fail(fmt::format("{}/z_m must be strictly increasing: {:g} m follows {:g} m (index {})", group, p.z[k],
+                                 p.z[k - 1], k));
+        for (std::size_t k = 0; k < p.temperature.size(); ++k)
+            if (!(p.temperature[k] > 0.0))
+                fail(fmt::format("{}/temperature_k must be positive (K), is {:g} at index {}", group,
+                                 p.temperature[k], k));
+        return p;
+    }
+
 private:
     std::string path_;
     Id file_;
@@ -169,6 +190,25 @@ double ThermalField::at(double z, double th) const {
     return (1.0 - s) * ((1.0 - t) * v(k, j) + t * v(k, j1)) + s * ((1.0 - t) * v(k + 1, j) + t * v(k + 1, j1));
 }
 
+double SurfaceTemperatureProfile::mean(double zLow, double zHigh) const {
+    const double tol = 1e-9;
+    if (!(zLow < zHigh) || zLow < z.front() - tol || zHigh > z.back() + tol)
+        throw std::out_of_range(fmt::format("{}/z_m covers {:g} … {:g} m; the range {:g} … {:g} m does not lie within it",
+                                            where, z.front(), z.back(), zLow, zHigh));
+    zLow = std::max(zLow, z.front());
+    zHigh = std::min(zHigh, z.back());
+    if (!(zHigh > zLow)) return zLow <= z.front() ? temperature.front() : temperature.back();  // within the tolerance
+    const auto at = [&](double x, std::size_t k) {  // on segment [z_k, z_k+1]
+        return temperature[k] + (temperature[k + 1] - temperature[k]) * (x - z[k]) / (z[k + 1] - z[k]);
+    };
+    double integral = 0.0;
+    for (std::size_t k = 0; k + 1 < z.size(); ++k) {
+        const double a = std::max(zLow, z[k]), b = std::min(zHigh, z[k + 1]);
+        if (b > a) integral += 0.5 * (at(a, k) + at(b, k)) * (b - a);  // trapezoid: exact on a linear segment
+    }
+    return integral / (zHigh - zLow);
+}
+
 void ThermalField::checkCovers(double zMin, double zMax, const std::string& what) const {
     const double tol = 1e-9;
     if (zMin < axial.front() - tol || zMax > axial.back() + tol)
@@ -194,6 +234,7 @@ ThermalDisplacement readThermalDisplacementFile(const std::string& path) {
     if (r.has("/piston")) t.piston = r.field("/piston");
     if (r.has("/liner")) t.liner = r.field("/liner");
     if (!t.piston && !t.liner) r.fail("has neither a /piston nor a /liner group");
+    if (t.piston && r.has("/piston/ring_belt")) t.pistonRingBelt = r.profile("/piston/ring_belt");
     return t;
 }
 

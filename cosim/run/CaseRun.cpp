@@ -19,6 +19,7 @@
 #include "cosim/results/WearMapWriter.hpp"
 #include "cosim/run/OutputEstimate.hpp"
 #include "cosim/run/StarvedStepTolerance.hpp"
+#include "cosim/run/ThermalLandTemperatures.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/results/RunSummary.hpp"
 #include "cosim/wear/SkirtWear.hpp"
@@ -193,15 +194,31 @@ std::vector<std::string> columnNames(const std::vector<ContactColumn>& columns) 
     return names;
 }
 
+// The case as the run uses it: the lands' gas temperatures from the thermal file where the case
+// leaves them to it (its message on the log: info, or a warning when the file has no profile).
+EngineCase caseForRun(const EngineCase& given, const RunLog& log) {
+    EngineCase c = given;
+    if (const auto lands = thermalLandTemperatures(given)) {
+        if (lands->temperatures.empty()) {
+            say(log.warn, lands->message);
+        } else {
+            c.ringGas.landTemperatures = lands->temperatures;
+            say(log.info, lands->message);
+        }
+    }
+    return c;
+}
+
 }  // namespace
 
-CaseRunResult runCase(const EngineCase& c, const RunLog& log, const std::vector<ContactBuilder>& contacts) {
+CaseRunResult runCase(const EngineCase& given, const RunLog& log, const std::vector<ContactBuilder>& contacts) {
     const fem::Stopwatch total;
-    const std::string dir = c.output.directory;
+    const std::string dir = given.output.directory;
     std::filesystem::create_directories(dir);
     if (const int stale = fem::removeStaleTemporaries(dir))
         say(log.info, fmt::format("removed {} unfinished .tmp file(s) that an interrupted run left in {}", stale, dir));
-    say(log.info, describe(c));
+    say(log.info, describe(given));
+    const EngineCase c = caseForRun(given, log);
     PistonSimulation sim(c);
     for (const ContactBuilder& build : contacts) sim.addContact(build(c, sim));
     const SkirtContact& skirt = sim.contact<SkirtContact>();

@@ -38,6 +38,8 @@ class PistonSimulation;
 using ContactBuilder = std::function<std::unique_ptr<FilmContact>(const EngineCase&, const PistonSimulation&)>;
 
 /// Runs `c` into c.output.directory (created; unfinished .tmp files of an earlier run removed).
+/// A ring pack's lands without given temperatures take them from the case's thermal file
+/// (thermalLandTemperatures: an info line, or a warning when the file has no ring-belt profile).
 /// A failed run writes summary.json with status "failed" and its message, then throws
 /// std::runtime_error with the message and where the partial results are.
 CaseRunResult runCase(const EngineCase& c, const RunLog& log = {}, const std::vector<ContactBuilder>& contacts = {});

@@ -91,8 +91,37 @@ CylindricalSurfaceSampler::CylindricalSurfaceSampler(const fem::Mesh& mesh, cons
     }
 }
 
-SurfaceTable CylindricalSurfaceSampler::sample(const Eigen::VectorXd& u, int nAxial, int nTheta) const {
+void CylindricalSurfaceSampler::checkSize(int nAxial, int nTheta) const {
     if (nAxial < 2 || nTheta < 3) throw std::invalid_argument("surface table needs n_z >= 2 and n_theta >= 3");
+}
+
+CylindricalSurfaceSampler::Location CylindricalSurfaceSampler::locate(double z, double th) const {
+    const double period = kTwoPi * radius_;
+    const double tol = 1e-10 * std::max(period, zMax_ - zMin_);
+    const double s0 = radius_ * (th > std::numbers::pi ? th - kTwoPi : th);  // in (−πR̄, πR̄]
+    double bestDist = 1e300;
+    Location out;
+    Eigen::Vector2d bestL(0, 0);
+    for (const Triangle& tri : triangles_)
+        for (double shift : {0.0, period, -period}) {
+            const Eigen::Vector2d p(z, s0 + shift);
+            // Lower bound of the distance by the bounding box: skip far triangles.
+            const Eigen::Vector2d gap = (tri.lo - p).cwiseMax(p - tri.hi).cwiseMax(0.0);
+            if (gap.norm() >= bestDist) continue;
+            double d = 0.0;
+            const Eigen::Vector2d L = closestBarycentric(p, tri.p, d);
+            if (d < bestDist) bestDist = d, out.triangle = &tri, bestL = L;
+        }
+    // Shape functions of the triangle at (ξ, η) = (L1, L2), Gmsh order.
+    const Eigen::Vector3d xi(bestL(0), bestL(1), 0.0);
+    if (mesh_.surface.type == fem::ElementType::Tri6) out.N = fem::Shape<fem::ElementType::Tri6>::N(xi);
+    else out.N = fem::Shape<fem::ElementType::Tri3>::N(xi);
+    out.onSurface = bestDist <= tol;
+    return out;
+}
+
+SurfaceTable CylindricalSurfaceSampler::sample(const Eigen::VectorXd& u, int nAxial, int nTheta) const {
+    checkSize(nAxial, nTheta);
     if (u.size() != 3 * mesh_.numNodes())
         throw std::invalid_argument("surface table: displacement has " + std::to_string(u.size()) +
                                     " values, expected 3 x " + std::to_string(mesh_.numNodes()));
@@ -102,36 +131,54 @@ SurfaceTable CylindricalSurfaceSampler::sample(const Eigen::VectorXd& u, int nAx
     out.onSurface.resize(nAxial, nTheta);
     for (int i = 0; i < nAxial; ++i) out.axial.push_back(zMin_ + (zMax_ - zMin_) * i / (nAxial - 1));
     for (int j = 0; j < nTheta; ++j) out.theta.push_back(kTwoPi * j / nTheta);
-    const double period = kTwoPi * radius_;
-    const double tol = 1e-10 * std::max(period, zMax_ - zMin_);
     for (int i = 0; i < nAxial; ++i)
         for (int j = 0; j < nTheta; ++j) {
             const double th = out.theta[std::size_t(j)];
-            const double s0 = radius_ * (th > std::numbers::pi ? th - kTwoPi : th);  // in (−πR̄, πR̄]
-            double bestDist = 1e300;
-            const Triangle* best = nullptr;
-            Eigen::Vector2d bestL(0, 0);
-            for (const Triangle& tri : triangles_)
-                for (double shift : {0.0, period, -period}) {
-                    const Eigen::Vector2d p(out.axial[std::size_t(i)], s0 + shift);
-                    // Lower bound of the distance by the bounding box: skip far triangles.
-                    const Eigen::Vector2d gap = (tri.lo - p).cwiseMax(p - tri.hi).cwiseMax(0.0);
-                    if (gap.norm() >= bestDist) continue;
-                    double d = 0.0;
-                    const Eigen::Vector2d L = closestBarycentric(p, tri.p, d);
-                    if (d < bestDist) bestDist = d, best = &tri, bestL = L;
-                }
-            // Shape functions of the triangle at (ξ, η) = (L1, L2), Gmsh order.
-            const Eigen::Vector3d xi(bestL(0), bestL(1), 0.0);
-            Eigen::VectorXd N;
-            if (mesh_.surface.type == fem::ElementType::Tri6) N = fem::Shape<fem::ElementType::Tri6>::N(xi);
-            else N = fem::Shape<fem::ElementType::Tri3>::N(xi);
+            const Location at = locate(out.axial[std::size_t(i)], th);
             Eigen::Vector3d disp = Eigen::Vector3d::Zero();
-            for (int a = 0; a < N.size(); ++a) disp += N(a) * u.segment<3>(3 * mesh_.surface.nodes(a, best->element));
+            for (int a = 0; a < at.N.size(); ++a)
+                disp += at.N(a) * u.segment<3>(3 * mesh_.surface.nodes(a, at.triangle->element));
             out.radial(i, j) = disp(0) * std::cos(th) + disp(1) * std::sin(th);
-            out.onSurface(i, j) = bestDist <= tol ? 1 : 0;
+            out.onSurface(i, j) = at.onSurface ? 1 : 0;
         }
     return out;
+}
+
+ScalarSurfaceTable CylindricalSurfaceSampler::sampleScalar(const Eigen::VectorXd& nodal, int nAxial,
+                                                           int nTheta) const {
+    checkSize(nAxial, nTheta);
+    if (nodal.size() != mesh_.numNodes())
+        throw std::invalid_argument("surface table: nodal field has " + std::to_string(nodal.size()) +
+                                    " values, expected " + std::to_string(mesh_.numNodes()));
+    ScalarSurfaceTable out;
+    out.values.resize(nAxial, nTheta);
+    out.onSurface.resize(nAxial, nTheta);
+    for (int i = 0; i < nAxial; ++i) out.axial.push_back(zMin_ + (zMax_ - zMin_) * i / (nAxial - 1));
+    for (int j = 0; j < nTheta; ++j) out.theta.push_back(kTwoPi * j / nTheta);
+    for (int i = 0; i < nAxial; ++i)
+        for (int j = 0; j < nTheta; ++j) {
+            const Location at = locate(out.axial[std::size_t(i)], out.theta[std::size_t(j)]);
+            double v = 0.0;
+            for (int a = 0; a < at.N.size(); ++a) v += at.N(a) * nodal(mesh_.surface.nodes(a, at.triangle->element));
+            out.values(i, j) = v;
+            out.onSurface(i, j) = at.onSurface ? 1 : 0;
+        }
+    return out;
+}
+
+AxialProfile axialProfile(const ScalarSurfaceTable& t) {
+    AxialProfile p;
+    p.axial = t.axial;
+    for (Eigen::Index i = 0; i < t.values.rows(); ++i) {
+        double on = 0.0, all = 0.0;
+        int nOn = 0;
+        for (Eigen::Index j = 0; j < t.values.cols(); ++j) {
+            all += t.values(i, j);
+            if (t.onSurface(i, j)) on += t.values(i, j), ++nOn;
+        }
+        p.values.push_back(nOn > 0 ? on / nOn : all / double(t.values.cols()));
+    }
+    return p;
 }
 
 }  // namespace flexehd::cosim

@@ -1,6 +1,8 @@
 #include "cosim/thermal/ThermalAnalysis.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -55,6 +57,10 @@ ThermalResult runThermalAnalysis(const ThermalCase& c, const std::function<void(
         const fem::Mesh& m = r.mesh;
         for (const auto& b : pc.convection) requireSurface(c, m, "piston.convection." + b.group, b.group);
         for (const auto& g : pc.surface) requireSurface(c, m, "piston.surface", g);
+        // The ring belt's profile: the groups given, or the default where the mesh has it.
+        const bool ringBelt = !pc.ringBelt.empty() && (pc.ringBeltGiven || m.hasGroup(pc.ringBelt.front()));
+        if (ringBelt)
+            for (const auto& g : pc.ringBelt) requireSurface(c, m, "piston.ring_belt", g);
         withKey(c, "piston.support", [&] { m.group(pc.support); });
         say(fmt::format("piston: {} nodes, {} {} elements; steady conduction with {} convection boundaries",
                         m.numNodes(), m.volume.size(), fem::name(m.volume.type), pc.convection.size()));
@@ -87,6 +93,24 @@ ThermalResult runThermalAnalysis(const ThermalCase& c, const std::function<void(
             return CylindricalSurfaceSampler(m, pc.surface).sample(r.deformation.displacement, c.axialNodes,
                                                                     c.circumferentialNodes);
         });
+        if (ringBelt) {
+            r.ringBelt = withKey(c, "piston.ring_belt", [&] {
+                const CylindricalSurfaceSampler belt(m, pc.ringBelt);
+                const int rows = std::max(
+                    c.axialNodes, int(std::ceil((belt.zMax() - belt.zMin()) / kRingBeltRowSpacing - 1e-9)) + 1);
+                return axialProfile(belt.sampleScalar(r.temperature, rows, c.circumferentialNodes));
+            });
+            say(fmt::format("piston: ring-belt surface temperature over z = {:.4f} … {:.4f} m: {:.1f} … {:.1f} K "
+                            "({} rows)",
+                            r.ringBelt->axial.front(), r.ringBelt->axial.back(),
+                            *std::min_element(r.ringBelt->values.begin(), r.ringBelt->values.end()),
+                            *std::max_element(r.ringBelt->values.begin(), r.ringBelt->values.end()),
+                            r.ringBelt->axial.size()));
+        } else if (!pc.ringBelt.empty()) {
+            say(fmt::format("piston: the mesh has no group '{}': thermal.h5 gets no ring-belt temperature profile "
+                            "(piston.ring_belt names the ring belt's outer surface)",
+                            pc.ringBelt.front()));
+        }
         r.seconds = secondsSince(t0);
     }
     if (c.liner) {

@@ -1,7 +1,7 @@
 #pragma once
 // The `flexehd thermal` pipeline on a ThermalCase (docs/thermal.md): piston — steady
 // conduction with convective boundaries, optional templug calibration, thermoelastic
-// solve supported at the pin, skirt table; liner — temperature from thermocouples,
+// solve supported at the pin, skirt table, the ring belt's surface temperature over z; liner — temperature from thermocouples,
 // thermoelastic solve on its seat, bore table. Writes nothing; reports progress through
 // a callback.
 #include <functional>
@@ -31,7 +31,14 @@ struct PistonThermalResult : ThermalBodyResult {
     fem::ConvectionParameters parameters;            ///< as used (fitted if calibrated)
     Eigen::VectorXd heatFlow;                        ///< W into the piston per convection boundary
     std::optional<fem::CalibrationResult> calibration;
+    /// The circumferential mean temperature (K) over z of the ring belt's outer surface
+    /// (PistonThermalCase::ringBelt), rows at most kRingBeltRowSpacing apart; none without it.
+    std::optional<AxialProfile> ringBelt;
 };
+
+/// m: the largest spacing of the ring-belt profile's rows (a tenth of a millimetre resolves lands
+/// and grooves of a millimetre and more).
+inline constexpr double kRingBeltRowSpacing = 0.1e-3;
 
 struct ThermalResult {
     std::optional<PistonThermalResult> piston;

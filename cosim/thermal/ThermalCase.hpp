@@ -28,6 +28,10 @@ struct PistonThermalCase {
     std::vector<fem::ConvectionBoundary> convection;
     std::string support = "pin_bore";        ///< group whose mean rigid motion is held
     std::vector<std::string> surface{"skirt", "skirt_taper"};  ///< sampled for thermal.h5
+    /// The outer surface across the ring belt whose temperature profile over z goes to thermal.h5
+    /// (/piston/ring_belt); empty: none. The default is skipped when the mesh has no such group.
+    std::vector<std::string> ringBelt{"ring_lands"};
+    bool ringBeltGiven = false;              ///< `piston.ring_belt` given: its groups must exist
     // Calibration (none if `parameters` is empty).
     std::vector<fem::CalibrationParameter> parameters;
     std::vector<fem::TemperatureMeasurement> templugs;

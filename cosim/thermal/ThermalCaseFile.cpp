@@ -115,7 +115,8 @@ const Range kExpansion{0.0, 1e-3, false, false, "a thermal expansion coefficient
 
 PistonThermalCase piston(const YamlSource& ctx, const YAML::Node& node) {
     const YamlSection s(ctx, node, "piston",
-                    {"mesh", "mesh_size", "element_order", "material", "convection", "support", "surface", "calibration"});
+                        {"mesh", "mesh_size", "element_order", "material", "convection", "support", "surface",
+                         "ring_belt", "calibration"});
     PistonThermalCase p;
     p.mesh = bodyMesh(s);
     const YamlSection mat(ctx, s.get("material"), "piston.material",
@@ -140,6 +141,9 @@ PistonThermalCase piston(const YamlSource& ctx, const YAML::Node& node) {
     if (p.convection.empty()) ctx.fail("piston.convection", conv, "at least one convection boundary is needed");
     p.support = text(s, "support", std::string("pin_bore"));
     p.surface = names(s, "surface", p.surface);
+    p.ringBeltGiven = s.has("ring_belt");
+    if (p.ringBeltGiven && !s.hasValue("ring_belt")) p.ringBelt.clear();  // `ring_belt:` or `[]`: no profile
+    else p.ringBelt = names(s, "ring_belt", p.ringBelt);
 
     if (s.hasValue("calibration")) {
         const YamlSection cal(ctx, s.get("calibration"), "piston.calibration",

@@ -63,6 +63,25 @@ private:
     Id file_;
 };
 
+// GROUP/ring_belt: the surface temperature's profile over z.
+void writeRingBelt(Writer& w, const std::string& g, const AxialProfile& p, const std::string& surface) {
+    const auto n = hsize_t(p.axial.size());
+    if (n < 2 || p.values.size() != p.axial.size()) w.fail(g + ": inconsistent profile sizes");
+    for (std::size_t k = 0; k < p.axial.size(); ++k) {
+        if (!std::isfinite(p.axial[k]) || (k > 0 && !(p.axial[k] > p.axial[k - 1])))
+            w.fail(g + ": z values are not finite and strictly increasing");
+        if (!std::isfinite(p.values[k]) || !(p.values[k] > 0.0))
+            w.fail(g + ": a temperature is not finite and positive");
+    }
+    w.group(g);
+    if (!surface.empty()) w.stringAttribute(g, "surface", surface);
+    w.stringAttribute(g, "quantity", "circumferential mean temperature of the outer surface");
+    w.dataset(g + "/z_m", {n}, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p.axial.data());
+    w.dataset(g + "/temperature_k", {n}, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p.values.data());
+    w.stringAttribute(g + "/z_m", "units", "m");
+    w.stringAttribute(g + "/temperature_k", "units", "K");
+}
+
 void writeBody(Writer& w, const std::string& g, const ThermalBodyTable& body) {
     const SurfaceTable& t = body.table;
     const auto nz = hsize_t(t.axial.size()), nt = hsize_t(t.theta.size());
@@ -85,6 +104,7 @@ void writeBody(Writer& w, const std::string& g, const ThermalBodyTable& body) {
     w.dataset(g + "/on_surface", {nz, nt}, H5T_STD_U8LE, H5T_NATIVE_UCHAR, t.onSurface.data());
     for (const auto& [name, unit] : {std::pair{"axial", "m"}, {"theta", "rad"}, {"radial_displacement", "m"}, {"on_surface", "1"}})
         w.stringAttribute(g + "/" + name, "units", unit);
+    if (body.ringBelt) writeRingBelt(w, g + "/ring_belt", *body.ringBelt, body.ringBeltSurface);
 }
 
 }  // namespace

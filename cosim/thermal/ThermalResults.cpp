@@ -110,6 +110,8 @@ nlohmann::json pistonSummary(const PistonThermalCase& pc, const PistonThermalRes
     if (p.calibration) j["calibration"] = calibrationSummary(pc, *p.calibration);
     j["support"] = {{"reference", pc.support}, {"determinate_reaction_relative", p.deformation.determinateReaction}};
     j["radial_displacement"] = tableSummary(p.table);
+    if (p.ringBelt)
+        j["ring_belt"] = {{"surface", pc.ringBelt}, {"z_m", p.ringBelt->axial}, {"temperature_k", p.ringBelt->values}};
     j["seconds"] = p.seconds;
     return j;
 }
@@ -152,13 +154,18 @@ nlohmann::json writeThermalResults(const std::string& dir, const std::string& ca
     };
     // The body's table for thermal.h5 with its attributes and provenance.
     auto table = [&](const ThermalBodyResult& b, const auto& bc) {
-        return ThermalBodyTable{b.table, bodyAttributes(b, c.referenceTemperature),
-                                {{"mesh", bc.mesh.path}, {"surface", fmt::format("{}", fmt::join(bc.surface, ","))}}};
+        ThermalBodyTable t;
+        t.table = b.table;
+        t.attributes = bodyAttributes(b, c.referenceTemperature);
+        t.textAttributes = {{"mesh", bc.mesh.path}, {"surface", fmt::format("{}", fmt::join(bc.surface, ","))}};
+        return t;
     };
     std::optional<ThermalBodyTable> pistonTable, linerTable;
     if (r.piston) {
         vtu("piston.vtu", *r.piston);
         pistonTable = table(*r.piston, *c.piston);
+        pistonTable->ringBelt = r.piston->ringBelt;
+        pistonTable->ringBeltSurface = fmt::format("{}", fmt::join(c.piston->ringBelt, ","));
         doc["piston"] = pistonSummary(*c.piston, *r.piston);
     }
     if (r.liner) {

@@ -17,6 +17,7 @@
 #include "cosim/casefile/CaseFile.hpp"
 #include "cosim/thermal/CylindricalSurfaceSampler.hpp"
 #include "cosim/thermal/LinerTemperature.hpp"
+#include "cosim/thermal/ThermalFileWriter.hpp"
 #include "cosim/contact/SkirtContact.hpp"
 #include "cosim/coupling/PistonSimulation.hpp"
 #include "cosim/clearance/ThermalDisplacementFile.hpp"
@@ -60,6 +61,73 @@ TEST(SurfaceTable, FreeExpansionOfASleeveGivesAlphaDeltaTR) {
         for (Eigen::Index i = 0; i < t.radial.rows(); ++i)
             EXPECT_NEAR(t.radial.row(i).mean(), alpha * dT * R, 1e-3 * alpha * dT * R) << group << " row " << i;
     }
+}
+
+// A temperature linear in z, T = 400 K + 2000 K/m z, sampled on the sleeve's outer and inner
+// cylinders: the profile over z (circumferential mean per row) is that line at every row — the
+// surface's shape functions reproduce a linear field exactly — and every point is on the surface.
+TEST(SurfaceTable, TemperatureProfileOfAFieldLinearInZIsThatLine) {
+    fem::MeshOptions order2;
+    order2.order = 2;
+    order2.size = 0.008;
+    const fem::Mesh m = fem::readMesh(kSource + "/tests/cosim/data/sleeve.geo", order2);
+    Eigen::VectorXd T(m.numNodes());
+    for (fem::Index n = 0; n < m.numNodes(); ++n) T(n) = 400.0 + 2000.0 * m.nodes(2, n);
+    for (const std::string group : {"outer", "inner"}) {
+        const cosim::ScalarSurfaceTable t = cosim::CylindricalSurfaceSampler(m, {group}).sampleScalar(T, 11, 24);
+        EXPECT_EQ(t.onSurface.cast<int>().sum(), 11 * 24) << group;
+        const cosim::AxialProfile p = cosim::axialProfile(t);
+        ASSERT_EQ(p.axial.size(), 11u);
+        EXPECT_NEAR(p.axial.front(), -0.030, 1e-9);
+        EXPECT_NEAR(p.axial.back(), 0.020, 1e-9);
+        for (std::size_t i = 0; i < p.axial.size(); ++i)
+            EXPECT_NEAR(p.values[i], 400.0 + 2000.0 * p.axial[i], 1e-9) << group << " row " << i;
+    }
+}
+
+// The mean of a piecewise-linear profile over a range is its integral over the range divided by
+// the length: z = 0, 1, 2 m with T = 0, 10, 10 K averages (3.75 + 5) / 1 = 8.75 K over 0.5 … 1.5 m,
+// and a linear profile averages to its value at the range's midpoint.
+TEST(SurfaceTemperatureProfile, MeanIsTheIntegralOverTheRange) {
+    const cosim::SurfaceTemperatureProfile kink{"test", {0.0, 1.0, 2.0}, {0.0, 10.0, 10.0}};
+    EXPECT_NEAR(kink.mean(0.5, 1.5), 8.75, 1e-12);
+    EXPECT_NEAR(kink.mean(1.2, 1.9), 10.0, 1e-12);
+    const cosim::SurfaceTemperatureProfile line{"test", {0.010, 0.015, 0.035}, {330.0, 350.0, 430.0}};  // 290 + 4000 z
+    EXPECT_NEAR(line.mean(0.012, 0.030), 290.0 + 4000.0 * 0.021, 1e-9);
+    std::string error;
+    try {
+        (void)line.mean(0.005, 0.020);
+    } catch (const std::out_of_range& e) {
+        error = e.what();
+    }
+    EXPECT_THAT(error, HasSubstr("test/z_m covers 0.01 … 0.035 m"));
+}
+
+// thermal.h5's ring-belt profile as the writer puts it and the run's reader reads it back; a file
+// without it (the liner alone here) reads with the profile absent.
+TEST(ThermalFile, RingBeltProfileIsWrittenAndReadBack) {
+    const fs::path dir = scratch();
+    cosim::SurfaceTable table;
+    table.axial = {0.0, 0.01};
+    table.theta = {0.0, 2 * std::numbers::pi / 3, 4 * std::numbers::pi / 3};
+    table.radial.setConstant(2, 3, 1e-5);
+    table.onSurface.setOnes(2, 3);
+    cosim::ThermalBodyTable piston, liner;
+    piston.table = liner.table = table;
+    piston.ringBelt = cosim::AxialProfile{{0.012, 0.020, 0.033}, {410.0, 430.0, 462.5}};
+    piston.ringBeltSurface = "ring_lands";
+    const std::string h5 = (dir / "thermal.h5").string();
+    cosim::writeThermalFile(h5, piston, liner);
+    const cosim::ThermalDisplacement t = cosim::readThermalDisplacementFile(h5);
+    ASSERT_TRUE(t.pistonRingBelt);
+    EXPECT_EQ(t.pistonRingBelt->z, (std::vector<double>{0.012, 0.020, 0.033}));
+    EXPECT_EQ(t.pistonRingBelt->temperature, (std::vector<double>{410.0, 430.0, 462.5}));
+    EXPECT_EQ(t.pistonRingBelt->where, h5 + ":/piston/ring_belt");
+
+    cosim::writeThermalFile(h5, std::nullopt, liner);
+    EXPECT_FALSE(cosim::readThermalDisplacementFile(h5).pistonRingBelt);
+    piston.ringBelt->values[1] = -1.0;
+    EXPECT_THROW(cosim::writeThermalFile(h5, piston, std::nullopt), std::runtime_error);
 }
 
 // Thermocouples at two radii, temperatures linear in z: T(r, z) = a + b z + c r reproduced
@@ -198,6 +266,20 @@ TEST(ThermalCli, WritesThermalFileWithAgreedLayoutAndVtu) {
         EXPECT_EQ(dims(file, g + "/theta"), std::vector<hsize_t>({24}));
         EXPECT_EQ(dims(file, g + "/radial_displacement"), std::vector<hsize_t>({16, 24}));
     }
+    // The ring belt's outer-surface temperature over z, on the piston only: piston.geo's ring_lands
+    // span z = 12.3 mm (the band below the oil groove) … 33.0 mm (the crown's edge), 20.7 mm in rows
+    // at most 0.1 mm apart (≥ 208).
+    const std::vector<hsize_t> rows = dims(file, "/piston/ring_belt/z_m");
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_GE(rows[0], 208u);
+    EXPECT_EQ(dims(file, "/piston/ring_belt/temperature_k"), rows);
+    for (const auto& [name, unit] : {std::pair{"z_m", "m"}, {"temperature_k", "K"}}) {
+        const hid_t d = H5Dopen2(file, ("/piston/ring_belt/" + std::string(name)).c_str(), H5P_DEFAULT);
+        ASSERT_GE(d, 0) << name;
+        EXPECT_EQ(stringAttribute(d, "units"), unit) << name;
+        H5Dclose(d);
+    }
+    EXPECT_EQ(H5Lexists(file, "/liner/ring_belt", H5P_DEFAULT), 0);
     H5Fclose(file);
 
     // And through the reader `flexehd run` uses.
@@ -207,6 +289,14 @@ TEST(ThermalCli, WritesThermalFileWithAgreedLayoutAndVtu) {
     EXPECT_NEAR(t.piston->axial.back(), 0.0123, 1e-6);    // top of the skirt taper
     EXPECT_NEAR(t.liner->axial.front(), -0.160, 1e-6);    // liner frame
     EXPECT_NEAR(t.liner->axial.back(), 0.0, 1e-6);
+    ASSERT_TRUE(t.pistonRingBelt);
+    EXPECT_NEAR(t.pistonRingBelt->z.front(), 0.0123, 1e-6);
+    EXPECT_NEAR(t.pistonRingBelt->z.back(), 0.0330, 1e-6);
+    for (double T : t.pistonRingBelt->temperature) {
+        EXPECT_GE(T, double(doc["piston"]["temperature"]["min_k"]));
+        EXPECT_LE(T, double(doc["piston"]["temperature"]["max_k"]));
+    }
+    EXPECT_EQ(doc["piston"]["ring_belt"]["temperature_k"].size(), t.pistonRingBelt->temperature.size());
     // Plausibility: hot aluminium skirt grows outward by α (T − T_ref) R within the range of its
     // temperatures; the bore grows outward.
     const double R = 0.04295, a = 2.1e-5, Tref = 293.15;
@@ -216,6 +306,38 @@ TEST(ThermalCli, WritesThermalFileWithAgreedLayoutAndVtu) {
     EXPECT_GT(uSkirt, 0.5 * uMin);
     EXPECT_LT(uSkirt, 1.5 * uMax);
     EXPECT_GT(t.liner->at(-0.08, 1.0), 0.0);
+}
+
+// Every convection boundary at the same fluid temperature, 400 K: the steady piston is at 400 K
+// throughout (no heat flows), so the ring belt's profile is 400 K at every z. A ring_belt group
+// that the mesh lacks is an error naming the key.
+TEST(ThermalCli, OneFluidTemperatureEverywhereGivesAUniformRingBeltProfile) {
+    const fs::path dir = scratch();
+    const std::string text = "grid: {axial_nodes: 16, circumferential_nodes: 24}\n"
+                             "piston:\n"
+                             "  mesh: " + kSource + "/meshes/piston.geo\n"
+                             "  mesh_size: 0.0065\n"
+                             "  material: {youngs_modulus: 7.5e10, poisson_ratio: 0.33, conductivity: 150.0, "
+                             "expansion: 2.1e-5}\n"
+                             "  ring_belt: [ring_lands]\n"
+                             "  convection:\n"
+                             "    crown: {h: 300.0, fluid_temperature: 400.0}\n"
+                             "    ring_lands: {h: 150.0, fluid_temperature: 400.0}\n"
+                             "    skirt: {h: 600.0, fluid_temperature: 400.0}\n"
+                             "    underside: {h: 500.0, fluid_temperature: 400.0}\n";
+    const auto r = test::runFlexehd("thermal " + writeCase(dir, text) + " --out " + (dir / "out").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const cosim::ThermalDisplacement t = cosim::readThermalDisplacementFile((dir / "out" / "thermal.h5").string());
+    ASSERT_TRUE(t.pistonRingBelt);
+    EXPECT_FALSE(t.liner);
+    for (double T : t.pistonRingBelt->temperature) EXPECT_NEAR(T, 400.0, 1e-6);
+
+    std::string bad = text;
+    bad.replace(bad.find("ring_belt: [ring_lands]"), 23, "ring_belt: [ring_land]");
+    const auto e = test::runFlexehd("thermal " + writeCase(dir, bad) + " --out " + (dir / "out2").string());
+    EXPECT_EQ(e.status, 1);
+    EXPECT_THAT(e.err, HasSubstr("piston.ring_belt"));
+    EXPECT_THAT(e.err, HasSubstr("ring_land"));
 }
 
 TEST(ThermalCli, UnknownKeyNamesTheKey) {
