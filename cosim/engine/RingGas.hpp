@@ -10,12 +10,15 @@ namespace flexehd::cosim {
 /// lower flank, its groove's lower flank clearance) and, with ring_gas.ring_lift, its axial
 /// position in the groove (m above the lower flank) and the force per unit of the bore's
 /// circumference (N/m) its flank exerts on it (> 0 the lower flank pushing up, < 0 the upper
-/// flank pushing down, 0 in flight).
+/// flank pushing down, 0 in flight), and the opening of its face off the liner where the gas has
+/// collapsed it at the step's end and at its start (m, 0 on the liner; the flow past it then
+/// includes its face's).
 struct RingGas {
     double above = 0.0, behind = 0.0, below = 0.0;
     double flow = 0.0;
     double position = 0.0;
     double flankForce = 0.0;
+    double faceOpening = 0.0, faceOpeningBefore = 0.0;
 };
 
 }  // namespace flexehd::cosim

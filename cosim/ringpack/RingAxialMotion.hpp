@@ -9,7 +9,8 @@
 //   carries −F), lifting when F changes sign,
 //
 // stepped semi-implicitly (velocity, then position); reaching a flank the ring stops there
-// (inelastic: the oil in the groove takes the impact).
+// (inelastic: the oil in the groove takes the impact). RingPackGas steps a ring's radial collapse
+// by the same law, between the liner and its groove's root.
 namespace flexehd::cosim {
 
 class RingAxialMotion {

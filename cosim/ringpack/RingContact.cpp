@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -157,15 +158,27 @@ const RingRadialStep& RingContact::radialStep(const ContactStep& step, const Con
         for (int k = 0; k < faces_; ++k) supply->previousFraction.push_back(now.fraction.segment(k * nodes_, nodes_));
     }
     const Cached key{now.minGap, step.dt, step.pistonVelocity, gas_.above, gas_.behind, gas_.below,
-                     supply ? supply->film : -1.0};
+                     supply ? supply->film : -1.0, gas_.faceOpening, gas_.faceOpeningBefore};
     if (cachedFor_ == key) return cached_;
     lube::RingFilmState conditions;
     conditions.slidingSpeed = U;
     conditions.pressureAbove = gas_.above;
     conditions.pressureBelow = gas_.below;
     cachedFor_.reset();  // a failed step leaves no stale result behind
+    const RingSupply* oil = supply ? &*supply : nullptr;
+    if (gas_.faceOpening > 0.0 || gas_.faceOpeningBefore > 0.0) {
+        // Off the liner (ring lift): the gas moves the ring (RingPackGas's radial collapse), its
+        // film carried along at the gap the opening's change leaves.
+        cached_ = radial_.at(now.minGap + gas_.faceOpening - gas_.faceOpeningBefore, now.minGap, step.dt, conditions, oil);
+        cachedFor_ = key;
+        return cached_;
+    }
     try {
-        cached_ = radial_.step(now.minGap, step.dt, conditions, pressure, guess, supply ? &*supply : nullptr);
+        // With ring lift, where no gap up to the groove's root balances the ring, the gas pushes
+        // it off the liner: it stays where it was until RingPackGas's radial collapse moves it.
+        cached_ = radial_.step(now.minGap, step.dt, conditions, pressure, guess, oil,
+                               lift_ ? ring_.groove.backClearance : std::numeric_limits<double>::quiet_NaN());
+        if (cached_.atStop) cached_ = radial_.at(now.minGap, now.minGap, step.dt, conditions, oil);
     } catch (const std::runtime_error& e) {
         // No gap balances the ring when the gas on its face outweighs its tension and the gas
         // behind it: the ring collapses off the liner, which the radial balance does not model.
@@ -174,7 +187,7 @@ const RingRadialStep& RingContact::radialStep(const ContactStep& step, const Con
             e.what(), gas_.above, gas_.behind, gas_.below,
             gas_.behind < std::max(gas_.above, gas_.below)
                 ? ": the gas on its face outweighs its tension and the gas behind it, so the ring would collapse "
-                  "radially, which is not modelled (docs/ring-pack.md, \"Ring lift in a run\")"
+                  "radially, which a run models with ring_gas.ring_lift (docs/ring-pack.md, \"Ring collapse in a run\")"
                 : ""));
     }
     cachedFor_ = key;
@@ -302,7 +315,7 @@ const std::vector<std::string>& RingContact::figureNames() {
     static const std::vector<std::string> names{"min_film_m", "friction_power_mean_w", "fmep_pa",
                                                 "boundary_friction_power_mean_w", "gas_below_max_pa",
                                                 "gas_flow_mean_kg_per_s", "gas_flow_mean_l_per_min",
-                                                "lifts_per_cycle", "gas_behind_max_pa"};
+                                                "lifts_per_cycle", "gas_behind_max_pa", "face_opening_max_m"};
     return names;
 }
 
@@ -340,6 +353,7 @@ std::vector<ContactColumn> RingContact::columns() const {
             all.push_back({column + "axial_position_m",
                            {{figure + f[7], CycleStatistic::Departures}, {figure + "lift_deg", CycleStatistic::DepartureAngles}}});
             all.push_back({column + "gas_behind_pa", {{figure + f[8], CycleStatistic::Maximum}}});
+            all.push_back({column + "face_opening_m", {{figure + f[9], CycleStatistic::Maximum}}});
         }
     }
     return all;
@@ -358,6 +372,7 @@ void RingContact::columnValues(const ContactIterate& it, std::vector<double>& va
         if (lift_) {
             values.push_back(gas_.position);
             values.push_back(gas_.behind + crankcasePressure_);
+            values.push_back(gas_.faceOpening);
         }
     }
 }

@@ -70,8 +70,9 @@ public:
     /// takes from the piston, −F_z v_p), _boundary_friction_power_w; summary.json
     /// rings.<name>.min_film_m, the powers' cycle means and the ring's fmep_pa; on the liner's
     /// oil layer also _oil_left_m, the layer its trailing edge leaves (outflow / |U|); with
-    /// ring_gas its gas columns and, with ring lift, _axial_position_m and _gas_behind_pa (its
-    /// lifts per cycle and their crank angles in summary.json).
+    /// ring_gas its gas columns and, with ring lift, _axial_position_m, _gas_behind_pa and
+    /// _face_opening_m (its lifts per cycle and their crank angles, the largest face opening in
+    /// summary.json).
     std::vector<ContactColumn> columns() const override;
     void columnValues(const ContactIterate& it, std::vector<double>& values) const override;
 
@@ -126,7 +127,7 @@ private:
     double crankcasePressure_ = 0.0;  // Pa, absolute
     RingGas gas_;                     // round the ring at the last evaluated step
     struct Cached {
-        double gapNow, dt, velocity, above, behind, below, supply;
+        double gapNow, dt, velocity, above, behind, below, supply, opening, openingBefore;
         bool operator==(const Cached&) const = default;
     };
     std::optional<Cached> cachedFor_;

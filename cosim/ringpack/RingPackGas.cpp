@@ -4,6 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -22,6 +25,13 @@ double grooveVolume(const EngineCase& c, const RingSpec& r) {
     const double back = kPi * backDiameter * width * r.groove.backClearance;
     const double side = kPi * (bore - r.radialWidth) * r.radialWidth * r.groove.sideClearance;
     return back + side;
+}
+
+// The width of ring r's running faces together (m): its face, or the oil-control ring's two lands.
+double runningWidth(const RingSpec& r) {
+    if (r.lands) return 2.0 * r.lands->width;
+    if (r.face.table.empty()) return r.height;
+    return r.face.table.back().first - r.face.table.front().first;
 }
 
 // Land i: the annulus of the land's height between ring i's groove and ring i + 1's.
@@ -56,7 +66,7 @@ RingPackGas::RingPackGas(const EngineCase& c)
         const RingSpec& r = c.rings[i];
         gaps_.push_back(g.dischargeCoefficient * r.closedGap * g.landClearance);
         rings_.push_back({kPi * (c.engine.bore - r.radialWidth) * r.radialWidth, kPi * (c.engine.bore - r.radialWidth),
-                          r.mass, r.groove.sideClearance});
+                          r.mass, r.groove.sideClearance, r.tensionPerLength / runningWidth(r), runningWidth(r)});
     }
     for (std::size_t i = 0; i + 1 < n; ++i) {
         // Without lift ring i + 1's groove is part of the land above it.
@@ -71,15 +81,19 @@ RingPackGas::RingPackGas(const EngineCase& c)
             all.push_back(grooves_.back());
             temperatures.push_back(n == 1 ? RingGasSpec::kLandTemperature : landTemperature(std::min(i, n - 2)));
             motion_.emplace_back(c.rings[i].mass / circumference_, c.rings[i].groove.sideClearance);
+            collapse_.emplace_back(c.rings[i].mass / circumference_, c.rings[i].groove.backClearance);
         }
     // Orifices: each ring's end gap (index i), then with lift its upper and lower flank clearances
-    // (n + 2i, n + 2i + 1), closed while the ring rests on its lower flank.
+    // (n + 2i, n + 2i + 1), closed while the ring rests on its lower flank, and its face (3n + i),
+    // closed while the ring is on the liner.
     for (std::size_t i = 0; i < n; ++i) orifices.push_back({above(i), below(i), gaps_[i]});
-    if (lift_)
+    if (lift_) {
         for (std::size_t i = 0; i < n; ++i) {
             orifices.push_back({above(i), behind(i), dischargeCoefficient_ * rings_[i].flankLength * rings_[i].sideClearance});
             orifices.push_back({behind(i), below(i), 0.0});
         }
+        for (std::size_t i = 0; i < n; ++i) orifices.push_back({above(i), below(i), 0.0});
+    }
     if (!all.empty()) accepted_.emplace(GasProperties{}, all, temperatures, orifices, crankcase_);
     around_.resize(n);
 }
@@ -109,6 +123,7 @@ void RingPackGas::moveRings(double dt, double cylinderPressure, double accelerat
     // nets to the faces' area times half the pressure difference below − above — its inertia
     // −m A and the liner film's friction at the last accepted step.
     trialMotion_ = motion_;
+    trialCollapse_ = collapse_;
     const std::size_t n = rings_.size();
     for (std::size_t i = 0; i < n; ++i) {
         const double pAbove = pressure(above(i), &*accepted_, cylinderPressure);
@@ -120,12 +135,17 @@ void RingPackGas::moveRings(double dt, double cylinderPressure, double accelerat
         const double opening = dischargeCoefficient_ * rings_[i].flankLength;
         trial_->setOrificeArea(static_cast<int>(n + 2 * i), opening * (clearance - z));
         trial_->setOrificeArea(static_cast<int>(n + 2 * i + 1), opening * z);
+        // Off the liner: the gas on the face beyond what its tension and the gas behind it hold,
+        // over its running width, drives it inwards (+) across the back clearance.
+        trialCollapse_[i].step(dt, -rings_[i].runningWidth * margin(i, *accepted_, cylinderPressure));
+        trial_->setOrificeArea(face(i), dischargeCoefficient_ * circumference_ * trialCollapse_[i].position());
     }
 }
 
 const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressure, double acceleration,
                                                const std::vector<double>& friction) {
     const std::size_t n = around_.size();
+    lastCylinder_ = cylinderPressure;
     if (accepted_) {
         trial_ = *accepted_;
         if (lift_) moveRings(dt, cylinderPressure, acceleration, friction);
@@ -138,24 +158,39 @@ const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressur
         r.behind = pressure(behind(i), gas, cylinderPressure) - crankcase_;
         r.below = pressure(below(i), gas, cylinderPressure) - crankcase_;
         const auto k = static_cast<int>(i);
-        r.flow = gas ? gas->flow(k) + (lift_ ? gas->flow(static_cast<int>(n) + 2 * k + 1) : 0.0)
+        r.flow = gas ? gas->flow(k) + (lift_ ? gas->flow(static_cast<int>(n) + 2 * k + 1) + gas->flow(face(i)) : 0.0)
                      : orificeFlow(GasProperties{}, gaps_[i], cylinderPressure, crankcase_,
                                    RingGasSpec::kLandTemperature, RingGasSpec::kLandTemperature);
         r.position = lift_ ? trialMotion_[i].position() : 0.0;
         r.flankForce = lift_ ? trialMotion_[i].flankForce() : 0.0;
+        r.faceOpening = lift_ ? trialCollapse_[i].position() : 0.0;
+        r.faceOpeningBefore = lift_ ? collapse_[i].position() : 0.0;
     }
     return around_;
 }
 
+double RingPackGas::margin(std::size_t i, const InterRingGas& gas, double cylinderPressure) const {
+    return rings_[i].faceMargin + pressure(behind(i), &gas, cylinderPressure) -
+           0.5 * (pressure(above(i), &gas, cylinderPressure) + pressure(below(i), &gas, cylinderPressure));
+}
+
+double RingPackGas::collapseMargin(std::size_t i) const {
+    if (!lift_ || !trial_) return std::numeric_limits<double>::infinity();
+    return margin(i, *trial_, lastCylinder_);
+}
+
 void RingPackGas::accept() {
     if (trial_) accepted_ = *trial_;
-    if (lift_) motion_ = trialMotion_;
+    if (lift_) {
+        motion_ = trialMotion_;
+        collapse_ = trialCollapse_;
+    }
 }
 
 double RingPackGas::inflow() const {
     // From the cylinder: the top ring's end gap (orifice 0) and, with lift, its upper flank (n).
     if (!trial_) return around_.empty() ? 0.0 : around_.front().flow;
-    return trial_->flow(0) + (lift_ ? trial_->flow(static_cast<int>(around_.size())) : 0.0);
+    return trial_->flow(0) + (lift_ ? trial_->flow(static_cast<int>(around_.size())) + trial_->flow(face(0)) : 0.0);
 }
 
 double RingPackGas::blowBy() const {

@@ -9,8 +9,18 @@
 // it. With ring_gas.ring_lift each ring moves axially in its groove (RingAxialMotion, "Ring lift in
 // a run") and each groove is a volume of its own, joined to the space above the ring through its
 // upper flank's clearance and to the space below through its lower flank's, each opening as the
-// ring leaves that flank. A step's pressures follow from the cylinder pressure at its end
-// (backward Euler, from the last accepted step's); they are kept when the step is accepted.
+// ring leaves that flank. With lift a ring also leaves the liner when the gas on its face
+// outweighs its tension and the gas behind it (radial collapse, "Ring collapse in a run"): per
+// unit circumference the ring of mass m moves inwards across its groove's back clearance under
+//
+//   m g̈ = −n_f b [T/(n_f b) + p_behind − ½ (p_above + p_below)]
+//
+// (g its face's opening off the liner, T its tension per unit circumference, n_f b its running
+// faces' width, the bracket its collapse margin: the gas balance of a face far from the liner),
+// stepped as its axial motion (RingAxialMotion across [0, back clearance], held on the liner while
+// the margin is ≥ 0), and its face is an orifice of C_d πD g from the space above it to the space
+// below. A step's pressures follow from the cylinder pressure at its end (backward Euler, from the
+// last accepted step's); they are kept when the step is accepted.
 #include <optional>
 #include <vector>
 
@@ -52,28 +62,38 @@ public:
     double blowBy() const;
     /// kg, the gas in the lands and grooves at the accepted state.
     double mass() const { return accepted_ ? accepted_->mass() : 0.0; }
+    /// Pa, ring i's collapse margin at the last trial: T/(n_f b) + p_behind − ½ (p_above + p_below),
+    /// below zero where its face would leave the liner (with ring lift; without, +∞).
+    double collapseMargin(std::size_t i) const;
 
 private:
     // The network's ends round ring i: the space above it, below it, and behind it (its groove).
     int above(std::size_t i) const;
     int below(std::size_t i) const;
     int behind(std::size_t i) const;
+    int face(std::size_t i) const { return static_cast<int>(3 * rings_.size() + i); }  // its face's orifice
     double pressure(int node, const InterRingGas* gas, double cylinder) const;
     /// Each ring's step in its groove and its flanks' openings (ring lift).
     void moveRings(double dt, double cylinderPressure, double acceleration, const std::vector<double>& friction);
+    /// Ring i's collapse margin (Pa) in `gas` with the cylinder at cylinderPressure (Pa).
+    double margin(std::size_t i, const InterRingGas& gas, double cylinderPressure) const;
 
     struct Ring {
         double faceArea;       // m², the ring's side face π (D − w) w
         double flankLength;    // m, the flank clearance's circumference π (D − w)
         double mass;           // kg
         double sideClearance;  // m
+        double faceMargin;     // Pa, T/(n_f b): the gas excess on the face its tension holds
+        double runningWidth;   // m, n_f b
     };
     double crankcase_, circumference_, dischargeCoefficient_;
     bool lift_;
     std::vector<Ring> rings_;
     std::vector<double> volumes_, grooves_, temperatures_, gaps_;
+    double lastCylinder_ = 0.0;  // Pa, the last trial's cylinder pressure
     std::optional<InterRingGas> accepted_, trial_;  // lands and grooves (none: a single ring without lift)
     std::vector<RingAxialMotion> motion_, trialMotion_;
+    std::vector<RingAxialMotion> collapse_, trialCollapse_;  // each face's opening off the liner
     std::vector<RingGas> around_;
 };
 

@@ -83,42 +83,74 @@ double RingRadialMotion::faceFilms(const lube::RingFilmState& c, double dt, cons
     return load / faces_;
 }
 
-RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::RingFilmState& conditions,
-                                      double backPressure, double guess, const RingSupply* supply) const {
+void RingRadialMotion::trial(double h, double gapNow, double dt, const lube::RingFilmState& conditions,
+                             const RingSupply* supply, RingRadialStep& s,
+                             std::vector<std::vector<char>>& cavitated) const {
+    // The film sees the gap down to its floor (the asperities' mean planes may come closer).
+    const double floor = filmFloor();
+    lube::RingFilmState c = conditions;
+    c.withFriction = false;  // the trials need the load; the balance's film gets its friction at the end
+    c.minimumGap = std::max(h, floor);
+    c.nominalGap = h;
+    c.squeezeRate = (c.minimumGap - std::max(gapNow, floor)) / dt;
+    s.filmLoad = faceFilms(c, dt, supply, s, cavitated);
+    s.minimumGap = h;
+    s.squeezeRate = c.squeezeRate;
+    s.asperityLoad = asperityLoad(h);
+}
+
+void RingRadialMotion::checkStep(double gapNow, double dt, const RingSupply* supply) const {
     if (supply && supply->previousFraction.size() != static_cast<std::size_t>(faces_))
         throw std::invalid_argument(fmt::format("RingRadialMotion::step: {} faces' film fractions for {} faces",
                                                 supply->previousFraction.size(), faces_));
     if (!std::isfinite(gapNow) || !(dt > 0.0) || (!asperity_ && !(gapNow > 0.0)))
         throw std::invalid_argument("RingRadialMotion::step: the step must be positive and the last gap finite (positive "
                                     "without asperities)");
+}
+
+RingRadialStep RingRadialMotion::at(double gap, double gapNow, double dt, const lube::RingFilmState& conditions,
+                                    const RingSupply* supply) const {
+    checkStep(gapNow, dt, supply);
+    RingRadialStep s;
+    std::vector<std::vector<char>> cavitated(static_cast<std::size_t>(faces_));
+    trial(gap, gapNow, dt, conditions, supply, s, cavitated);
+    for (std::size_t f = 0; f < s.faces.size(); ++f) film_.addFriction(s.states[f], s.faces[f]);
+    return s;
+}
+
+RingRadialStep RingRadialMotion::step(double gapNow, double dt, const lube::RingFilmState& conditions,
+                                      double backPressure, double guess, const RingSupply* supply,
+                                      double stop) const {
+    checkStep(gapNow, dt, supply);
     const double load = tension_ + backPressure * (film_.profile().upper() - film_.profile().lower());
     RingRadialStep s;
-    // The resistance W_film + W_asperity − load at the trial gap h (falls as h grows).
-    // The film sees the gap down to its floor (the asperities' mean planes may come closer).
     const double floor = filmFloor();
     // Each trial's films start from the last trial's cavitated sets.
     std::vector<std::vector<char>> cavitated(static_cast<std::size_t>(faces_));
+    // The resistance W_film + W_asperity − load at the trial gap h (falls as h grows).
     auto excess = [&](double h) {
-        lube::RingFilmState c = conditions;
-        c.withFriction = false;  // the trials need the load; the balance's film gets its friction at the end
-        c.minimumGap = std::max(h, floor);
-        c.nominalGap = h;
-        c.squeezeRate = (c.minimumGap - std::max(gapNow, floor)) / dt;
-        s.filmLoad = faceFilms(c, dt, supply, s, cavitated);
-        s.minimumGap = h;
-        s.squeezeRate = c.squeezeRate;
-        s.asperityLoad = asperityLoad(h);
+        trial(h, gapNow, dt, conditions, supply, s, cavitated);
         return s.filmLoad + s.asperityLoad - load;
     };
     // The bracket: from the guess (or the last gap) outwards in growing steps, within [lowest, highest].
     const double lowest = asperity_ ? -kDeepestGap * asperity_->sigma() : floor;
-    const double highest = 1e3 * std::max(gapNow, floor);
+    const bool stopped = std::isfinite(stop);
+    if (stopped && !(stop > floor))
+        throw std::invalid_argument(fmt::format("RingRadialMotion::step: the ring's stop ({:.4g} m) must lie above the "
+                                                "film's floor ({:.4g} m)",
+                                                stop, floor));
+    const double highest = stopped ? stop : 1e3 * std::max(gapNow, floor);
     const double scale = asperity_ ? asperity_->sigma() : std::max(gapNow, floor);
     const bool guessed = std::isfinite(guess);
     double lo = std::clamp(guessed ? guess : gapNow, lowest, highest), hi = lo;
     double flo = excess(lo), fhi = flo;
     for (double step = (guessed ? 1e-3 : 1e-2) * scale; flo < 0.0 || fhi > 0.0; step *= 4.0) {
         const bool down = flo < 0.0;  // the balance lies below: too little resistance at lo
+        if (!down && hi >= highest && stopped) {  // at its stop, the last trial's (hi's) state
+            for (std::size_t f = 0; f < s.faces.size(); ++f) film_.addFriction(s.states[f], s.faces[f]);
+            s.atStop = true;
+            return s;
+        }
         if ((down && lo <= lowest) || (!down && hi >= highest))
             throw std::runtime_error(fmt::format("RingRadialMotion: no radial balance of the ring between gaps {:.4g} "
                                                  "and {:.4g} m (load {:.4g} N/m)",

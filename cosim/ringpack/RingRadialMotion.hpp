@@ -39,6 +39,7 @@ struct RingRadialStep {
     double minimumGap = 0.0;    ///< h_min at the step's end (m)
     double squeezeRate = 0.0;   ///< (h_min − h_min,n)/Δt (m/s)
     double filmLoad = 0.0;      ///< N/m, per face (the faces' mean)
+    bool atStop = false;        ///< the ring rests at its stop (the groove's root), off the liner
     double asperityLoad = 0.0;  ///< N/m, per face
     /// Each face's film, bottom first (flooded: one, the faces being alike), and its state.
     std::vector<lube::RingFilmResult> faces;
@@ -57,10 +58,19 @@ public:
     /// ring (Pa). Throws std::runtime_error when no balance exists between −2σ (without asperities
     /// the film's floor) and 1e3 h_min,n.
     /// guess: where to start looking for the balance (NaN: at h_min,n); supply: the oil layer the
-    /// ring runs on (null: flooded).
+    /// ring runs on (null: flooded); stop: the largest gap (m), where the ring's back meets its
+    /// groove's root (NaN: none, the search ends at 1e3 h_min,n): where even there the film and the
+    /// gas on the face outweigh the load, the ring rests at its stop (the groove's root carrying
+    /// the rest) instead of the throw.
     RingRadialStep step(double gapNow, double dt, const lube::RingFilmState& conditions, double backPressure,
                         double guess = std::numeric_limits<double>::quiet_NaN(),
-                        const RingSupply* supply = nullptr) const;
+                        const RingSupply* supply = nullptr,
+                        double stop = std::numeric_limits<double>::quiet_NaN()) const;
+
+    /// The ring's films at the gap h (m) of a step of dt (s) from h_min,n = gapNow (m), without
+    /// its balance: a ring off the liner, moved by the gas (RingPackGas's radial collapse).
+    RingRadialStep at(double gap, double gapNow, double dt, const lube::RingFilmState& conditions,
+                      const RingSupply* supply = nullptr) const;
 
     /// The asperity load (N/m) at the minimum gap h (m): the Greenwood–Tripp pressure over the
     /// face (trapezoidal rule, 400 intervals), interpolated by cubic Hermite on its values and
@@ -76,6 +86,10 @@ public:
     static constexpr double kDeepestGap = 2.0;   ///< the bracket's lower end: −2σ (the asperity law's table)
 
 private:
+    void checkStep(double gapNow, double dt, const RingSupply* supply) const;
+    /// The films and asperity load at the trial gap h into s (without friction).
+    void trial(double h, double gapNow, double dt, const lube::RingFilmState& conditions, const RingSupply* supply,
+               RingRadialStep& s, std::vector<std::vector<char>>& cavitated) const;
     /// ∫ p_c(h + drop(x)) dx over the face, or the integral of its slope dp_c/dh.
     double faceIntegral(double h, bool slope) const;
     /// The faces' films at the trial state c (gap, squeeze rate), each starting from its last

@@ -11,7 +11,14 @@
 //  - In the example's run the top ring sits on its lower flank through the firing, where the gas
 //    above it presses it down, and lifts where summary.json says; the flanks' openings add paths
 //    to the gaps', so the blow-by rises.
+//  - Radial collapse ("Ring collapse in a run"): a ring held on its upper flank, its groove open
+//    to the crankcase below, keeps its face on the liner while the cylinder's gas exceeds the
+//    crankcase's by less than 2T/b, and leaves it above: its face's opening grows as ½ a t² with
+//    a = (the excess's force)/(its mass) and passes the orifice law's flow. In a run at 7000 rpm
+//    motored each face opens exactly where the force balance computed from history.csv's own
+//    pressure columns says.
 #include "cosim/casefile/CaseFile.hpp"
+#include "cosim/casefile/PressureTable.hpp"
 #include "cosim/run/CaseRun.hpp"
 #include "cosim/ringpack/RingPackGas.hpp"
 #include "../TestScratch.hpp"
@@ -112,7 +119,11 @@ TEST(RingLift, WithoutGasARingLeavesItsLowerFlankWhereThePistonDeceleratesPastGr
 TEST(RingLift, OnTheUpperFlankTheGrooveHoldsTheGasOfTheLandBelow) {
     const double pc = 20e5, upward = -2e5;  // m/s²: the inertia lifts every ring against the gas
     auto settle = [&](bool lift) {
-        RingPackGas gas(examplePack(lift));
+        // Rings with a hundred times their tension: no face leaves the liner (this test is of the
+        // grooves; the collapse has its own).
+        EngineCase c = examplePack(lift);
+        for (RingSpec& r : c.rings) r.tensionPerLength *= 100.0;
+        RingPackGas gas(c);
         for (int i = 0; i < 200; ++i) {
             gas.trial(1.0, pc, lift ? upward : 0.0);
             gas.accept();
@@ -201,4 +212,99 @@ TEST(RingLift, TheTopRingSitsOnItsLowerFlankThroughTheFiringAndTheFlanksAddBlowB
     ASSERT_EQ(ring.at("lift_deg").size(), lifts.size());
     for (std::size_t i = 0; i < lifts.size(); ++i) EXPECT_NEAR(ring.at("lift_deg")[i].get<double>(), lifts[i], 1e-9);
     EXPECT_GT(summary["blow_by"]["mean_kg_per_s"].get<double>(), plain["blow_by"]["mean_kg_per_s"].get<double>());
+}
+
+TEST(RingCollapse, AFaceLeavesTheLinerWhereTheGasAcrossItExceedsTwiceItsTensionOverItsWidth) {
+    // The top ring alone, held on its upper flank by the inertia: its groove is open to the
+    // crankcase below, so the gas behind it is the crankcase's.
+    EngineCase c = examplePack(true);
+    c.rings.resize(1);
+    const RingSpec& ring = c.rings.front();
+    const double p0 = c.engine.crankcasePressure, dt = 1e-5, upward = -2e5;
+    const double threshold = 2.0 * ring.tensionPerLength / ring.height;  // Pa: T/b = ½ (p_c − p_0)
+    auto run = [&](double excess, int steps) {
+        RingPackGas gas(c);
+        for (int i = 0; i < 200; ++i) {  // onto the upper flank, the cylinder at the crankcase's pressure
+            gas.trial(dt, p0, upward);
+            gas.accept();
+        }
+        std::vector<RingGas> around;
+        for (int i = 0; i < steps; ++i) {
+            around = gas.trial(dt, p0 + threshold * (1.0 + excess), upward);
+            gas.accept();
+        }
+        return std::make_pair(around.front(), gas.blowBy());
+    };
+    const int steps = 200;
+    const auto [closed, closedFlow] = run(-0.02, steps);
+    EXPECT_DOUBLE_EQ(closed.position, ring.groove.sideClearance);
+    EXPECT_EQ(closed.faceOpening, 0.0);
+    const auto [open, flow] = run(0.02, steps);
+    EXPECT_DOUBLE_EQ(open.position, ring.groove.sideClearance);
+    EXPECT_NEAR(open.behind, 0.0, 1e-9 * p0);
+    // The excess 0.02 T/b over the face's width b drives the ring's mass per unit circumference.
+    const double circumference = std::numbers::pi * c.engine.bore;
+    const double a = 0.02 * ring.tensionPerLength / (ring.mass / circumference), t = steps * dt;
+    EXPECT_NEAR(open.faceOpening / (0.5 * a * t * t), 1.0, 0.01);
+    // Blow-by: the end gap's and the face's flows (orifice law) from the cylinder to the crankcase.
+    const double pc = p0 + 1.02 * threshold, cd = c.ringGas.dischargeCoefficient, T = RingGasSpec::kLandTemperature;
+    const double gapFlow = orificeFlow(GasProperties{}, cd * ring.closedGap * c.ringGas.landClearance, pc, p0, T, T);
+    const double faceFlow = orificeFlow(GasProperties{}, cd * circumference * open.faceOpening, pc, p0, T, T);
+    std::printf("top ring on its upper flank: face closed at 0.98 x 2T/b, opened %.4g m after %.0f ms at 1.02 x "
+                "(1/2 a t^2 = %.4g m); blow-by %.4g kg/s (gap %.4g, face %.4g)\n",
+                open.faceOpening, 1e3 * t, 0.5 * a * t * t, flow, gapFlow, faceFlow);
+    const double closedGapFlow = orificeFlow(GasProperties{}, cd * ring.closedGap * c.ringGas.landClearance,
+                                             p0 + 0.98 * threshold, p0, T, T);
+    EXPECT_NEAR(closedFlow, closedGapFlow, 1e-6 * closedFlow);  // the closed face passes nothing
+    EXPECT_NEAR(flow, gapFlow + faceFlow, 1e-6 * flow);
+}
+
+TEST(RingCollapse, AtHighSpeedMotoredTheFacesOpenWhereTheirForceBalanceSays) {
+    const std::filesystem::path dir = flexehd::test::scratchDir();
+    EngineCase c = examplePack(true);
+    c.engine.speedRpm = 7000.0;
+    c.time.maxCycles = 1;
+    c.cylinderPressureFile = std::string(FLEXEHD_SOURCE_DIR) + "/examples/engine86/cylinder_pressure_motored.csv";
+    c.cylinderPressure = readPressureTable(c.cylinderPressureFile);
+    c.output.directory = dir.string();
+    runCase(c, {});
+    std::vector<std::string> header;
+    const auto rows = readHistory(dir / "history.csv", header);
+    auto index = [&](const std::string& name) {
+        const auto at = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(at, header.end()) << name;
+        return static_cast<std::size_t>(at - header.begin());
+    };
+    std::ifstream s(dir / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(s);
+    const std::size_t cylinder = index("cylinder_pressure_pa");
+    int opened = 0, checked = 0;
+    for (std::size_t i = 0; i < c.rings.size(); ++i) {
+        const RingSpec& r = c.rings[i];
+        const std::string name = "ring_" + r.name + "_";
+        const std::size_t above = i == 0 ? cylinder : index("ring_" + c.rings[i - 1].name + "_gas_below_pa");
+        const std::size_t behind = index(name + "gas_behind_pa"), below = index(name + "gas_below_pa");
+        const std::size_t opening = index(name + "face_opening_m");
+        const double width = r.lands ? 2.0 * r.lands->width : r.height;  // its running faces
+        double largest = 0.0;
+        for (std::size_t k = 1; k < rows.size(); ++k) {
+            largest = std::max(largest, rows[k][opening]);
+            if (rows[k - 1][opening] != 0.0) continue;
+            // The margin at the step's start: the lands and the groove of the last step, the
+            // cylinder of this one's end (docs/ring-pack.md, "Ring collapse in a run").
+            const double margin = r.tensionPerLength / width + rows[k - 1][behind] -
+                                  0.5 * ((i == 0 ? rows[k] : rows[k - 1])[above] + rows[k - 1][below]);
+            if (std::abs(margin) < 1e-4 * r.tensionPerLength / width) continue;  // the file's 9 digits
+            ++checked;
+            EXPECT_EQ(rows[k][opening] > 0.0, margin < 0.0) << r.name << " at " << rows[k][1] << " deg";
+            if (rows[k][opening] > 0.0) ++opened;
+        }
+        EXPECT_NEAR(summary.at("rings").at(r.name).at("face_opening_max_m").get<double>(), largest, 1e-8 * largest)
+            << r.name;  // the file's 9 digits
+        EXPECT_LE(largest, r.groove.backClearance) << r.name;
+    }
+    std::printf("7000 rpm motored: %d face openings over %d steps checked; largest openings top %.3g, second %.3g m\n",
+                opened, checked, summary["rings"]["top"]["face_opening_max_m"].get<double>(),
+                summary["rings"]["second"]["face_opening_max_m"].get<double>());
+    EXPECT_GE(opened, 2);
 }
