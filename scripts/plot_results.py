@@ -395,16 +395,23 @@ def finish_ring_panels(fig, axes, ylabels, title, out_dir, name):
 def plot_ring_gas(runs, out_dir):
     """Per run with the lands' gas (ring_gas): the cylinder pressure and the pressure below each
     ring over the crank angle, the gas past each ring (the last ring's: blow-by) and, with ring
-    lift, each ring's height above its groove's lower flank."""
+    lift, each ring's height above its groove's lower flank and, where a ring collapsed radially,
+    how far its face left the liner."""
     for label, sel, cycle, _ in runs:
         rings = [r for r in ring_names(sel) if f"ring_{r}_gas_below_pa" in sel]
         if not rings:
             continue
         lift = all(f"ring_{r}_axial_position_m" in sel for r in rings)
-        fig, axes = plt.subplots(3 if lift else 2, 1, sharex=True, figsize=(9, 9 if lift else 6.5))
+        collapsed = [r for r in rings if f"ring_{r}_face_opening_m" in sel and sel[f"ring_{r}_face_opening_m"].max() > 0]
+        panels = 2 + lift + bool(collapsed)
+        fig, axes = plt.subplots(panels, 1, sharex=True, figsize=(9, 2.2 + 2.25 * panels))
         if lift:
             for k, ring in enumerate(rings, start=1):
                 axes[2].plot(sel["crank_deg"], sel[f"ring_{ring}_axial_position_m"] * 1e6,
+                             color=COLORS[k % len(COLORS)], lw=1.1, label=ring)
+        for k, ring in enumerate(rings, start=1):
+            if ring in collapsed:
+                axes[3].plot(sel["crank_deg"], sel[f"ring_{ring}_face_opening_m"] * 1e6,
                              color=COLORS[k % len(COLORS)], lw=1.1, label=ring)
         axes[0].plot(sel["crank_deg"], sel["cylinder_pressure_pa"] * 1e-5, color=COLORS[0], lw=1.3, label="cylinder")
         for k, ring in enumerate(rings, start=1):
@@ -417,7 +424,8 @@ def plot_ring_gas(runs, out_dir):
                          label=f"past {ring} (cycle mean {cycle_mean(sel, column):.3g} l/min)")
         finish_ring_panels(fig, axes, ("absolute pressure (bar)",
                                        "gas past the ring\n(l/min at 0 °C, 1 atm; > 0 down)",
-                                       "height above the\ngroove's lower flank (µm)"),
+                                       "height above the\ngroove's lower flank (µm)",
+                                       "face off the liner\n(radial collapse, µm)"),
                            f"Gas between the rings: {label}" + cycle_note([(label, sel, cycle, None)]),
                            out_dir, f"ring_gas_{safe_name(label)}.png")
 
