@@ -139,14 +139,14 @@ Eigen::MatrixXd CoupledNewtonScheme::coupledJacobian(const StepContext& ctx) {
 }
 
 bool CoupledNewtonScheme::formCoupledJacobian(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
-                                           const StepEvaluation& ev, const Eigen::Vector2d& tol, int& filmSolves) {
+                                           const StepEvaluation& ev, const Eigen::Vector2d& delta, int& filmSolves) {
     Eigen::MatrixXd& J = newtonJacobian_;
     J = coupledJacobian(ctx);
     // Without the contacts' motion columns, the (e, β) columns by differences of full evaluations
     // (film solve and modal response): a rigid motion moves the Reynolds film's cavitation
     // boundary, whose effect its held-set linearisation misses — at high sliding and squeeze speeds
     // enough to stall Newton (docs/coupling.md §1).
-    if (!parts_.motionColumns && !differenceColumns(ctx, x, y, ev, tol, J, filmSolves)) return false;
+    if (!parts_.motionColumns && !differenceColumns(ctx, x, y, ev, delta, J, filmSolves)) return false;
     newtonInverse_ = J.partialPivLu().inverse();
     // Unknowns in units of the film-thickness change they cause (Broyden norm, merit, damping).
     unknownScale_ = parts_.filmChangePerUnknown;
@@ -163,9 +163,8 @@ bool CoupledNewtonScheme::formCoupledJacobian(const StepContext& ctx, const Eige
 }
 
 bool CoupledNewtonScheme::differenceColumns(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
-                                            const StepEvaluation& ev, const Eigen::Vector2d& tol, Eigen::MatrixXd& J,
+                                            const StepEvaluation& ev, const Eigen::Vector2d& delta, Eigen::MatrixXd& J,
                                             int& filmSolves) {
-    const Eigen::Vector2d delta = 1e-5 * tol;  // of the clearance (tilt: of the clearance over the reach)
     std::array<StepEvaluation, 2> moved;
     if (!step_.perturbedMotion(ctx, x, y, delta, true, moved, filmSolves)) return false;
     for (int i = 0; i < 2; ++i) {

@@ -82,7 +82,16 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
     // the residual, and one secant update corrects it for less than a new linearisation costs),
     // or when the update had to backtrack; a step-size change alone re-forms the Jacobian from
     // the kept parts (affine in the rate); otherwise the kept inverse, Broyden-updated.
-    if (it.backtracks > 0 && it.freshJacobian) it.regularize = true;  // see below
+    if (it.backtracks > 0 && it.freshJacobian) {
+        it.regularize = true;  // see below
+        // A fresh Jacobian whose update had to backtrack: its (e, β) columns, forward differences
+        // over 1e-5 of (c_r, c_r/reach), may be secants across a kink of the film's response (where
+        // the skirt rides on its asperities with almost no side force, a squeeze-pressure region
+        // that vanishes within half such a step as the skirt lifts off) and miss the slope at the
+        // iterate severalfold, so that the update is no descent direction at all. The step's later
+        // Jacobians difference over 1e-7 (docs/coupling.md §1).
+        it.differenceStep = 1e-7;
+    }
     const bool notHalved = measure > 0.5 * it.acceptedMeasure;
     const bool relinearize = !parts_.valid || it.backtracks > 0 || (notHalved && it.stalled);
     it.stalled = notHalved && !relinearize;
@@ -98,7 +107,7 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
         ++step_.work_.jacobians;
     }
     if (relinearize || rate != newtonRate_) {
-        if (!formCoupledJacobian(ctx, x, y, ev, tol.motion, iterations)) {
+        if (!formCoupledJacobian(ctx, x, y, ev, it.differenceStep * tol.motion, iterations)) {
             why = "a film solve of the Jacobian's difference columns failed";
             return PassOutcome::Failed;
         }

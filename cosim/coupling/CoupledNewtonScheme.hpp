@@ -62,6 +62,9 @@ private:
         int backtracks = 0;
         bool freshJacobian = false, regularize = false, revisit = false;
         bool stalled = false;  ///< the last pass did not halve the measure (and was Broyden-updated)
+        /// The (e, β) columns' difference steps in units of (c_r, c_r/reach): 1e-5, finer after a
+        /// fresh Jacobian's update had to backtrack.
+        double differenceStep = 1e-5;
     };
 
     /// The line search, the Jacobian kept, re-formed or Broyden-updated, and the damped update dz
@@ -78,15 +81,17 @@ private:
     void linearizeCoupled(const StepContext& ctx, const Eigen::Vector2d& x, const StepEvaluation& ev);
     /// ∂(equations of motion's right-hand side)/∂(F_x, ·, F_z, ·, M_y, ·): 2 × 6, from the dynamics.
     Eigen::Matrix<double, 2, 6> actionGradient(const StepContext& ctx) const;
-    /// The (e, β) columns of J by differences of two full evaluations; false: a film solve failed.
+    /// The (e, β) columns of J by forward differences of two full evaluations with steps delta (m,
+    /// rad); false: a film solve failed.
     bool differenceColumns(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
-                           const StepEvaluation& ev, const Eigen::Vector2d& tol, Eigen::MatrixXd& J, int& filmSolves);
+                           const StepEvaluation& ev, const Eigen::Vector2d& delta, Eigen::MatrixXd& J, int& filmSolves);
     /// Good Broyden update of the kept inverse Jacobian for the update s and the residual change dF.
     void broydenUpdate(const Eigen::VectorXd& s, const Eigen::VectorXd& dF);
     /// Forms the coupled Jacobian at the context's step size (its (e, β) columns by differences of
-    /// two full evaluations, counted in filmSolves) and its inverse; false if a film solve failed.
+    /// two full evaluations with steps delta, counted in filmSolves) and its inverse; false if a
+    /// film solve failed.
     bool formCoupledJacobian(const StepContext& ctx, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
-                             const StepEvaluation& ev, const Eigen::Vector2d& tol, int& filmSolves);
+                             const StepEvaluation& ev, const Eigen::Vector2d& delta, int& filmSolves);
     /// The tolerance of each residual row: motion rows 1e-4 (scale + force floor), modal rows the
     /// coupling tolerance over the largest film change of a unit of the mode.
     Eigen::VectorXd residualScale(const StepEvaluation& ev, double forceFloor, double reach, double couplingTol) const;
