@@ -5,7 +5,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 pattern='GUIDE|\.\./shared|[Ii]ssue #?[0-9]'
-hits=$(grep -rnIE "$pattern" cosim lube fem modal tests scripts bench examples meshes cmake docs \
+hits=$(grep -rnIE "$pattern" cosim lube fem modal acoustics tests scripts bench examples meshes cmake docs \
          README.md CMakeLists.txt --exclude=check_citations.sh || true)
 if [[ -n "$hits" ]]; then
   echo "check_citations: these lines cite an issue number or a document outside the repository;"

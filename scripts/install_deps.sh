@@ -9,6 +9,7 @@ PACKAGES=(
   libeigen3-dev libspectra-dev libsuitesparse-dev libgmsh-dev libvtk9-dev
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libgtest-dev libyaml-cpp-dev libhdf5-dev
   libopenmpi-dev openmpi-bin  # MPI: `flexehd sweep` distributes design studies over ranks
+  libfftw3-dev  # FFTW3: spectra of acoustics/ (slap-noise post-processing)
 )
 # Optional extras for the plotting and checking helpers in scripts/ (--with-python).
 PYTHON_PACKAGES=(python3-numpy python3-matplotlib python3-vtk9)

@@ -244,6 +244,19 @@ struct ThermalSpec {
     std::string file;  ///< absolute path of thermal.h5 (`flexehd thermal`); empty = no thermal
 };
 
+/// The liner's vibration for slap noise (case key `acoustics`, docs/acoustics.md): with a
+/// flexible liner and the dynamic response, the run records the normal velocity of one of the
+/// liner's surfaces over each cycle at a fixed sampling rate.
+struct AcousticsSpec {
+    bool enabled = false;
+    std::string surface = "outer";  ///< the radiating surface: a surface group of the liner's mesh
+    double upToHz = 5000.0;         ///< Hz, the frequency range the record resolves
+    /// Samples per second per hertz of range (the analysers' 2.56: Nyquist with room for the
+    /// anti-aliasing roll-off)
+    static constexpr double kSamplesPerHz = 2.56;
+    double sampleRateHz() const { return kSamplesPerHz * upToHz; }
+};
+
 struct EngineCase {
     std::string path;          ///< the case file (absolute), for messages and provenance
     std::string name;          ///< free text (case key `name`)
@@ -263,6 +276,7 @@ struct EngineCase {
     ThermalSpec thermal;  ///< thermal displacements (none by default)
     std::vector<RingSpec> rings;  ///< the ring pack, top ring first (none by default)
     RingGasSpec ringGas;          ///< the gas between the rings (none by default)
+    AcousticsSpec acoustics;      ///< the liner's recorded vibration (none by default)
 
     /// The piston or the liner is a flexible (reduced) body.
     bool hasFlexibleBody() const {

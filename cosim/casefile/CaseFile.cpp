@@ -33,7 +33,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     const YAML::Node root = loadYamlDocument(path, "the case file");
     const YamlSection top(ctx, root, "",
                           {"name", "engine", "piston", "lubricant", "contact", "cylinder_pressure", "bodies", "grid",
-                           "time", "coupling", "output", "liner", "thermal", "rings", "ring_gas"});
+                           "time", "coupling", "output", "liner", "thermal", "rings", "ring_gas", "acoustics"});
     EngineCase c;
     c.path = absolute.string();
     c.name = text(top, "name", absolute.stem().string(), "a name (text)");
@@ -70,6 +70,7 @@ EngineCase readCaseFile(const std::string& path, const CaseFileOptions& options)
     requireOilControlRingOnPiston(lubricant, c);
     requireReplenishWithinReach(lubricant, c);
     readOutput(top, c.output);
+    readAcoustics(top, c);
     return c;
 }
 

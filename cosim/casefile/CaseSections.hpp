@@ -40,5 +40,8 @@ void readTime(const YamlSection& top, TimeSpec& t);
 YamlSection readCoupling(const YamlSection& top, CouplingSpec& k);
 /// output: the directory resolved against the case file's.
 void readOutput(const YamlSection& top, OutputSpec& o);
+/// acoustics: the liner's recorded surface velocity; needs a flexible liner and the dynamic
+/// response, and caps time.max_step_deg at the sampling interval.
+void readAcoustics(const YamlSection& top, EngineCase& c);
 
 }  // namespace flexehd::cosim::casefile

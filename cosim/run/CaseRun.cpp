@@ -22,6 +22,7 @@
 #include "cosim/run/ThermalLandTemperatures.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
 #include "cosim/results/RunSummary.hpp"
+#include "cosim/results/SurfaceVelocityRecorder.hpp"
 #include "cosim/wear/SkirtWear.hpp"
 #include "fem/AtomicFile.hpp"
 #include "fem/Stopwatch.hpp"
@@ -194,6 +195,17 @@ std::vector<std::string> columnNames(const std::vector<ContactColumn>& columns) 
     return names;
 }
 
+// With `acoustics`: the liner's surface velocity recorded each cycle into acoustics.h5.
+void recordLinerVibration(const EngineCase& c, PistonSimulation& sim, const std::string& dir, const RunLog& log,
+                          std::optional<SurfaceVelocityRecorder>& recorder) {
+    const int offset = sim.pistonBody() ? sim.pistonBody()->modes() : 0;
+    sim.addObserver(recorder.emplace(c, sim.linerBody()->body(), offset, dir + "/acoustics.h5"));
+    say(log.info, fmt::format("acoustics: the liner's surface '{}' ({} points, {:.4g} m^2) sampled at {:g} Hz for "
+                              "the range up to {:g} Hz; steps of at most {:.4g} deg (time.max_step_deg)",
+                              c.acoustics.surface, recorder->areas().size(), recorder->areas().sum(),
+                              recorder->sampleRate(), c.acoustics.upToHz, c.time.maxStepDeg));
+}
+
 // The case as the run uses it: the lands' gas temperatures from the thermal file where the case
 // leaves them to it (its message on the log: info, or a warning when the file has no profile).
 EngineCase caseForRun(const EngineCase& given, const RunLog& log) {
@@ -226,6 +238,8 @@ CaseRunResult runCase(const EngineCase& given, const RunLog& log, const std::vec
     if (const auto loose = looseStarvedStepTolerance(c)) say(log.warn, *loose);
     std::optional<SkirtWear> wear;
     if (SkirtWear::wanted(c)) sim.addObserver(wear.emplace(c, sim));
+    std::optional<SurfaceVelocityRecorder> acoustics;
+    if (c.acoustics.enabled) recordLinerVibration(c, sim, dir, log, acoustics);
     reportBodies(c, skirt, log);
 
     HistoryWriter history(dir + "/history.csv", sim.carriesOil(), columnNames(sim.contactColumns()));

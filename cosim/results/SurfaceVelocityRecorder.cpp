@@ -1,0 +1,157 @@
+#include "cosim/results/SurfaceVelocityRecorder.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+
+#include "fem/AtomicFile.hpp"
+#include "fem/BoundarySurface.hpp"
+#include "modal/Hdf5Writer.hpp"
+
+namespace flexehd::cosim {
+
+SurfaceVelocityRecorder::SurfaceVelocityRecorder(const EngineCase& c, const modal::ReducedBody& liner, int modeOffset,
+                                                 std::string path)
+    : spec_(c.acoustics),
+      rpm_(c.engine.speedRpm),
+      maxStepDeg_(c.time.maxStepDeg),
+      offset_(modeOffset),
+      modes_(liner.numModes()),
+      path_(std::move(path)),
+      rate_(c.acoustics.sampleRateHz()) {
+    if (!liner.mesh.hasGroup(spec_.surface) || liner.mesh.group(spec_.surface).dim != 2)
+        throw std::invalid_argument(fmt::format("acoustics.surface: the liner's mesh ({}) has no surface group '{}' "
+                                                "(its groups: {})",
+                                                liner.meshPath, spec_.surface, liner.mesh.groupNames()));
+    surfaceShapes(liner);
+}
+
+void SurfaceVelocityRecorder::surfaceShapes(const modal::ReducedBody& liner) {
+    // Each node's area vector a_i: a third of the outward area vector of each flat sub-triangle it
+    // is a vertex of (a quadratic triangle split at its mid-side nodes into four), so that every
+    // node has a positive share and a normal of its own neighbourhood.
+    const fem::Mesh& mesh = liner.mesh;
+    const fem::BoundarySurface surface(mesh, spec_.surface);
+    const bool quadratic = mesh.surface.nodes.rows() == 6;
+    static const int kLinear[1][3] = {{0, 1, 2}};
+    static const int kQuadratic[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+    Eigen::Matrix3Xd a = Eigen::Matrix3Xd::Zero(3, mesh.numNodes());
+    for (std::size_t k = 0; k < surface.triangles().size(); ++k) {
+        const fem::Index t = surface.triangles()[k];
+        const double sign = surface.orientation()[k];
+        for (int sub = 0; sub < (quadratic ? 4 : 1); ++sub) {
+            const int* v = quadratic ? kQuadratic[sub] : kLinear[sub];
+            const fem::Index n0 = mesh.surface.nodes(v[0], t), n1 = mesh.surface.nodes(v[1], t),
+                             n2 = mesh.surface.nodes(v[2], t);
+            const Eigen::Vector3d e1 = mesh.nodes.col(n1) - mesh.nodes.col(n0), e2 = mesh.nodes.col(n2) - mesh.nodes.col(n0);
+            const Eigen::Vector3d third = sign / 6.0 * e1.cross(e2);
+            for (fem::Index n : {n0, n1, n2}) a.col(n) += third;
+        }
+    }
+    const std::vector<fem::Index> nodes = mesh.groupNodes(spec_.surface);
+    const auto p = static_cast<Eigen::Index>(nodes.size());
+    normalShapes_.resize(p, modes_);
+    areas_.resize(p);
+    points_.resize(3, p);
+    normals_.resize(3, p);
+    for (Eigen::Index i = 0; i < p; ++i) {
+        const fem::Index n = nodes[static_cast<std::size_t>(i)];
+        areas_[i] = a.col(n).norm();
+        normals_.col(i) = a.col(n) / areas_[i];
+        points_.col(i) = mesh.nodes.col(n);
+        normalShapes_.row(i) = normals_.col(i).transpose() * liner.shapes.middleRows(3 * n, 3);
+    }
+}
+
+void SurfaceVelocityRecorder::stepAccepted(const AcceptedStep& step) {
+    const StepState& s = step.state;
+    if (s.w.size() < offset_ + modes_)
+        throw std::logic_error("acoustics: the run's state has no modal velocities of the liner (the dynamic response)");
+    const Eigen::VectorXd w = s.w.segment(offset_, modes_);
+    if (!w.allFinite())
+        throw std::runtime_error(fmt::format("acoustics: the liner's modal velocity is not finite at {:.4f} deg",
+                                             crankAngle720(s.crankDeg)));
+    if (!started_ || step.cycle != cycle_) {
+        // A cycle's grid starts at the state it starts from: the last one of the cycle before
+        // (the run's first accepted step for the first cycle).
+        if (!started_) {
+            lastTime_ = s.time;
+            lastAngle_ = s.crankDeg;
+            lastVelocity_ = w;
+        }
+        started_ = true;
+        cycle_ = step.cycle;
+        origin_ = lastTime_;
+        times_.clear();
+        angles_.clear();
+        velocities_.clear();
+        times_.push_back(origin_);
+        angles_.push_back(crankAngle720(lastAngle_));
+        velocities_.push_back(lastVelocity_);
+    }
+    // The grid's samples in (t_n−1, t_n], linear between the two states.
+    const double span = s.time - lastTime_;
+    for (auto k = static_cast<long long>(times_.size());; ++k) {
+        const double t = origin_ + static_cast<double>(k) / rate_;
+        if (t > s.time || !(span > 0.0)) break;
+        const double f = (t - lastTime_) / span;
+        times_.push_back(t);
+        angles_.push_back(crankAngle720(lastAngle_ + f * (s.crankDeg - lastAngle_)));
+        velocities_.push_back(lastVelocity_ + f * (w - lastVelocity_));
+    }
+    lastTime_ = s.time;
+    lastAngle_ = s.crankDeg;
+    lastVelocity_ = w;
+}
+
+Eigen::MatrixXd SurfaceVelocityRecorder::sampleVelocities() const {
+    Eigen::MatrixXd v(static_cast<Eigen::Index>(velocities_.size()), modes_);
+    for (std::size_t k = 0; k < velocities_.size(); ++k) v.row(static_cast<Eigen::Index>(k)) = velocities_[k].transpose();
+    return v;
+}
+
+void SurfaceVelocityRecorder::cycleEnded(const CycleEnd& end) {
+    if (times_.size() < 2) return;
+    write(end.cycle, end.last);
+    ++written_;
+}
+
+void SurfaceVelocityRecorder::write(int cycle, bool last) const {
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const RowMajor velocity = sampleVelocities();
+    const RowMajor shapes = normalShapes_;
+    const RowMajor points = points_.transpose(), normals = normals_.transpose();
+    const auto n = static_cast<unsigned long long>(times_.size()), m = static_cast<unsigned long long>(modes_),
+               p = static_cast<unsigned long long>(areas_.size());
+    fem::writeAtomically(path_, [&](const std::string& tmp) {
+        modal::Hdf5Writer w(tmp, "acoustics record", path_);
+        w.stringAttribute("/", "format", "flexehd-acoustics");
+        w.intAttribute("/", "format_version", 1);
+        w.stringAttribute("/", "surface", spec_.surface);
+        w.doubleAttribute("/", "up_to_hz", spec_.upToHz);
+        w.doubleAttribute("/", "sample_rate_hz", rate_);
+        w.doubleAttribute("/", "speed_rpm", rpm_);
+        w.doubleAttribute("/", "max_step_deg", maxStepDeg_);
+        w.intAttribute("/", "cycle", cycle);
+        w.intAttribute("/", "last_cycle", last ? 1 : 0);
+        w.doubles("/time_s", {n}, times_.data());
+        w.doubles("/crank_deg", {n}, angles_.data());
+        w.group("/liner");
+        w.doubles("/liner/modal_velocity", {n, m}, velocity.data());
+        w.group("/surface");
+        w.doubles("/surface/points_m", {p, 3}, points.data());
+        w.doubles("/surface/normals", {p, 3}, normals.data());
+        w.doubles("/surface/area_m2", {p}, areas_.data());
+        w.doubles("/surface/normal_shapes", {p, m}, shapes.data());
+        for (const auto& [name, unit] : {std::pair{"/time_s", "s"}, {"/crank_deg", "deg"},
+                                         {"/liner/modal_velocity", "1/s (modal)"}, {"/surface/points_m", "m"},
+                                         {"/surface/normals", "1"}, {"/surface/area_m2", "m2"},
+                                         {"/surface/normal_shapes", "m/s per unit modal velocity"}})
+            w.stringAttribute(name, "units", unit);
+        w.close();
+    });
+}
+
+}  // namespace flexehd::cosim

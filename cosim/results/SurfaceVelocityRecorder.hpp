@@ -1,0 +1,71 @@
+#pragma once
+// SurfaceVelocityRecorder: the flexible liner's vibration for slap noise (docs/acoustics.md,
+// case key `acoustics`). Each point of the radiating surface (a node of the liner's surface group
+// with its share of the area) moves with the normal velocity
+//
+//   v_n,i(t) = n_iᵀ Φ_i ẏ(t),
+//
+// n_i its outward normal and A_i its area from its area vector a_i: a third of the outward area
+// vector of each flat sub-triangle it is a vertex of (quadratic triangles split at their mid-side
+// nodes into four; a positive share for every node), Φ_i its rows of the liner's
+// mode shapes and ẏ the liner's modal velocities (bodies.response: dynamic). The recorder keeps the
+// normal shapes n_iᵀ Φ_i (points × modes), samples ẏ on a fixed grid of the case's sampling rate
+// over each cycle (linear between the accepted steps, which the case file keeps no longer than the
+// sampling interval) and writes the cycle's record at its end to acoustics.h5 (format:
+// docs/acoustics.md), so the file holds the last complete cycle.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cosim/case/EngineCase.hpp"
+#include "cosim/coupling/RunObserver.hpp"
+#include "modal/ReducedBody.hpp"
+
+namespace flexehd::cosim {
+
+class SurfaceVelocityRecorder final : public RunObserver {
+public:
+    /// liner: the liner's reduced body; modeOffset: where its modal coordinates start in the
+    /// run's ẏ (after the piston's); path: the file written at each cycle's end. Throws
+    /// std::invalid_argument naming acoustics.surface when the liner's mesh has no such surface.
+    SurfaceVelocityRecorder(const EngineCase& c, const modal::ReducedBody& liner, int modeOffset, std::string path);
+
+    void stepAccepted(const AcceptedStep& step) override;
+    void cycleEnded(const CycleEnd& end) override;
+
+    /// Normal velocity per unit modal velocity of each surface point (m/s per unit ẏ), points × modes.
+    const Eigen::MatrixXd& normalShapes() const { return normalShapes_; }
+    const Eigen::VectorXd& areas() const { return areas_; }     ///< m², per point
+    const Eigen::Matrix3Xd& points() const { return points_; }  ///< m, liner frame
+    const Eigen::Matrix3Xd& normals() const { return normals_; }
+    double sampleRate() const { return rate_; }  ///< Hz
+    /// The current cycle's samples: times (s), crank angles (°, 0–720), modal velocities (samples × modes).
+    const std::vector<double>& sampleTimes() const { return times_; }
+    const std::vector<double>& sampleAngles() const { return angles_; }
+    Eigen::MatrixXd sampleVelocities() const;
+    int cyclesWritten() const { return written_; }
+
+private:
+    void surfaceShapes(const modal::ReducedBody& liner);
+    void write(int cycle, bool last) const;
+
+    AcousticsSpec spec_;
+    double rpm_, maxStepDeg_;
+    int offset_, modes_;
+    std::string path_;
+    double rate_;
+    Eigen::MatrixXd normalShapes_;
+    Eigen::VectorXd areas_;
+    Eigen::Matrix3Xd points_, normals_;
+    // The sampling: the grid's origin (s) and the last accepted state (none before the first step).
+    int cycle_ = 0;
+    double origin_ = 0.0, lastTime_ = 0.0, lastAngle_ = 0.0;
+    bool started_ = false;
+    Eigen::VectorXd lastVelocity_;
+    std::vector<double> times_, angles_;
+    std::vector<Eigen::VectorXd> velocities_;
+    int written_ = 0;
+};
+
+}  // namespace flexehd::cosim

@@ -1,0 +1,199 @@
+// The liner's recorded surface velocity for slap noise (cosim/results/SurfaceVelocityRecorder,
+// docs/acoustics.md; case key `acoustics`).
+//  - On a sleeve (outer radius 43 mm, 50 mm long) the outer surface's points carry its area
+//    2πRH, their normals are radial: a rigid translation along x has the normal velocity n_x,
+//    whose mean square over the surface is ∫ cos²θ dA = πRH, and ∫ n dA = 0 round the closed
+//    cylinder.
+//  - The record samples the modal velocities on a fixed grid of the sampling rate, linear
+//    between the accepted steps: a velocity linear in time is sampled exactly, whatever the steps;
+//    each cycle's grid starts at the cycle's first state; the file holds what the recorder holds.
+//  - The case file refuses `acoustics` without a flexible liner or the dynamic response, and caps
+//    time.max_step_deg at the sampling interval 6 n / f_s degrees.
+#include "cosim/casefile/CaseFile.hpp"
+#include "cosim/results/SurfaceVelocityRecorder.hpp"
+#include "fem/MeshReader.hpp"
+#include "../TestScratch.hpp"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace flexehd;
+using namespace flexehd::cosim;
+
+namespace {
+
+const std::string kSource = FLEXEHD_SOURCE_DIR;
+
+// The sleeve with the three rigid translations as its "modes" (the normal velocity of a
+// translation along x is n_x).
+modal::ReducedBody translatingSleeve() {
+    fem::MeshOptions order2;
+    order2.order = 2;
+    order2.size = 0.008;
+    modal::ReducedBody b;
+    b.mesh = fem::readMesh(kSource + "/tests/cosim/data/sleeve.geo", order2);
+    b.meshPath = "sleeve.geo";
+    b.shapes = Eigen::MatrixXd::Zero(3 * b.mesh.numNodes(), 3);
+    for (fem::Index n = 0; n < b.mesh.numNodes(); ++n)
+        for (int k = 0; k < 3; ++k) b.shapes(3 * n + k, k) = 1.0;
+    return b;
+}
+
+EngineCase acousticCase(double upToHz) {
+    EngineCase c;
+    c.engine.speedRpm = 3000.0;
+    c.acoustics.enabled = true;
+    c.acoustics.surface = "outer";
+    c.acoustics.upToHz = upToHz;
+    return c;
+}
+
+std::vector<double> readDoubles(hid_t file, const std::string& name, std::vector<hsize_t>& dims) {
+    const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    EXPECT_GE(set, 0) << name;
+    const hid_t space = H5Dget_space(set);
+    dims.assign(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)), 0);
+    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    hsize_t n = 1;
+    for (hsize_t d : dims) n *= d;
+    std::vector<double> v(n);
+    H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    H5Sclose(space);
+    H5Dclose(set);
+    return v;
+}
+
+}  // namespace
+
+TEST(SurfaceVelocity, TheSleevesOuterPointsCarryItsAreaAndRadialNormals) {
+    const modal::ReducedBody sleeve = translatingSleeve();
+    const SurfaceVelocityRecorder r(acousticCase(2000.0), sleeve, 0, "unused.h5");
+    const double R = 0.043, H = 0.050, area = 2.0 * std::numbers::pi * R * H;
+    const Eigen::VectorXd& A = r.areas();
+    const Eigen::MatrixXd& P = r.normalShapes();
+    ASSERT_EQ(P.cols(), 3);
+    // The flat sub-triangles' chords cut the circle: with 4 mm sub-triangle edges on R = 43 mm
+    // their area falls short by about (4/43)²/24 = 0.04 %, and a point's normal turns over its
+    // neighbourhood (about 0.1 rad): |Σ a| is 1 − (0.1)²/6 of its area. Within 0.5 %.
+    EXPECT_NEAR(A.sum(), area, 5e-3 * area);
+    EXPECT_NEAR(A.dot(P.col(0).cwiseAbs2()), 0.5 * area, 5e-3 * area);
+    EXPECT_NEAR(A.dot(P.col(1).cwiseAbs2()), 0.5 * area, 5e-3 * area);
+    // A flat sub-triangle on the curved surface tilts out of its tangent plane by second order in
+    // its size: n_z² of order ((4/43)²)² ≈ 1e-4 at most.
+    EXPECT_LT(A.dot(P.col(2).cwiseAbs2()), 1e-4 * area);
+    EXPECT_NEAR(A.dot(P.col(0)), 0.0, 1e-9 * area);
+    for (Eigen::Index i = 0; i < A.size(); ++i) {
+        const Eigen::Vector3d x = r.points().col(i);
+        const double radial = (x.x() * r.normals()(0, i) + x.y() * r.normals()(1, i)) / std::hypot(x.x(), x.y());
+        ASSERT_GT(radial, 0.99) << "point " << i << " at " << x.transpose(); // outward
+    }
+    std::printf("sleeve's outer surface: %lld points, %.6g m^2 (2 pi R H = %.6g); sum A n_x^2 = %.6g (pi R H = %.6g)\n",
+                static_cast<long long>(A.size()), A.sum(), area, A.dot(P.col(0).cwiseAbs2()), 0.5 * area);
+    EXPECT_THROW(
+        {
+            EngineCase c = acousticCase(2000.0);
+            c.acoustics.surface = "jacket";
+            SurfaceVelocityRecorder(c, sleeve, 0, "unused.h5");
+        },
+        std::invalid_argument);
+}
+
+TEST(SurfaceVelocity, AVelocityLinearInTimeIsSampledExactlyOnTheFixedGrid) {
+    const modal::ReducedBody sleeve = translatingSleeve();
+    const std::filesystem::path dir = flexehd::test::scratchDir();
+    const EngineCase c = acousticCase(1000.0);  // 2560 samples per second
+    SurfaceVelocityRecorder r(c, sleeve, 2, (dir / "acoustics.h5").string());
+    const double fs = 2560.0, omega = 3000.0 * 6.0;  // deg/s
+    auto velocity = [](double t) { return Eigen::Vector3d(1.0 + 2.0 * t, -3.0 * t, 0.5); };
+    StepEvaluation evaluation;
+    // Irregular steps over 0.05 s (two "cycles" of 0.02 s and 0.03 s), the state's ẏ led by two
+    // piston modes.
+    std::vector<double> times{0.0};
+    for (double t = 0.0; t < 0.05;) times.push_back(t += 1e-4 * (1.0 + 2.5 * std::abs(std::sin(97.0 * t))));
+    auto feed = [&](double t, int cycle) {
+        StepState s;
+        s.time = t;
+        s.crankDeg = omega * t;
+        s.w = Eigen::VectorXd::Zero(5);
+        s.w.tail(3) = velocity(t);
+        r.stepAccepted(AcceptedStep{s, evaluation, cycle, 0.0, 0.0});
+    };
+    std::size_t k = 0;
+    for (; times[k] <= 0.02; ++k) feed(times[k], 1);
+    const double cycleStart = times[k - 1];
+    r.cycleEnded(CycleEnd{1, 0, false, nullptr});
+    for (; k < times.size(); ++k) feed(times[k], 2);
+    const std::vector<double>& t = r.sampleTimes();
+    const Eigen::MatrixXd v = r.sampleVelocities();
+    ASSERT_GT(t.size(), 70u);
+    EXPECT_DOUBLE_EQ(t.front(), cycleStart);
+    EXPECT_EQ(t.size(), static_cast<std::size_t>(std::floor((times.back() - cycleStart) * fs)) + 1);
+    for (std::size_t j = 0; j < t.size(); ++j) {
+        EXPECT_NEAR(t[j], cycleStart + static_cast<double>(j) / fs, 1e-12);
+        EXPECT_LT((v.row(static_cast<Eigen::Index>(j)).transpose() - velocity(t[j])).norm(), 1e-12) << j;
+        EXPECT_NEAR(r.sampleAngles()[j], std::fmod(omega * t[j], 720.0), 1e-9);
+    }
+    // The file of the first cycle: its samples and the surface, with units.
+    r.cycleEnded(CycleEnd{2, 2, true, nullptr});
+    const hid_t file = H5Fopen((dir / "acoustics.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    std::vector<hsize_t> dims;
+    const std::vector<double> fileTimes = readDoubles(file, "/time_s", dims);
+    ASSERT_EQ(fileTimes.size(), t.size());
+    EXPECT_EQ(fileTimes.back(), t.back());
+    const std::vector<double> fileVelocity = readDoubles(file, "/liner/modal_velocity", dims);
+    ASSERT_EQ(dims, (std::vector<hsize_t>{t.size(), 3}));
+    EXPECT_EQ(fileVelocity[3 * 5 + 1], v(5, 1));  // row-major samples × modes
+    readDoubles(file, "/surface/normal_shapes", dims);
+    EXPECT_EQ(dims, (std::vector<hsize_t>{static_cast<hsize_t>(r.areas().size()), 3}));
+    H5Fclose(file);
+    EXPECT_EQ(r.cyclesWritten(), 2);
+}
+
+TEST(SurfaceVelocity, TheCaseFileAsksForAFlexibleLinerWithItsDynamicsAndCapsTheStep) {
+    const std::filesystem::path dir = flexehd::test::scratchDir();
+    std::ifstream in(kSource + "/examples/engine86/ehd_liner.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yaml = text.str();
+    for (const std::string csv : {"cylinder_pressure.csv"})
+        std::filesystem::copy_file(kSource + "/examples/engine86/" + csv, dir / csv);
+    auto read = [&](const std::string& y) {
+        std::ofstream(dir / "case.yaml") << y << "acoustics:\n  up_to_hz: 8000\n";
+        CaseFileOptions o;
+        o.checkBodyFiles = false;
+        return readCaseFile((dir / "case.yaml").string(), o);
+    };
+    try {
+        read(yaml);
+        ADD_FAILURE() << "a quasi-static response was accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("needs bodies.response: dynamic"), std::string::npos) << e.what();
+    }
+    const std::size_t at = yaml.find("response: quasi_static");
+    ASSERT_NE(at, std::string::npos);
+    yaml.replace(at, std::string("response: quasi_static").size(), "response: dynamic");
+    const EngineCase c = read(yaml);
+    EXPECT_TRUE(c.acoustics.enabled);
+    EXPECT_EQ(c.acoustics.surface, "outer");
+    EXPECT_DOUBLE_EQ(c.acoustics.sampleRateHz(), 2.56 * 8000.0);
+    EXPECT_DOUBLE_EQ(c.time.maxStepDeg, 6.0 * 1000.0 / (2.56 * 8000.0));  // 0.293 deg < 0.5
+    std::string rigid = yaml;
+    const std::size_t liner = rigid.find("  liner:");
+    ASSERT_NE(liner, std::string::npos);
+    rigid = rigid.substr(0, liner) + "  liner: rigid\n" + rigid.substr(rigid.find('\n', rigid.find("interface", liner)) + 1);
+    try {
+        read(rigid);
+        ADD_FAILURE() << "a rigid liner was accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("needs a flexible liner"), std::string::npos) << e.what();
+    }
+}
