@@ -24,10 +24,20 @@ mkdir -p "$out"
 
 # Reduced bodies (docs/modal.md, docs/case-file.md): piston alloy E 75 GPa, nu 0.33,
 # 2700 kg/m^3, pin bore tied to the pin axis; grey-iron liner E 110 GPa, nu 0.26, 7200 kg/m^3,
-# both seats tied. Coarse meshes keep the example to a few minutes.
+# both seats tied. Coarse meshes keep the example to a few minutes. The piston's uniform-pressure
+# patterns: the crown (the cylinder's gas) and each land, groove root and groove flank of the ring
+# belt (the ring pack's gas and flank forces on the piston in ehd_rings.yaml; the bands, z in m,
+# are those the run asks for: docs/coupling.md section 2).
 echo "== reducing the piston and the liner"
+ring_belt=()
+for band in ring_lands@0.0265: ring_lands@0.0213:0.0253 ring_lands@0.0163:0.0198 \
+            ring_grooves@0.02531:0.02649 ring_grooves@0.02529:0.02531 ring_grooves@0.02649:0.02651 \
+            ring_grooves@0.01981:0.02129 ring_grooves@0.01979:0.01981 ring_grooves@0.02129:0.02131 \
+            ring_grooves@0.01381:0.01629 ring_grooves@0.01379:0.01381 ring_grooves@0.01629:0.01631; do
+  ring_belt+=(--pressure-pattern "$band")
+done
 "$flexehd" reduce --mesh "$root/meshes/piston.geo" --size 0.0065 --E 7.5e10 --nu 0.33 --rho 2700 \
-  --interface pin_bore:rbe2@0,0,0 --modes 20 --static-correction skirt --pressure-pattern crown \
+  --interface pin_bore:rbe2@0,0,0 --modes 20 --static-correction skirt --pressure-pattern crown "${ring_belt[@]}" \
   --out "$out/piston.h5" | tail -n 2
 "$flexehd" reduce --mesh "$root/meshes/liner.geo" --size 0.009 --E 1.1e11 --nu 0.26 --rho 7200 \
   --interface top_seat:rbe2 --interface bottom_seat:rbe2 --modes 20 --static-correction bore \
@@ -41,7 +51,7 @@ echo "== HD with the ring pack (examples/engine86/rings.yaml)"
   --labels "HD with rings" "HD, skirt alone" --out "$out/plots_rings"
 echo "== EHD: flexible piston"
 "$flexehd" run "$root/examples/engine86/case.yaml"
-echo "== EHD with the ring pack, the gas pressure and inertia on the flexible piston"
+echo "== EHD with the ring pack (gas, ring lift), the gas pressure, inertia and ring-belt loads on the flexible piston"
 "$flexehd" run "$root/examples/engine86/ehd_rings.yaml"
 /usr/bin/python3 "$root/scripts/plot_results.py" "$out/ehd_rings" --compare "$out/ehd" \
   --labels "EHD with rings, gas and inertia on the piston" "EHD, skirt alone" --out "$out/plots_rings_ehd"
