@@ -13,6 +13,7 @@ void addExportModesCommand(CLI::App& app);
 void addBearingCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addThermalCommand(CLI::App& app);
+void addAcousticsCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);
 
 }  // namespace flexehd::cli

@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
     flexehd::cli::addBearingCommand(app);
     flexehd::cli::addRunCommand(app);
     flexehd::cli::addThermalCommand(app);
+    flexehd::cli::addAcousticsCommand(app);
     flexehd::cli::addSweepCommand(app);
 
     try {

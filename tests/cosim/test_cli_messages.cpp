@@ -162,6 +162,10 @@ const std::vector<Probe> kProbes = {
     {"CaseNameInLatin1", {{"case.yaml", minimalCase() + "name: M\xfcller\n"}, kPressure}, "run {dir}/case.yaml", 1,
      "name (line 14): expected UTF-8 text", "M\xfc"},
     {"BearingZeroLength", {}, "bearing --eccentricity 0.5 --length 0", 1, "--length must be positive", "nan"},
+    {"AcousticsWithoutARecord", {{"summary.json", "{}"}}, "acoustics {dir}", 1,
+     "/acoustics.h5: no such file", "HDF5-DIAG"},
+    {"AcousticsOfAFileThatIsNoRecord", {{"acoustics.h5", "not hdf5"}}, "acoustics {dir}", 1,
+     "cannot open it as an HDF5 file", "HDF5-DIAG"},
     {"StudyRangeOfABillionValues",
      {kCase, kPressure,
       {"study.yaml", "base_case: case.yaml\nparameters:\n  engine.speed_rpm: {start: 1000, stop: 7000, count: "

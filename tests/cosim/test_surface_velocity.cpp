@@ -7,9 +7,14 @@
 //  - The record samples the modal velocities on a fixed grid of the sampling rate, linear
 //    between the accepted steps: a velocity linear in time is sampled exactly, whatever the steps;
 //    each cycle's grid starts at the cycle's first state; the file holds what the recorder holds.
+//  - `flexehd acoustics`' report of a record: the sleeve translating along x with a tone of
+//    amplitude V at the 3rd engine order, on a bin under the rectangular window, radiates
+//    ½ ρ c V² ∫ cos²θ dA = ½ ρ c V² πRH, all of it in the 1/3-octave band of 160 Hz and at order 3;
+//    its area-weighted rms normal velocity is V/2.
 //  - The case file refuses `acoustics` without a flexible liner or the dynamic response, and caps
 //    time.max_step_deg at the sampling interval 6 n / f_s degrees.
 #include "cosim/casefile/CaseFile.hpp"
+#include "cosim/results/LinerVibrationReport.hpp"
 #include "cosim/results/SurfaceVelocityRecorder.hpp"
 #include "fem/MeshReader.hpp"
 #include "../TestScratch.hpp"
@@ -196,4 +201,40 @@ TEST(SurfaceVelocity, TheCaseFileAsksForAFlexibleLinerWithItsDynamicsAndCapsTheS
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find("needs a flexible liner"), std::string::npos) << e.what();
     }
+}
+
+TEST(SurfaceVelocity, TheReportOfATranslatingSleeveRadiatesHalfRhoCVSquaredPiRH) {
+    const modal::ReducedBody sleeve = translatingSleeve();
+    const std::filesystem::path dir = flexehd::test::scratchDir();
+    // 3000 rpm: a cycle of 0.04 s; 2.56 × 2500 Hz = 6400 samples per second, 256 per cycle, bins of
+    // 25 Hz; the 3rd order (150 Hz) on bin 6.
+    SurfaceVelocityRecorder r(acousticCase(2500.0), sleeve, 0, (dir / "acoustics.h5").string());
+    const double fs = 6400.0, V = 1e-3, f = 150.0;
+    StepEvaluation evaluation;
+    for (int k = 0; k <= 256; ++k) {
+        StepState s;
+        s.time = k / fs;
+        s.crankDeg = 18000.0 * s.time;
+        s.w = Eigen::Vector3d(V * std::sin(2.0 * std::numbers::pi * f * s.time), 0.0, 0.0);
+        r.stepAccepted(AcceptedStep{s, evaluation, 1, 0.0, 0.0});
+    }
+    r.cycleEnded(CycleEnd{1, 0, true, nullptr});
+    LinerVibrationOptions o;
+    o.window = acoustics::WindowKind::Rectangular;
+    const nlohmann::json doc = reportLinerVibration(dir.string(), o);
+    const double R = 0.043, H = 0.050, rhoC = 1.204 * 343.0;
+    const double expected = 0.5 * rhoC * V * V * std::numbers::pi * R * H;
+    EXPECT_EQ(doc["record"]["samples"].get<int>(), 256);  // the cycle's last sample repeats its first
+    EXPECT_NEAR(doc["erp"]["total_w"].get<double>(), expected, 3e-3 * expected);
+    double inBand = 0.0;
+    for (const auto& band : doc["erp"]["bands"])
+        if (band["lower_hz"].get<double>() <= f && f < band["upper_hz"].get<double>()) inBand = band["erp_w"].get<double>();
+    EXPECT_NEAR(inBand, doc["erp"]["total_w"].get<double>(), 1e-9 * expected);
+    EXPECT_DOUBLE_EQ(doc["erp"]["orders"][0]["order"].get<double>(), 3.0);
+    EXPECT_NEAR(doc["velocity"]["rms_m_per_s"].get<double>(), 0.5 * V, 3e-3 * V);
+    std::printf("translating sleeve: ERP %.6g W against 1/2 rho c V^2 pi R H = %.6g W\n",
+                doc["erp"]["total_w"].get<double>(), expected);
+    EXPECT_TRUE(std::filesystem::exists(dir / "acoustics.csv"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "acoustics_map.csv"));
+    EXPECT_THROW(reportLinerVibration((dir / "nothing").string()), std::runtime_error);
 }

@@ -1,0 +1,139 @@
+#include "cosim/results/LinerVibrationReport.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/Core>
+#include <fmt/format.h>
+
+#include "acoustics/EngineOrderSpectrum.hpp"
+#include "acoustics/RadiatedPower.hpp"
+#include "acoustics/ShortTimeRadiatedPower.hpp"
+#include "acoustics/SoundPowerLevel.hpp"
+#include "acoustics/SpectrumAnalyzer.hpp"
+#include "cosim/io/JsonText.hpp"
+#include "fem/AtomicFile.hpp"
+#include "modal/Hdf5Reader.hpp"
+
+namespace flexehd::cosim {
+namespace {
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+struct Record {
+    double sampleRate = 0.0, upTo = 0.0, rpm = 0.0;
+    int cycle = 0;
+    bool last = false;
+    std::string surface;
+    std::vector<double> time, crank;
+    Eigen::MatrixXd velocity;  // samples × points, m/s
+    Eigen::VectorXd area;      // m²
+};
+
+Eigen::MatrixXd matrix(const modal::Hdf5Reader& r, const std::string& name, unsigned long long rows,
+                       unsigned long long cols) {
+    std::vector<unsigned long long> dims;
+    const std::vector<double> v = r.doubles(name, dims);
+    if (dims.size() != 2 || dims[0] != rows || dims[1] != cols)
+        r.fail(fmt::format("dataset {} is not {} × {}", name, rows, cols));
+    return Eigen::Map<const RowMajor>(v.data(), static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+}
+
+// One cycle of the record: the samples before t_0 + 720° (the last sample of a whole cycle repeats
+// the first).
+Record readRecord(const std::string& path) {
+    const modal::Hdf5Reader r(path, "acoustics record");
+    if (r.stringAttribute("/", "format") != "flexehd-acoustics") r.fail("not a flexehd acoustics record (format)");
+    Record rec;
+    rec.sampleRate = r.doubleAttribute("/", "sample_rate_hz");
+    rec.upTo = r.doubleAttribute("/", "up_to_hz");
+    rec.rpm = r.doubleAttribute("/", "speed_rpm");
+    rec.cycle = r.intAttribute("/", "cycle");
+    rec.last = r.intAttribute("/", "last_cycle") != 0;
+    rec.surface = r.stringAttribute("/", "surface");
+    std::vector<unsigned long long> dims, shapeDims;
+    rec.time = r.doubles("/time_s", dims);
+    rec.crank = r.doubles("/crank_deg", dims);
+    r.doubles("/surface/normal_shapes", shapeDims);
+    const std::vector<double> area = r.doubles("/surface/area_m2", dims);
+    if (shapeDims.size() != 2 || dims.size() != 1 || dims[0] != shapeDims[0])
+        r.fail("/surface/area_m2 and /surface/normal_shapes do not have one row per point");
+    const unsigned long long samples = rec.time.size(), points = shapeDims[0], modes = shapeDims[1];
+    const Eigen::MatrixXd modal = matrix(r, "/liner/modal_velocity", samples, modes);
+    const Eigen::MatrixXd shapes = matrix(r, "/surface/normal_shapes", points, modes);
+    const double cycleEnd = rec.time.front() + 120.0 / rec.rpm;
+    std::size_t n = 0;
+    while (n < rec.time.size() && rec.time[n] < cycleEnd - 1e-9 / rec.sampleRate) ++n;
+    if (n < 8) r.fail(fmt::format("{} samples in its cycle: too few for a spectrum", n));
+    rec.time.resize(n);
+    rec.crank.resize(n);
+    rec.velocity = modal.topRows(static_cast<Eigen::Index>(n)) * shapes.transpose();
+    rec.area = Eigen::Map<const Eigen::VectorXd>(area.data(), static_cast<Eigen::Index>(area.size()));
+    return rec;
+}
+
+nlohmann::json level(double power) {
+    return power > 0.0 ? nlohmann::json(acoustics::soundPowerLevel_dB(power)) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::json reportLinerVibration(const std::string& dir, const LinerVibrationOptions& o) {
+    const Record rec = readRecord(dir + "/acoustics.h5");
+    const auto n = static_cast<int>(rec.time.size());
+    acoustics::SpectrumAnalyzer analyzer(n, rec.sampleRate, o.window);
+    const acoustics::VelocitySpectrum spectrum = analyzer.analyze(rec.velocity);
+    const acoustics::RadiatedPower radiated(rec.area);
+    const Eigen::VectorXd perBin = radiated.perBin_W(spectrum);
+    const Eigen::VectorXd& f = spectrum.frequency_hz();
+    // The bands within the record's range.
+    const acoustics::BandSpectrum all = radiated.inOneThirdOctaveBands_W(spectrum);
+    nlohmann::json bands = nlohmann::json::array();
+    std::string bandCsv = "band_mid_hz,band_lower_hz,band_upper_hz,erp_w,erp_db\n";
+    double total = 0.0;
+    for (Eigen::Index k = 0; k < all.size(); ++k) {
+        if (all.midFrequency_hz[k] > rec.upTo) continue;
+        total += all.value[k];
+        bands.push_back({{"mid_hz", all.midFrequency_hz[k]}, {"lower_hz", all.lowerEdge_hz[k]},
+                         {"upper_hz", all.upperEdge_hz[k]}, {"erp_w", all.value[k]}, {"erp_db", level(all.value[k])}});
+        bandCsv += fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{}\n", all.midFrequency_hz[k], all.lowerEdge_hz[k],
+                               all.upperEdge_hz[k], all.value[k],
+                               all.value[k] > 0.0 ? fmt::format("{:.6g}", acoustics::soundPowerLevel_dB(all.value[k])) : "");
+    }
+    std::string spectrumCsv = "frequency_hz,order,erp_w\n";
+    const acoustics::EngineOrderSpectrum orders(f, perBin, rec.rpm);
+    for (Eigen::Index k = 0; k < f.size(); ++k)
+        spectrumCsv += fmt::format("{:.9g},{:.9g},{:.9g}\n", f[k], orders.binOrder()[k], perBin[k]);
+    nlohmann::json top = nlohmann::json::array();
+    for (const acoustics::OrderLine& line : orders.top(o.orders))
+        top.push_back({{"order", line.order}, {"frequency_hz", line.frequency_hz}, {"erp_w", line.power},
+                       {"erp_db", level(line.power)}});
+    // The crank-angle map: frames of frameDeg, half overlapping.
+    const double samplesPerDeg = rec.sampleRate / (6.0 * rec.rpm);
+    const int frame = std::clamp(static_cast<int>(std::lround(o.frameDeg * samplesPerDeg)), 8, n);
+    acoustics::ShortTimeRadiatedPower stft(radiated, rec.sampleRate, frame, std::max(1, frame / 2), o.window);
+    const acoustics::CrankAngleBandMap map = stft.map(rec.velocity, rec.rpm, rec.crank.front());
+    std::string mapCsv = "crank_deg,band_mid_hz,erp_w\n";
+    for (Eigen::Index i = 0; i < map.power_W.rows(); ++i)
+        for (Eigen::Index j = 0; j < map.power_W.cols(); ++j)
+            if (map.midFrequency_hz[j] <= rec.upTo)
+                mapCsv += fmt::format("{:.6g},{:.9g},{:.9g}\n", std::fmod(map.crankAngle_deg[i] + 720.0, 720.0),
+                                      map.midFrequency_hz[j], map.power_W(i, j));
+    const double meanSquare = (rec.velocity.cwiseAbs2().colwise().mean() * rec.area).value() / rec.area.sum();
+    nlohmann::json doc = {
+        {"record",
+         {{"cycle", rec.cycle}, {"last_cycle", rec.last}, {"surface", rec.surface}, {"points", rec.area.size()},
+          {"area_m2", rec.area.sum()}, {"samples", n}, {"sample_rate_hz", rec.sampleRate}, {"up_to_hz", rec.upTo},
+          {"bin_hz", spectrum.binWidth_hz()}, {"window", analyzer.window().name()}, {"speed_rpm", rec.rpm}}},
+        {"velocity", {{"rms_m_per_s", std::sqrt(meanSquare)}}},
+        {"erp", {{"total_w", total}, {"total_db", level(total)}, {"bands", bands}, {"orders", top}}},
+        {"map", {{"frame_deg", frame / samplesPerDeg}, {"frames", map.power_W.rows()}}}};
+    fem::writeTextAtomically(dir + "/acoustics.json", jsonText(doc, 2) + "\n");
+    fem::writeTextAtomically(dir + "/acoustics.csv", bandCsv);
+    fem::writeTextAtomically(dir + "/acoustics_spectrum.csv", spectrumCsv);
+    fem::writeTextAtomically(dir + "/acoustics_map.csv", mapCsv);
+    return doc;
+}
+
+}  // namespace flexehd::cosim
