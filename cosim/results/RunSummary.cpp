@@ -83,6 +83,11 @@ void addCentredClearance(std::vector<Entry>& table) {
 // The wear maxima are written once a cycle finished.
 bool wearDone(const Source& s) { return s.in.wear && s.in.wear->finished(); }
 
+// A figure of the liner's vibration report (acoustics.json), once a cycle's record was written.
+Json acousticsFigure(const Source& s, const char* pointer) {
+    return s.in.acoustics ? s.in.acoustics->value(Json::json_pointer(pointer), Json()) : Json();
+}
+
 // Where in the cycle the last two cycles differ: per sector of crank angle, its range and error.
 Json periodicityBySector(const RunStatistics& st) {
     Json sectors = Json::array();
@@ -120,6 +125,12 @@ const std::vector<Entry>& entries() {
         {"wear.liner_rate_max_m_per_h", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().linerRate) : Json(); }},
         {"wear.liner_max_depth_m", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().linerDepth) : Json(); }},
         {"wear.liner_max_theta_deg", [](const Source& s) { return wearDone(s) ? Json(s.in.wear->maxima().linerThetaDeg) : Json(); }},
+        {"acoustics.erp_total_w", [](const Source& s) { return acousticsFigure(s, "/erp/total_w"); }},
+        {"acoustics.erp_total_db", [](const Source& s) { return acousticsFigure(s, "/erp/total_db"); }},
+        {"acoustics.velocity_rms_m_per_s", [](const Source& s) { return acousticsFigure(s, "/velocity/rms_m_per_s"); }},
+        {"acoustics.sample_rate_hz", [](const Source& s) { return acousticsFigure(s, "/record/sample_rate_hz"); }},
+        {"acoustics.max_step_deg",
+         [](const Source& s) { return s.in.c.acoustics.enabled ? Json(s.in.c.time.maxStepDeg) : Json(); }},
         {"oil.liner_volume_m3", [](const Source& s) { return s.st().oil ? Json(s.st().linerOil) : Json(); }},
         {"oil.film_volume_m3", [](const Source& s) { return s.st().oil ? Json(s.st().filmOil) : Json(); }},
         {"oil.periodicity_error", [](const Source& s) { return s.st().oil ? Json(s.st().oilPeriodicityError) : Json(); }},

@@ -29,6 +29,8 @@ struct RunSummaryInput {
     /// Every completed cycle's figures (null: none kept): cycle_to_cycle of a run that did not
     /// become periodic.
     const CycleSeries* cycles = nullptr;
+    /// acoustics.json of the liner's vibration record (LinerVibrationReport; null: none)
+    const nlohmann::json* acoustics = nullptr;
 };
 
 nlohmann::json runSummary(const RunSummaryInput& in);

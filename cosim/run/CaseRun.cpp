@@ -21,6 +21,7 @@
 #include "cosim/run/StarvedStepTolerance.hpp"
 #include "cosim/run/ThermalLandTemperatures.hpp"
 #include "cosim/results/ModeShapeExport.hpp"
+#include "cosim/results/LinerVibrationReport.hpp"
 #include "cosim/results/RunSummary.hpp"
 #include "cosim/results/SurfaceVelocityRecorder.hpp"
 #include "cosim/wear/SkirtWear.hpp"
@@ -280,10 +281,20 @@ CaseRunResult runCase(const EngineCase& given, const RunLog& log, const std::vec
             message += (message.empty() ? "" : "; ") + std::string(e.what());
         }
     }
+    std::optional<nlohmann::json> vibration;
+    if (acoustics && acoustics->cyclesWritten() > 0) {  // the last complete cycle's record
+        try {
+            vibration = reportLinerVibration(dir);
+        } catch (const std::exception& e) {
+            if (status == "ok") status = "failed";
+            message += (message.empty() ? "" : "; ") + std::string(e.what());
+        }
+    }
     CaseRunResult result;
-    result.summary =
-        runSummary({c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(),
-                    wear ? &*wear : nullptr, &cycleSeries});
+    RunSummaryInput summaryInput{c, sim, cycle, status, message, outputSeconds, files.seconds(), total.seconds(),
+                                 wear ? &*wear : nullptr, &cycleSeries};
+    summaryInput.acoustics = vibration ? &*vibration : nullptr;
+    result.summary = runSummary(summaryInput);
     try {
         writeSummary(dir, result.summary);
     } catch (const std::exception& e) {  // a full disk: say what stopped the run, then that the summary is missing too
