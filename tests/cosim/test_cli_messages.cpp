@@ -74,7 +74,7 @@ const std::vector<Probe> kProbes = {
      "cannot create the output folder /proc/flexehd_probe/x", "filesystem error"},
     // c. commands
     {"UnknownCommand", {}, "frobnicate", 1,
-     "unknown command 'frobnicate'; commands are: modes, reduce, inspect, export-modes, bearing, run, thermal, sweep",
+     "unknown command 'frobnicate'; commands are: modes, reduce, inspect, export-modes, bearing, run, thermal, acoustics, sweep",
      "A subcommand is required"},
     {"NoCommand", {}, "", 1, "no command given; commands are: modes,", "A subcommand is required"},
     // d. the case file's YAML
