@@ -55,13 +55,14 @@ Record readRecord(const std::string& path) {
     std::vector<unsigned long long> dims, shapeDims;
     rec.time = r.doubles("/time_s", dims);
     rec.crank = r.doubles("/crank_deg", dims);
-    r.doubles("/surface/normal_shapes", shapeDims);
+    const std::vector<double> shapeValues = r.doubles("/surface/normal_shapes", shapeDims);
     const std::vector<double> area = r.doubles("/surface/area_m2", dims);
     if (shapeDims.size() != 2 || dims.size() != 1 || dims[0] != shapeDims[0])
         r.fail("/surface/area_m2 and /surface/normal_shapes do not have one row per point");
     const unsigned long long samples = rec.time.size(), points = shapeDims[0], modes = shapeDims[1];
     const Eigen::MatrixXd modal = matrix(r, "/liner/modal_velocity", samples, modes);
-    const Eigen::MatrixXd shapes = matrix(r, "/surface/normal_shapes", points, modes);
+    const Eigen::Map<const RowMajor> shapes(shapeValues.data(), static_cast<Eigen::Index>(points),
+                                            static_cast<Eigen::Index>(modes));
     const double cycleEnd = rec.time.front() + 120.0 / rec.rpm;
     std::size_t n = 0;
     while (n < rec.time.size() && rec.time[n] < cycleEnd - 1e-9 / rec.sampleRate) ++n;

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -145,7 +144,6 @@ void RingPackGas::moveRings(double dt, double cylinderPressure, double accelerat
 const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressure, double acceleration,
                                                const std::vector<double>& friction) {
     const std::size_t n = around_.size();
-    lastCylinder_ = cylinderPressure;
     if (accepted_) {
         trial_ = *accepted_;
         if (lift_) moveRings(dt, cylinderPressure, acceleration, friction);
@@ -172,11 +170,6 @@ const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressur
 double RingPackGas::margin(std::size_t i, const InterRingGas& gas, double cylinderPressure) const {
     return rings_[i].faceMargin + pressure(behind(i), &gas, cylinderPressure) -
            0.5 * (pressure(above(i), &gas, cylinderPressure) + pressure(below(i), &gas, cylinderPressure));
-}
-
-double RingPackGas::collapseMargin(std::size_t i) const {
-    if (!lift_ || !trial_) return std::numeric_limits<double>::infinity();
-    return margin(i, *trial_, lastCylinder_);
 }
 
 void RingPackGas::accept() {

@@ -62,9 +62,6 @@ public:
     double blowBy() const;
     /// kg, the gas in the lands and grooves at the accepted state.
     double mass() const { return accepted_ ? accepted_->mass() : 0.0; }
-    /// Pa, ring i's collapse margin at the last trial: T/(n_f b) + p_behind − ½ (p_above + p_below),
-    /// below zero where its face would leave the liner (with ring lift; without, +∞).
-    double collapseMargin(std::size_t i) const;
 
 private:
     // The network's ends round ring i: the space above it, below it, and behind it (its groove).
@@ -90,7 +87,6 @@ private:
     bool lift_;
     std::vector<Ring> rings_;
     std::vector<double> volumes_, grooves_, temperatures_, gaps_;
-    double lastCylinder_ = 0.0;  // Pa, the last trial's cylinder pressure
     std::optional<InterRingGas> accepted_, trial_;  // lands and grooves (none: a single ring without lift)
     std::vector<RingAxialMotion> motion_, trialMotion_;
     std::vector<RingAxialMotion> collapse_, trialCollapse_;  // each face's opening off the liner
