@@ -40,4 +40,19 @@ void HeldModalDynamics::respond(const Eigen::VectorXd& f, const Eigen::VectorXd&
     q.noalias() = N_ * llt_.solve(N_.transpose() * g);
 }
 
+void HeldModalDynamics::beginStep(const ModalStepStart& start) {
+    setStep(start.a0, start.dt);
+    hq_ = start.a1 * start.y;
+    hv_ = start.a1 * start.w;
+    if (start.a2 != 0.0) {
+        hq_ += start.a2 * start.yBefore;
+        hv_ += start.a2 * start.wBefore;
+    }
+}
+
+void HeldModalDynamics::loadResponse(const Eigen::VectorXd& f, Eigen::VectorXd& q) const {
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(f.size());
+    respond(f, zero, zero, q);
+}
+
 }  // namespace flexehd::modal

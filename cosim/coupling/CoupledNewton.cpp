@@ -110,7 +110,7 @@ Eigen::MatrixXd CoupledNewtonScheme::coupledJacobian(const StepContext& ctx) {
     const int first = P.motionColumns ? 0 : 2;
     if (P.motionColumns) J.topLeftCorner(2, 2) = rate * rate * step_.dyn_.mass(ctx.crank) + P.motionX;
     // Modal rows: δ_ij − ∂H/∂y_j, H linear in the mapped pressure (history terms held).
-    auto respond = [&](const FlexibleBody& body, modal::HeldModalDynamics* dynamics, int row, int rows) {
+    auto respond = [&](const FlexibleBody& body, modal::ModalStepper* dynamics, int row, int rows) {
         Eigen::MatrixXd F(rows, k - first);
         if (P.motionColumns) F.leftCols(2) = P.modalX.middleRows(row - 2, rows);
         // The piston's inertia load at the iterate's (ë, β̈): ∂(ë, β̈)/∂(e, β) = (a0/Δt)² I.
@@ -119,10 +119,9 @@ Eigen::MatrixXd CoupledNewtonScheme::coupledJacobian(const StepContext& ctx) {
         F.rightCols(m) = P.modalH.middleRows(row - 2, rows);
         if (elasticRate) F.rightCols(m) += rate * P.modalRate.middleRows(row - 2, rows);
         if (dynamics) {
-            const Eigen::VectorXd zero = Eigen::VectorXd::Zero(rows);
             Eigen::VectorXd q;
             for (int j = 0; j < k - first; ++j) {
-                dynamics->respond(F.col(j), zero, zero, q);
+                dynamics->loadResponse(F.col(j), q);
                 J.block(row, first + j, rows, 1) = -q;
             }
         } else {

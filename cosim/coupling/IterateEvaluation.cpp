@@ -55,18 +55,19 @@ void StepSolver::structureResponse(const StepContext& ctx, StepEvaluation& ev) {
     ev.Hy.resize(mp_ + ml_);
     if (pistonBody_) {  // modal update: q = C f, or the BDF2 step of the modal dynamics
         if (pistonDynamics_)
-            pistonDynamics_->respond(f.head(mp_), ctx.hq.head(mp_), ctx.hv.head(mp_), q);
+            pistonDynamics_->respond(f.head(mp_), q);
         else
             pistonBody_->quasiStatic(f.head(mp_), q);
         ev.Hy.head(mp_) = q;
     }
     if (linerBody_) {
         if (linerDynamics_)
-            linerDynamics_->respond(f.tail(ml_), ctx.hq.tail(ml_), ctx.hv.tail(ml_), q);
+            linerDynamics_->respond(f.tail(ml_), q);
         else
             linerBody_->quasiStatic(f.tail(ml_), q);
         ev.Hy.tail(ml_) = q;
     }
+    ev.modalForce = f;  // the dynamic response's next step and the liner's acoustic record start from it
     work_.modal += t0.seconds();
 }
 

@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 
 #include "cosim/coupling/StepSolver.hpp"
+
+#include "modal/HeldModalDynamics.hpp"
 #include "cosim/coupling/CoupledNewtonScheme.hpp"
 #include "cosim/coupling/PartitionedScheme.hpp"
 
@@ -72,12 +74,21 @@ StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, d
     ctx.now = &s;
     ctx.before = &prev;
     if (pistonDynamics_ || linerDynamics_) {
-        // BDF2 histories of the modal coordinates (prev starts as a copy of the initial state;
-        // a2 = 0 on the first step).
-        ctx.hq = st.a1 * s.y + st.a2 * prev.y;
-        ctx.hv = st.a1 * s.w + st.a2 * prev.w;
-        if (pistonDynamics_) pistonDynamics_->setStep(st.a0, st.dt);
-        if (linerDynamics_) linerDynamics_->setStep(st.a0, st.dt);
+        // Each body's step from its state (prev starts as a copy of the initial state; a2 = 0 on
+        // the first step) and the modal force it was in.
+        auto begin = [&](modal::ModalStepper& body, Eigen::Index first, Eigen::Index count) {
+            modal::ModalStepStart start;
+            start.dt = st.dt;
+            start.a0 = st.a0, start.a1 = st.a1, start.a2 = st.a2;
+            start.y = s.y.segment(first, count);
+            start.yBefore = prev.y.segment(first, count);
+            start.w = s.w.segment(first, count);
+            start.wBefore = prev.w.segment(first, count);
+            if (s.f.size() == s.y.size()) start.f = s.f.segment(first, count);
+            body.beginStep(start);
+        };
+        if (pistonDynamics_) begin(*pistonDynamics_, 0, mp_);
+        if (linerDynamics_) begin(*linerDynamics_, mp_, ml_);
     }
     return ctx;
 }
@@ -142,7 +153,12 @@ void StepSolver::acceptStep(const StepContext& ctx, const StepState& s, const Ei
     out.a = ev.acc;
     out.y = y;
     out.yFrom = s.y;
-    if (pistonDynamics_ || linerDynamics_) out.w = (ctx.step.a0 * y + ctx.hq) / ctx.step.dt;  // ẏ of BDF2
+    if (pistonDynamics_ || linerDynamics_) {
+        out.w = Eigen::VectorXd::Zero(mp_ + ml_);
+        if (pistonDynamics_) out.w.head(mp_) = pistonDynamics_->velocity(y.head(mp_), ev.modalForce.head(mp_));
+        if (linerDynamics_) out.w.tail(ml_) = linerDynamics_->velocity(y.tail(ml_), ev.modalForce.tail(ml_));
+    }
+    out.f = ev.modalForce;
     out.films.clear();
     for (std::size_t c = 0; c < contacts_.size(); ++c) out.films.push_back(contacts_[c]->accepted(ctx.step, s.films[c], ev.films[c]));
 }

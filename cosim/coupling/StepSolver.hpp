@@ -22,7 +22,7 @@
 #include "cosim/ringpack/RingPackGas.hpp"
 #include "cosim/mapping/FlexibleBody.hpp"
 #include "cosim/mapping/PistonBodyLoads.hpp"
-#include "modal/HeldModalDynamics.hpp"
+#include "modal/ModalStepper.hpp"
 
 #include <Eigen/Core>
 
@@ -114,7 +114,7 @@ private:
     WorkTally& work_;
     int mp_ = 0, ml_ = 0;  // modal coordinates of piston and liner
     // bodies.response: dynamic — BDF2 modal dynamics per flexible body (null: quasi-static)
-    std::unique_ptr<modal::HeldModalDynamics> pistonDynamics_, linerDynamics_;
+    std::unique_ptr<modal::ModalStepper> pistonDynamics_, linerDynamics_;
     std::unique_ptr<CouplingScheme> scheme_;  // chosen once (ctor)
     std::unique_ptr<RingPackGas> packGas_;    // ring_gas: the lands' gas (null: none)
     std::unique_ptr<PistonBodyLoads> pistonLoads_;  // bodies.piston.loads on the flexible piston (null: none)

@@ -28,6 +28,7 @@ struct StepState {
     Eigen::VectorXd yFrom;  // y of the state the step that reached this one started from (empty: initial)
     bool quadraticModalStart = false;  // y's quadratic extrapolation predicted this step better than the linear one
     Eigen::VectorXd w;      // modal velocities ẏ (bodies.response: dynamic; else empty)
+    Eigen::VectorXd f;      // modal forces at y, N (flexible bodies; empty: none yet)
     std::vector<ContactState> films;  // per contact (the squeeze term's history, the warm start)
     LinerOilState oil;                // the liner's oil layer and the contacts' covers on it
 };
@@ -40,7 +41,6 @@ struct StepContext {
     double gas = 0.0;
     const StepState* now = nullptr;
     const StepState* before = nullptr;
-    Eigen::VectorXd hq, hv;  // dynamic response: BDF2 histories a1 yₙ + a2 yₙ₋₁, a1 ẏₙ + a2 ẏₙ₋₁
 };
 
 /// One iterate (e, β, y) of a step.
@@ -48,6 +48,7 @@ struct StepEvaluation {
     std::vector<ContactIterate> films;  // per contact
     FilmAction action;                  // the contacts' together
     Eigen::VectorXd Hy;                 // the bodies' response to the contacts' modal loads
+    Eigen::VectorXd modalForce;         // the modal loads Hy responds to
     Eigen::Vector2d vel, acc, residual;
     Eigen::Vector2d scale;  // magnitude of the largest terms of each equation (N, N·m)
 };

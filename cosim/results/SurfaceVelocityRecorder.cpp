@@ -9,18 +9,21 @@
 #include "fem/AtomicFile.hpp"
 #include "fem/BoundarySurface.hpp"
 #include "modal/Hdf5Writer.hpp"
+#include "modal/ModalSuperposition.hpp"
 
 namespace flexehd::cosim {
 
-SurfaceVelocityRecorder::SurfaceVelocityRecorder(const EngineCase& c, const modal::ReducedBody& liner, int modeOffset,
-                                                 std::string path)
+SurfaceVelocityRecorder::SurfaceVelocityRecorder(const EngineCase& c, const modal::ReducedBody& liner,
+                                                 const std::vector<int>& held, int modeOffset, std::string path)
     : spec_(c.acoustics),
       rpm_(c.engine.speedRpm),
       maxStepDeg_(c.time.maxStepDeg),
       offset_(modeOffset),
       modes_(liner.numModes()),
       path_(std::move(path)),
-      rate_(c.acoustics.sampleRateHz()) {
+      rate_(c.acoustics.sampleRateHz()),
+      propagator_(liner, held),
+      compliance_(modal::ModalSuperposition(liner).compliance(held)) {
     if (!liner.mesh.hasGroup(spec_.surface) || liner.mesh.group(spec_.surface).dim != 2)
         throw std::invalid_argument(fmt::format("acoustics.surface: the liner's mesh ({}) has no surface group '{}' "
                                                 "(its groups: {})",
@@ -67,43 +70,53 @@ void SurfaceVelocityRecorder::surfaceShapes(const modal::ReducedBody& liner) {
 
 void SurfaceVelocityRecorder::stepAccepted(const AcceptedStep& step) {
     const StepState& s = step.state;
-    if (s.w.size() < offset_ + modes_)
-        throw std::logic_error("acoustics: the run's state has no modal velocities of the liner (the dynamic response)");
-    const Eigen::VectorXd w = s.w.segment(offset_, modes_);
-    if (!w.allFinite())
-        throw std::runtime_error(fmt::format("acoustics: the liner's modal velocity is not finite at {:.4f} deg",
+    const Eigen::VectorXd force = modalForce(s);
+    if (!force.allFinite())
+        throw std::runtime_error(fmt::format("acoustics: the modal force on the liner is not finite at {:.4f} deg",
                                              crankAngle720(s.crankDeg)));
+    if (!started_) {  // the liner's forced response starts at rest, in equilibrium with the first force
+        y_ = compliance_ * force;
+        w_ = Eigen::VectorXd::Zero(modes_);
+        force_ = force;
+        lastTime_ = s.time;
+        lastAngle_ = s.crankDeg;
+    }
     if (!started_ || step.cycle != cycle_) {
         // A cycle's grid starts at the state it starts from: the last one of the cycle before
         // (the run's first accepted step for the first cycle).
-        if (!started_) {
-            lastTime_ = s.time;
-            lastAngle_ = s.crankDeg;
-            lastVelocity_ = w;
-        }
         started_ = true;
         cycle_ = step.cycle;
         origin_ = lastTime_;
-        times_.clear();
-        angles_.clear();
-        velocities_.clear();
-        times_.push_back(origin_);
-        angles_.push_back(crankAngle720(lastAngle_));
-        velocities_.push_back(lastVelocity_);
+        times_.assign(1, origin_);
+        angles_.assign(1, crankAngle720(lastAngle_));
+        velocities_.assign(1, w_);
     }
-    // The grid's samples in (t_n−1, t_n], linear between the two states.
     const double span = s.time - lastTime_;
+    if (!(span > 0.0)) return;
+    // The grid's samples in (t_n−1, t_n], and the step's end: the exact response to the force
+    // linear between the two states.
+    std::vector<double> taus;
     for (auto k = static_cast<long long>(times_.size());; ++k) {
         const double t = origin_ + static_cast<double>(k) / rate_;
-        if (t > s.time || !(span > 0.0)) break;
-        const double f = (t - lastTime_) / span;
+        if (t > s.time) break;
         times_.push_back(t);
-        angles_.push_back(crankAngle720(lastAngle_ + f * (s.crankDeg - lastAngle_)));
-        velocities_.push_back(lastVelocity_ + f * (w - lastVelocity_));
+        angles_.push_back(crankAngle720(lastAngle_ + (t - lastTime_) / span * (s.crankDeg - lastAngle_)));
+        taus.push_back(t - lastTime_);
     }
+    taus.push_back(span);
+    Eigen::VectorXd yEnd;
+    const Eigen::MatrixXd within = propagator_.velocitiesWithin(y_, w_, force_, force, span, taus, &yEnd);
+    for (Eigen::Index j = 0; j + 1 < within.cols(); ++j) velocities_.push_back(within.col(j));
+    y_ = yEnd;
+    w_ = within.col(within.cols() - 1);
+    force_ = force;
     lastTime_ = s.time;
     lastAngle_ = s.crankDeg;
-    lastVelocity_ = w;
+}
+
+Eigen::VectorXd SurfaceVelocityRecorder::modalForce(const StepState& s) const {
+    if (s.f.size() < offset_ + modes_) return Eigen::VectorXd::Zero(modes_);  // the run's start: none yet
+    return s.f.segment(offset_, modes_);
 }
 
 Eigen::MatrixXd SurfaceVelocityRecorder::sampleVelocities() const {

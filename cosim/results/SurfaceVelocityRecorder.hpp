@@ -1,5 +1,5 @@
 #pragma once
-// SurfaceVelocityRecorder: the flexible liner's vibration for slap noise (docs/acoustics.md,
+// SurfaceVelocityRecorder: the flexible liner's vibration for slap noise (docs/acoustics.md §8,
 // case key `acoustics`). Each point of the radiating surface (a node of the liner's surface group
 // with its share of the area) moves with the normal velocity
 //
@@ -7,12 +7,13 @@
 //
 // n_i its outward normal and A_i its area from its area vector a_i: a third of the outward area
 // vector of each flat sub-triangle it is a vertex of (quadratic triangles split at their mid-side
-// nodes into four; a positive share for every node), Φ_i its rows of the liner's
-// mode shapes and ẏ the liner's modal velocities (bodies.response: dynamic). The recorder keeps the
-// normal shapes n_iᵀ Φ_i (points × modes), samples ẏ on a fixed grid of the case's sampling rate
-// over each cycle (linear between the accepted steps, which the case file keeps no longer than the
-// sampling interval) and writes the cycle's record at its end to acoustics.h5 (format:
-// docs/acoustics.md), so the file holds the last complete cycle.
+// nodes into four; a positive share for every node), Φ_i its rows of the liner's mode shapes.
+// ẏ is the liner's forced response to the run's modal force on it (the film and contact loads,
+// linear in time between the accepted steps), computed exactly by the liner's ModalPropagator:
+// every mode rings with its own frequency and damping, whatever the run's step and whatever its
+// own response of the liner (dynamic or quasi-static) that the film sees. The recorder samples ẏ
+// on a fixed grid of the case's sampling rate over each cycle and writes the cycle's record at
+// its end to acoustics.h5, so the file holds the last complete cycle.
 #include <string>
 #include <vector>
 
@@ -20,16 +21,19 @@
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/coupling/RunObserver.hpp"
+#include "modal/ModalPropagator.hpp"
 #include "modal/ReducedBody.hpp"
 
 namespace flexehd::cosim {
 
 class SurfaceVelocityRecorder final : public RunObserver {
 public:
-    /// liner: the liner's reduced body; modeOffset: where its modal coordinates start in the
-    /// run's ẏ (after the piston's); path: the file written at each cycle's end. Throws
-    /// std::invalid_argument naming acoustics.surface when the liner's mesh has no such surface.
-    SurfaceVelocityRecorder(const EngineCase& c, const modal::ReducedBody& liner, int modeOffset, std::string path);
+    /// liner: the liner's reduced body and its held interfaces; modeOffset: where its modal
+    /// coordinates start in the run's modal force (after the piston's); path: the file written at
+    /// each cycle's end. Throws std::invalid_argument naming acoustics.surface when the liner's
+    /// mesh has no such surface, std::runtime_error when the held liner can move rigidly.
+    SurfaceVelocityRecorder(const EngineCase& c, const modal::ReducedBody& liner, const std::vector<int>& held,
+                            int modeOffset, std::string path);
 
     void stepAccepted(const AcceptedStep& step) override;
     void cycleEnded(const CycleEnd& end) override;
@@ -49,6 +53,7 @@ public:
 private:
     void surfaceShapes(const modal::ReducedBody& liner);
     void write(int cycle, bool last) const;
+    Eigen::VectorXd modalForce(const StepState& s) const;  // the liner's part of s.f (zero before any)
 
     AcousticsSpec spec_;
     double rpm_, maxStepDeg_;
@@ -62,7 +67,9 @@ private:
     int cycle_ = 0;
     double origin_ = 0.0, lastTime_ = 0.0, lastAngle_ = 0.0;
     bool started_ = false;
-    Eigen::VectorXd lastVelocity_;
+    modal::ModalPropagator propagator_;
+    Eigen::MatrixXd compliance_;     // quasi-static: the response's start
+    Eigen::VectorXd y_, w_, force_;  // the forced response's state and force at the last accepted step
     std::vector<double> times_, angles_;
     std::vector<Eigen::VectorXd> velocities_;
     int written_ = 0;

@@ -200,7 +200,8 @@ std::vector<std::string> columnNames(const std::vector<ContactColumn>& columns) 
 void recordLinerVibration(const EngineCase& c, PistonSimulation& sim, const std::string& dir, const RunLog& log,
                           std::optional<SurfaceVelocityRecorder>& recorder) {
     const int offset = sim.pistonBody() ? sim.pistonBody()->modes() : 0;
-    sim.addObserver(recorder.emplace(c, sim.linerBody()->body(), offset, dir + "/acoustics.h5"));
+    const FlexibleBody& liner = *sim.linerBody();
+    sim.addObserver(recorder.emplace(c, liner.body(), liner.heldInterfaces(), offset, dir + "/acoustics.h5"));
     say(log.info, fmt::format("acoustics: the liner's surface '{}' ({} points, {:.4g} m^2) sampled at {:g} Hz for "
                               "the range up to {:g} Hz; steps of at most {:.4g} deg (time.max_step_deg)",
                               c.acoustics.surface, recorder->areas().size(), recorder->areas().sum(),

@@ -59,7 +59,7 @@ std::vector<Eigen::VectorXd> integrate(HeldModalDynamics& dyn, const std::vector
         dyn.respond(force(t), hq, hv, qNew);
         qOld = q, vOld = v;
         q = qNew;
-        v = dyn.velocity(q, hq);
+        v = dyn.bdf2Velocity(q, hq);
         dtOld = dt;
         out.push_back(q);
     }
