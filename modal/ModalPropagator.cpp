@@ -14,6 +14,16 @@ namespace {
 
 using Complex = std::complex<double>;
 
+// φ₃(z) = (eᶻ − 1 − z − z²/2)/z³, by its series Σ zᵏ/(k+3)! where the closed form cancels.
+Complex phi3(Complex z) {
+    if (std::abs(z) < 0.5) {
+        Complex term = 1.0 / 6.0, sum = term;
+        for (int k = 1; k < 14; ++k) sum += (term *= z / double(k + 3));
+        return sum;
+    }
+    return (std::exp(z) - 1.0 - z - 0.5 * z * z) / (z * z * z);
+}
+
 // φ₁(z) = (eᶻ − 1)/z and φ₂(z) = (eᶻ − 1 − z)/z²; by their series Σ zᵏ/(k+1)!, Σ zᵏ/(k+2)! where
 // the closed forms cancel (|z| < ½: 14 terms leave less than 1e-16).
 void phi(Complex z, Complex& phi1, Complex& phi2) {
@@ -125,10 +135,9 @@ Eigen::VectorXd ModalPropagator::velocity(const Eigen::VectorXd& /*q*/, const Ei
     return Gv_ * f + vFree_;
 }
 
-Eigen::MatrixXd ModalPropagator::velocitiesWithin(const Eigen::VectorXd& y, const Eigen::VectorXd& w,
-                                                  const Eigen::VectorXd& fStart, const Eigen::VectorXd& fEnd,
-                                                  double dt, const std::vector<double>& taus,
-                                                  Eigen::VectorXd* yLast) const {
+void ModalPropagator::responseWithin(const Eigen::VectorXd& y, const Eigen::VectorXd& w, const Eigen::VectorXd& fStart,
+                                     const Eigen::VectorXd& fEnd, double dt, const std::vector<double>& taus,
+                                     Eigen::MatrixXd& displacement, Eigen::MatrixXd& velocity) const {
     const Eigen::Index k = lambda_.size();
     const Eigen::VectorXcd z0 = startModes(y, w);
     const Eigen::VectorXcd b0 = inF_ * fStart.cast<Complex>();
@@ -142,8 +151,26 @@ Eigen::MatrixXd ModalPropagator::velocitiesWithin(const Eigen::VectorXd& y, cons
             Z(j, Eigen::Index(i)) = std::exp(lambda_(j) * tau) * z0(j) + tau * p1 * b0(j) + tau * tau * p2 * slope(j);
         }
     }
-    if (yLast && Z.cols() > 0) *yLast = (outQ_ * Z.col(Z.cols() - 1)).real();
-    return (outV_ * Z).real();
+    displacement = (outQ_ * Z).real();
+    velocity = (outV_ * Z).real();
+}
+
+double ModalPropagator::workOver(const Eigen::VectorXd& y, const Eigen::VectorXd& w, const Eigen::VectorXd& fStart,
+                                 const Eigen::VectorXd& fEnd, double dt, const Eigen::VectorXd& yEnd) const {
+    const Eigen::Index k = lambda_.size();
+    const Eigen::VectorXcd z0 = startModes(y, w);
+    const Eigen::VectorXcd b0 = inF_ * fStart.cast<Complex>();
+    const Eigen::VectorXd slope = (fEnd - fStart) / dt;
+    const Eigen::VectorXcd s0 = inF_ * slope.cast<Complex>();
+    Eigen::VectorXcd integral(k);  // ∫₀^Δt z dt
+    for (Eigen::Index j = 0; j < k; ++j) {
+        Complex p1, p2;
+        const Complex x = lambda_(j) * dt;
+        phi(x, p1, p2);
+        integral(j) = dt * (p1 * z0(j) + dt * p2 * b0(j) + dt * dt * phi3(x) * s0(j));
+    }
+    const Eigen::VectorXd qIntegral = (outQ_ * integral).real();
+    return fEnd.dot(yEnd) - fStart.dot(y) - slope.dot(qIntegral);
 }
 
 }  // namespace flexehd::modal

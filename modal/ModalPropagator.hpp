@@ -43,12 +43,18 @@ public:
     void loadResponse(const Eigen::VectorXd& f, Eigen::VectorXd& q) const override;
     Eigen::VectorXd velocity(const Eigen::VectorXd& q, const Eigen::VectorXd& f) const override;
 
-    /// The modal velocities q̇(t_n + τ) at each τ of `taus` (s, in [0, Δt]) within the step from
-    /// (q, q̇) = (y, w) under the force going linearly from fStart to fEnd over dt; one column
-    /// per τ (modes × taus); with yLast, also q at the last τ. Independent of beginStep.
-    Eigen::MatrixXd velocitiesWithin(const Eigen::VectorXd& y, const Eigen::VectorXd& w,
-                                     const Eigen::VectorXd& fStart, const Eigen::VectorXd& fEnd, double dt,
-                                     const std::vector<double>& taus, Eigen::VectorXd* yLast = nullptr) const;
+    /// The modal coordinates q(t_n + τ) and velocities q̇(t_n + τ) at each τ of `taus` (s, in
+    /// [0, Δt]) within the step from (q, q̇) = (y, w) under the force going linearly from fStart to
+    /// fEnd over dt; one column per τ (modes × taus). Independent of beginStep.
+    void responseWithin(const Eigen::VectorXd& y, const Eigen::VectorXd& w, const Eigen::VectorXd& fStart,
+                        const Eigen::VectorXd& fEnd, double dt, const std::vector<double>& taus,
+                        Eigen::MatrixXd& displacement, Eigen::MatrixXd& velocity) const;
+    /// The work ∫ fᵀ q̇ dt (J) the force, linear from fStart to fEnd over dt, does on the body over
+    /// the step from (y, w), exactly: f₊ᵀq₊ − fₙᵀqₙ − ((f₊ − fₙ)/Δt)ᵀ ∫ q dt by parts, with ∫ z dt =
+    /// Δt φ₁ zₙ + Δt² φ₂ V⁻¹B fₙ + Δt³ φ₃ V⁻¹B (f₊ − fₙ)/Δt, φ₃(z) = (eᶻ − 1 − z − z²/2)/z³.
+    /// yEnd: q at the step's end (from responseWithin).
+    double workOver(const Eigen::VectorXd& y, const Eigen::VectorXd& w, const Eigen::VectorXd& fStart,
+                    const Eigen::VectorXd& fEnd, double dt, const Eigen::VectorXd& yEnd) const;
     /// The damped modes' eigenvalues λ (1/s; ω_d = Im λ, ζω = −Re λ).
     const Eigen::VectorXcd& eigenvalues() const { return lambda_; }
 

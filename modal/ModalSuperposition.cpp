@@ -4,6 +4,7 @@
 #include <string>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
 namespace flexehd::modal {
@@ -48,6 +49,17 @@ Eigen::LDLT<Eigen::MatrixXd> heldStiffness(const ReducedBody& body, const Eigen:
         throw std::runtime_error("the body can still move rigidly with its held interfaces; hold an interface "
                                  "that fixes it");
     return ldlt;
+}
+
+Eigen::VectorXd heldFrequenciesHz(const ReducedBody& body, const std::vector<int>& held) {
+    const Eigen::MatrixXd N = heldBasis(body, held);
+    if (N.cols() == 0) return Eigen::VectorXd();
+    (void)heldStiffness(body, N);  // throws if the held body can move rigidly
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(N.transpose() * body.stiffnessMatrix * N,
+                                                                        N.transpose() * body.massMatrix * N,
+                                                                        Eigen::EigenvaluesOnly);
+    if (eig.info() != Eigen::Success) throw std::runtime_error("the held body's frequencies could not be computed");
+    return eig.eigenvalues().cwiseMax(0.0).cwiseSqrt() / (2.0 * 3.14159265358979323846);
 }
 
 Eigen::VectorXd ModalSuperposition::quasiStatic(const Eigen::VectorXd& g, const std::vector<int>& held) const {

@@ -17,6 +17,10 @@ Eigen::MatrixXd heldBasis(const ReducedBody& body, const std::vector<int>& held)
 /// The factorized stiffness Nᵀ K_r N on a held basis N (N.cols() > 0). Throws
 /// std::runtime_error if the held body can still move rigidly (a zero-frequency free coordinate).
 Eigen::LDLT<Eigen::MatrixXd> heldStiffness(const ReducedBody& body, const Eigen::MatrixXd& N);
+/// The natural frequencies (Hz, ascending) of the body with the `held` interfaces' reference nodes
+/// at rest: the eigenvalues of (Nᵀ K_r N, Nᵀ M_r N) — what the body vibrates at in a run that
+/// holds them. Throws std::runtime_error if the held body can still move rigidly.
+Eigen::VectorXd heldFrequenciesHz(const ReducedBody& body, const std::vector<int>& held);
 
 class ModalSuperposition {
 public:

@@ -13,6 +13,10 @@
 # FLEXEHD_EXAMPLE_STARVED_EHD=1 also the flexible piston on the 3 um liner oil layer
 # (starved_ehd.yaml, about 3 minutes more; docs/coupling.md section 6) with its plots against
 # the flooded EHD run and the starved HD run.
+# FLEXEHD_EXAMPLE_NOISE=1 also slap noise: the liner bonded in its block section
+# (meshes/liner_block.geo) reduced, the flexible piston run on it with the block's outer walls'
+# vibration recorded (ehd_block.yaml, acoustics), its ERP plots, and the pin-offset study at 1000 and
+# 3000 rpm (study_slap_noise.yaml) ranked by ERP (about 20 minutes more on one core).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/install_deps.sh" --with-python  # the plots at the end need numpy and matplotlib
@@ -96,6 +100,18 @@ if [[ "${FLEXEHD_EXAMPLE_STARVED_EHD:-0}" == 1 ]]; then
   /usr/bin/python3 "$root/scripts/plot_wear.py" "$out/starved_ehd" --log 3 --out "$out/plots_starved_ehd"
   echo "EHD on the starved layer: $out/starved_ehd/, plots against the flooded EHD and the starved HD runs in"
   echo "$out/plots_starved_ehd/."
+fi
+if [[ "${FLEXEHD_EXAMPLE_NOISE:-0}" == 1 ]]; then
+  echo "== slap noise: the liner in its block, the block's outer walls radiating"
+  # Grey iron for liner and block, bonded; the block's base held (docs/meshes.md).
+  "$flexehd" reduce --mesh "$root/meshes/liner_block.geo" --size 0.009 --E 1.1e11 --nu 0.26 --rho 7200 \
+    --interface base:rbe2 --modes 30 --static-correction bore --axial-hats 17 --out "$out/liner_block.h5" | tail -n 2
+  "$flexehd" run "$root/examples/engine86/ehd_block.yaml"
+  /usr/bin/python3 "$root/scripts/plot_acoustics.py" "$out/ehd_block"
+  "$flexehd" sweep "$root/examples/engine86/study_slap_noise.yaml"
+  /usr/bin/python3 "$root/scripts/rank_slap_noise.py" "$out/study_slap_noise"
+  echo "Slap noise: $out/ehd_block/acoustics.json and plots_acoustics/; the pin-offset ranking in"
+  echo "$out/study_slap_noise/erp_ranking.png."
 fi
 echo
 echo "Results: $out/{hd,hd_rings,ehd,ehd_rings,thermal_hd,mass_conserving,starved,starved_rings}/history.csv and summary.json; plots in"

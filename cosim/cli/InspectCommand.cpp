@@ -10,6 +10,7 @@
 
 #include "cosim/cli/CliSupport.hpp"
 #include "cosim/cli/Commands.hpp"
+#include "modal/ModalSuperposition.hpp"
 #include "modal/ReducedBodyFile.hpp"
 
 namespace flexehd::cli {
@@ -28,6 +29,14 @@ const char* kindName(modal::InterfaceKind kind) { return kind == modal::Interfac
 double massIdentityError(const modal::ReducedBody& b) {
     if (b.massMatrix.size() == 0) return 0.0;
     return (b.massMatrix - Eigen::MatrixXd::Identity(b.massMatrix.rows(), b.massMatrix.cols())).cwiseAbs().maxCoeff();
+}
+
+// The frequencies with every interface held (the run holds a body's interfaces: the piston's pin
+// bore, the liner's seats or its block's base).
+Eigen::VectorXd heldFrequencies(const modal::ReducedBody& b) {
+    std::vector<int> all(b.interfaces.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    return modal::heldFrequenciesHz(b, all);
 }
 
 nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
@@ -75,7 +84,17 @@ nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
     doc["damping_ratios"] = toVector(b.dampingRatios);
     doc["rigid_body"] = b.rigidBody;
     doc["mass_identity_error"] = massIdentityError(b);
+    doc["held_frequencies_hz"] = b.interfaces.empty() ? std::vector<double>() : toVector(heldFrequencies(b));
     return doc;
+}
+
+// "every interface held: 251 modes, 1897.9 to 1.2e+05 Hz, the first 1897.9, 1898, … Hz"
+void printHeldFrequencies(const Eigen::VectorXd& held) {
+    if (held.size() == 0) return;
+    std::vector<std::string> first;
+    for (Eigen::Index k = 0; k < std::min<Eigen::Index>(6, held.size()); ++k) first.push_back(fmt::format("{:.6g}", held(k)));
+    fmt::print("held         every interface held: {} modes, {:.6g} to {:.6g} Hz, the first {}{} Hz\n", held.size(),
+               held(0), held(held.size() - 1), fmt::join(first, ", "), held.size() > 6 ? ", …" : "");
 }
 
 std::string listOrNone(const std::vector<std::string>& names) {
@@ -131,6 +150,7 @@ void printSummary(const std::string& file, const modal::ReducedBody& b) {
     fmt::print("load patterns  {}\n", loadPatternsText(b));
     const auto rigid = std::count(b.rigidBody.begin(), b.rigidBody.end(), 1);
     fmt::print("modes        {} ({} rigid-body), max |M_r - I| = {:.2g}\n", b.numModes(), rigid, massIdentityError(b));
+    if (!b.interfaces.empty()) printHeldFrequencies(heldFrequencies(b));
     fmt::print("{:>6}  {:>16}  {:>13}\n", "mode", "frequency [Hz]", "damping ratio");
     for (int k = 0; k < b.numModes(); ++k)
         fmt::print("{:>6}  {:>16.6g}  {:>13.4g}{}\n", k + 1, b.frequenciesHz(k), b.dampingRatios(k),

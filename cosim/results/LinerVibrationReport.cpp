@@ -29,6 +29,8 @@ struct Record {
     std::vector<double> time, crank;
     Eigen::MatrixXd velocity;  // samples × points, m/s
     Eigen::VectorXd area;      // m²
+    bool hasEnergy = false;    // format 2: the work on the liner over the cycle's steps
+    double cycleTime = 0.0, work = 0.0, storedChange = 0.0;  // s, J, J
 };
 
 Eigen::MatrixXd matrix(const modal::Hdf5Reader& r, const std::string& name, unsigned long long rows,
@@ -67,11 +69,26 @@ Record readRecord(const std::string& path) {
     std::size_t n = 0;
     while (n < rec.time.size() && rec.time[n] < cycleEnd - 1e-9 / rec.sampleRate) ++n;
     if (n < 8) r.fail(fmt::format("{} samples in its cycle: too few for a spectrum", n));
+    if (r.intAttribute("/", "format_version") >= 2) {
+        rec.hasEnergy = true;
+        rec.cycleTime = r.doubleAttribute("/", "cycle_time_s");
+        rec.work = r.doubleAttribute("/", "liner_work_in_j");
+        rec.storedChange = r.doubleAttribute("/", "liner_stored_change_j");
+    }
     rec.time.resize(n);
     rec.crank.resize(n);
     rec.velocity = modal.topRows(static_cast<Eigen::Index>(n)) * shapes.transpose();
     rec.area = Eigen::Map<const Eigen::VectorXd>(area.data(), static_cast<Eigen::Index>(area.size()));
     return rec;
+}
+
+// The liner's energy over the record's cycle: the work the film and contacts did on it, the
+// change of its stored energy, and their difference, the energy its modal damping took.
+nlohmann::json energyBalance(const Record& rec) {
+    return {{"work_in_j", rec.work},
+            {"stored_change_j", rec.storedChange},
+            {"damped_j", rec.work - rec.storedChange},
+            {"input_power_mean_w", rec.cycleTime > 0.0 ? rec.work / rec.cycleTime : 0.0}};
 }
 
 nlohmann::json level(double power) {
@@ -130,6 +147,7 @@ nlohmann::json reportLinerVibration(const std::string& dir, const LinerVibration
         {"velocity", {{"rms_m_per_s", std::sqrt(meanSquare)}}},
         {"erp", {{"total_w", total}, {"total_db", level(total)}, {"bands", bands}, {"orders", top}}},
         {"map", {{"frame_deg", frame / samplesPerDeg}, {"frames", map.power_W.rows()}}}};
+    if (rec.hasEnergy) doc["energy"] = energyBalance(rec);
     fem::writeTextAtomically(dir + "/acoustics.json", jsonText(doc, 2) + "\n");
     fem::writeTextAtomically(dir + "/acoustics.csv", bandCsv);
     fem::writeTextAtomically(dir + "/acoustics_spectrum.csv", spectrumCsv);

@@ -129,6 +129,7 @@ const std::vector<Entry>& entries() {
         {"acoustics.erp_total_db", [](const Source& s) { return acousticsFigure(s, "/erp/total_db"); }},
         {"acoustics.velocity_rms_m_per_s", [](const Source& s) { return acousticsFigure(s, "/velocity/rms_m_per_s"); }},
         {"acoustics.sample_rate_hz", [](const Source& s) { return acousticsFigure(s, "/record/sample_rate_hz"); }},
+        {"acoustics.liner_input_power_w", [](const Source& s) { return acousticsFigure(s, "/energy/input_power_mean_w"); }},
         {"acoustics.max_step_deg",
          [](const Source& s) { return s.in.c.acoustics.enabled ? Json(s.in.c.time.maxStepDeg) : Json(); }},
         {"oil.liner_volume_m3", [](const Source& s) { return s.st().oil ? Json(s.st().linerOil) : Json(); }},

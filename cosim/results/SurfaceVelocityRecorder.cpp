@@ -23,7 +23,9 @@ SurfaceVelocityRecorder::SurfaceVelocityRecorder(const EngineCase& c, const moda
       path_(std::move(path)),
       rate_(c.acoustics.sampleRateHz()),
       propagator_(liner, held),
-      compliance_(modal::ModalSuperposition(liner).compliance(held)) {
+      compliance_(modal::ModalSuperposition(liner).compliance(held)),
+      mass_(liner.massMatrix),
+      stiffness_(liner.stiffnessMatrix) {
     if (!liner.mesh.hasGroup(spec_.surface) || liner.mesh.group(spec_.surface).dim != 2)
         throw std::invalid_argument(fmt::format("acoustics.surface: the liner's mesh ({}) has no surface group '{}' "
                                                 "(its groups: {})",
@@ -90,6 +92,8 @@ void SurfaceVelocityRecorder::stepAccepted(const AcceptedStep& step) {
         times_.assign(1, origin_);
         angles_.assign(1, crankAngle720(lastAngle_));
         velocities_.assign(1, w_);
+        work_ = 0.0;
+        storedAtStart_ = storedEnergy();
     }
     const double span = s.time - lastTime_;
     if (!(span > 0.0)) return;
@@ -104,14 +108,19 @@ void SurfaceVelocityRecorder::stepAccepted(const AcceptedStep& step) {
         taus.push_back(t - lastTime_);
     }
     taus.push_back(span);
-    Eigen::VectorXd yEnd;
-    const Eigen::MatrixXd within = propagator_.velocitiesWithin(y_, w_, force_, force, span, taus, &yEnd);
-    for (Eigen::Index j = 0; j + 1 < within.cols(); ++j) velocities_.push_back(within.col(j));
-    y_ = yEnd;
-    w_ = within.col(within.cols() - 1);
+    Eigen::MatrixXd q, v;
+    propagator_.responseWithin(y_, w_, force_, force, span, taus, q, v);
+    for (Eigen::Index j = 0; j + 1 < v.cols(); ++j) velocities_.push_back(v.col(j));
+    work_ += propagator_.workOver(y_, w_, force_, force, span, q.col(q.cols() - 1));
+    y_ = q.col(q.cols() - 1);
+    w_ = v.col(v.cols() - 1);
     force_ = force;
     lastTime_ = s.time;
     lastAngle_ = s.crankDeg;
+}
+
+double SurfaceVelocityRecorder::storedEnergy() const {
+    return 0.5 * w_.dot(mass_ * w_) + 0.5 * y_.dot(stiffness_ * y_);
 }
 
 Eigen::VectorXd SurfaceVelocityRecorder::modalForce(const StepState& s) const {
@@ -141,7 +150,7 @@ void SurfaceVelocityRecorder::write(int cycle, bool last) const {
     fem::writeAtomically(path_, [&](const std::string& tmp) {
         modal::Hdf5Writer w(tmp, "acoustics record", path_);
         w.stringAttribute("/", "format", "flexehd-acoustics");
-        w.intAttribute("/", "format_version", 1);
+        w.intAttribute("/", "format_version", 2);
         w.stringAttribute("/", "surface", spec_.surface);
         w.doubleAttribute("/", "up_to_hz", spec_.upToHz);
         w.doubleAttribute("/", "sample_rate_hz", rate_);
@@ -149,6 +158,9 @@ void SurfaceVelocityRecorder::write(int cycle, bool last) const {
         w.doubleAttribute("/", "max_step_deg", maxStepDeg_);
         w.intAttribute("/", "cycle", cycle);
         w.intAttribute("/", "last_cycle", last ? 1 : 0);
+        w.doubleAttribute("/", "cycle_time_s", lastTime_ - origin_);
+        w.doubleAttribute("/", "liner_work_in_j", work_);
+        w.doubleAttribute("/", "liner_stored_change_j", storedEnergy() - storedAtStart_);
         w.doubles("/time_s", {n}, times_.data());
         w.doubles("/crank_deg", {n}, angles_.data());
         w.group("/liner");

@@ -48,12 +48,18 @@ public:
     const std::vector<double>& sampleTimes() const { return times_; }
     const std::vector<double>& sampleAngles() const { return angles_; }
     Eigen::MatrixXd sampleVelocities() const;
+    /// Over the current cycle's steps: the work the run's force did on the liner, ∫ fᵀq̇ dt (J,
+    /// exact for the force linear between steps), and the change of its stored energy
+    /// ½ q̇ᵀ M q̇ + ½ qᵀ K q (J); their difference is what its modal damping took.
+    double cycleWork() const { return work_; }
+    double cycleStoredChange() const { return storedEnergy() - storedAtStart_; }
     int cyclesWritten() const { return written_; }
 
 private:
     void surfaceShapes(const modal::ReducedBody& liner);
     void write(int cycle, bool last) const;
     Eigen::VectorXd modalForce(const StepState& s) const;  // the liner's part of s.f (zero before any)
+    double storedEnergy() const;  // ½ ẏᵀ M ẏ + ½ yᵀ K y of the response's state
 
     AcousticsSpec spec_;
     double rpm_, maxStepDeg_;
@@ -69,6 +75,8 @@ private:
     bool started_ = false;
     modal::ModalPropagator propagator_;
     Eigen::MatrixXd compliance_;     // quasi-static: the response's start
+    Eigen::MatrixXd mass_, stiffness_;  // M_r, K_r
+    double work_ = 0.0, storedAtStart_ = 0.0;  // J, over the current cycle
     Eigen::VectorXd y_, w_, force_;  // the forced response's state and force at the last accepted step
     std::vector<double> times_, angles_;
     std::vector<Eigen::VectorXd> velocities_;

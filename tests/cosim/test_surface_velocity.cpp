@@ -258,6 +258,16 @@ TEST(SurfaceVelocity, TheReportOfATranslatingSleeveRadiatesHalfRhoCVSquaredPiRH)
     EXPECT_NEAR(inBand, doc["erp"]["total_w"].get<double>(), 1e-9 * expected);
     EXPECT_DOUBLE_EQ(doc["erp"]["orders"][0]["order"].get<double>(), 3.0);
     EXPECT_NEAR(doc["velocity"]["rms_m_per_s"].get<double>(), 0.5 * V, 3e-3 * V);
+    // The energy over the cycle in the steady state: the work the force does equals what the
+    // damping c = 2ζω takes, c ⟨v²⟩ T = ζ ω V² T, the stored energy back where it started.
+    const double T = 0.04, damped = kZeta[0] * kOmega[0] * V * V * T;
+    const nlohmann::json& energy = doc["energy"];
+    EXPECT_NEAR(energy["work_in_j"].get<double>(), damped, 1e-4 * damped);
+    EXPECT_NEAR(energy["damped_j"].get<double>(), damped, 1e-4 * damped);
+    EXPECT_NEAR(energy["stored_change_j"].get<double>(), 0.0, 1e-6 * damped);
+    EXPECT_NEAR(energy["input_power_mean_w"].get<double>(), damped / T, 1e-4 * damped / T);
+    std::printf("translating sleeve: work in %.6g J, damped %.6g J (zeta omega V^2 T = %.6g J)\n",
+                energy["work_in_j"].get<double>(), energy["damped_j"].get<double>(), damped);
     std::printf("translating sleeve: ERP %.6g W against 1/2 rho c V^2 pi R H = %.6g W\n",
                 doc["erp"]["total_w"].get<double>(), expected);
     EXPECT_TRUE(std::filesystem::exists(dir / "acoustics.csv"));

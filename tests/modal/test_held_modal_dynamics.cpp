@@ -12,23 +12,14 @@
 
 #include "modal/HeldModalDynamics.hpp"
 #include "modal/ModalSuperposition.hpp"
+#include "OscillatorModes.hpp"
 
 using namespace flexehd::modal;
 
 namespace {
 constexpr double kPi = std::numbers::pi;
 
-ReducedBody modes(const Eigen::VectorXd& omega, double zeta) {
-    const Eigen::Index m = omega.size();
-    ReducedBody b;
-    b.shapes = Eigen::MatrixXd::Identity(3 * m, m);
-    b.massMatrix = Eigen::MatrixXd::Identity(m, m);
-    b.stiffnessMatrix = omega.cwiseAbs2().asDiagonal();
-    b.dampingRatios = Eigen::VectorXd::Constant(m, zeta);
-    b.frequenciesHz = omega / (2 * kPi);
-    b.rigidBody.assign(std::size_t(m), 0);
-    return b;
-}
+ReducedBody modes(const Eigen::VectorXd& omega, double zeta) { return flexehd::test::oscillatorModes(omega, zeta); }
 
 /// x'' + 2ζω x' + ω² x = F sin Ωt from rest (x = x' = 0 at t = 0).
 double forcedOscillator(double w, double zeta, double F, double W, double t) {

@@ -19,23 +19,14 @@
 
 #include "modal/HeldModalDynamics.hpp"
 #include "modal/ModalPropagator.hpp"
+#include "OscillatorModes.hpp"
 
 using namespace flexehd::modal;
 
 namespace {
 constexpr double kPi = std::numbers::pi;
 
-ReducedBody modes(const Eigen::VectorXd& omega, double zeta) {
-    const Eigen::Index m = omega.size();
-    ReducedBody b;
-    b.shapes = Eigen::MatrixXd::Identity(3 * m, m);
-    b.massMatrix = Eigen::MatrixXd::Identity(m, m);
-    b.stiffnessMatrix = omega.cwiseAbs2().asDiagonal();
-    b.dampingRatios = Eigen::VectorXd::Constant(m, zeta);
-    b.frequenciesHz = omega / (2 * kPi);
-    b.rigidBody.assign(std::size_t(m), 0);
-    return b;
-}
+ReducedBody modes(const Eigen::VectorXd& omega, double zeta) { return flexehd::test::oscillatorModes(omega, zeta); }
 
 /// x'' + 2ζω x' + ω² x = a t from rest: x and x'.
 Eigen::Vector2d rampResponse(double w, double zeta, double a, double t) {
@@ -78,6 +69,37 @@ TEST(ModalPropagator, OneModeUnderARampIsExactAtAnyStep) {
     }
     std::printf("ramp over steps of 0.01 to 10 periods: max error / max |x| = %.3g\n", err / scale);
     EXPECT_LT(err, 1e-11 * scale);
+}
+
+// The work over the steps of the ramp (exact, by parts) against the energy balance of the closed
+// form: W = ½ ẋ² + ½ ω² x² at the end + ∫ 2ζω ẋ² dt (Simpson, 20 000 intervals).
+TEST(ModalPropagator, TheWorkOverItsStepsIsTheEnergyTheModeStoredAndDamped) {
+    const double w = 2 * kPi * 800.0, zeta = 0.05, a = 3.0e6;
+    ModalPropagator p(modes(Eigen::VectorXd::Constant(1, w), zeta), {});
+    const double period = 2 * kPi / w;
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(1), v = q, qn;
+    double t = 0.0, work = 0.0;
+    for (const double h : {0.3, 1.7, 0.05, 4.0, 0.9}) {
+        const double dt = h * period;
+        const Eigen::VectorXd fStart = Eigen::VectorXd::Constant(1, a * t), fEnd = Eigen::VectorXd::Constant(1, a * (t + dt));
+        p.beginStep(startOf(q, v, fStart, dt));
+        p.respond(fEnd, qn);
+        work += p.workOver(q, v, fStart, fEnd, dt, qn);
+        v = p.velocity(qn, fEnd);
+        q = qn;
+        t += dt;
+    }
+    const int n = 20000;
+    double damped = 0.0;
+    for (int k = 0; k <= n; ++k) {
+        const double weight = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+        damped += weight * 2 * zeta * w * std::pow(rampResponse(w, zeta, a, t * k / n)[1], 2);
+    }
+    damped *= t / (3.0 * n);
+    const Eigen::Vector2d end = rampResponse(w, zeta, a, t);
+    const double stored = 0.5 * end[1] * end[1] + 0.5 * w * w * end[0] * end[0];
+    std::printf("work %.9g, stored %.9g + damped %.9g = %.9g\n", work, stored, damped, stored + damped);
+    EXPECT_NEAR(work, stored + damped, 1e-9 * work);
 }
 
 TEST(ModalPropagator, AModeRingsAtAStepOfThreePeriodsWhereBdf2DampsIt) {
@@ -124,8 +146,10 @@ TEST(ModalPropagator, SamplesWithinAStepAgreeWithTheStepAndTheStepIsAffineInTheE
         const Eigen::VectorXd fTau = f0 + (f1 - f0) * (tau / dt);
         p.respond(fTau, q);
         const Eigen::VectorXd v = p.velocity(q, fTau);
-        const Eigen::MatrixXd within = p.velocitiesWithin(q0, v0, f0, f1, dt, {tau});
-        EXPECT_LT((within.col(0) - v).norm(), 1e-12 * v.norm()) << "tau " << tau;
+        Eigen::MatrixXd qWithin, vWithin;
+        p.responseWithin(q0, v0, f0, f1, dt, {tau}, qWithin, vWithin);
+        EXPECT_LT((vWithin.col(0) - v).norm(), 1e-12 * v.norm()) << "tau " << tau;
+        EXPECT_LT((qWithin.col(0) - q).norm(), 1e-12 * q.norm()) << "tau " << tau;
         p.respond(Eigen::VectorXd::Zero(3), qZero);
         p.loadResponse(fTau, g);
         EXPECT_LT((q - qZero - g).norm(), 1e-14 * q.norm()) << "tau " << tau;
