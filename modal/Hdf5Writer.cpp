@@ -81,6 +81,10 @@ void Hdf5Writer::bytes(const std::string& name, const std::vector<unsigned long 
     dataset(*this, file_->id.get(), name, dims, H5T_STD_U8LE, H5T_NATIVE_UCHAR, data);
 }
 
+void Hdf5Writer::ints(const std::string& name, const std::vector<unsigned long long>& dims, const int* data) {
+    dataset(*this, file_->id.get(), name, dims, H5T_STD_I32LE, H5T_NATIVE_INT, data);
+}
+
 void Hdf5Writer::close() {
     if (file_->id.close() < 0) fail("cannot close (flush) the file");
 }

@@ -24,6 +24,7 @@ public:
     /// Row-major data of the given dimensions.
     void doubles(const std::string& name, const std::vector<unsigned long long>& dims, const double* data);
     void bytes(const std::string& name, const std::vector<unsigned long long>& dims, const unsigned char* data);
+    void ints(const std::string& name, const std::vector<unsigned long long>& dims, const int* data);
     /// Closes the file (flushes it, which can fail).
     void close();
 

@@ -1,7 +1,7 @@
 #pragma once
 // Writes a mesh with nodal fields as a VTK XML unstructured grid (.vtu) for ParaView:
 // binary appended data, float64 points, TET10 as VTK_QUADRATIC_TETRA (Gmsh's last two
-// edge nodes swapped into VTK order).
+// edge nodes swapped into VTK order); or a surface of flat triangles.
 #include <string>
 #include <vector>
 
@@ -29,5 +29,10 @@ enum class VtuCompression { ZLib, LZ4, None };
 /// field has the wrong size or a non-finite value.
 void writeVtu(const std::string& path, const fem::Mesh& mesh, const std::vector<PointField>& fields,
               const std::vector<FieldValue>& fieldData = {}, VtuCompression compression = VtuCompression::ZLib);
+
+/// Writes a surface of flat triangles (3 point indices each into `points`) with point fields (LZ4);
+/// the same guarantees.
+void writeTriangleSurfaceVtu(const std::string& path, const Eigen::Matrix3Xd& points, const std::vector<int>& triangles,
+                             const std::vector<PointField>& fields, const std::vector<FieldValue>& fieldData = {});
 
 }  // namespace flexehd::cosim

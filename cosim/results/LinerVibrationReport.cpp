@@ -1,6 +1,7 @@
 #include "cosim/results/LinerVibrationReport.hpp"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <stdexcept>
 
@@ -8,11 +9,13 @@
 #include <fmt/format.h>
 
 #include "acoustics/EngineOrderSpectrum.hpp"
+#include "acoustics/OneThirdOctaveBands.hpp"
 #include "acoustics/RadiatedPower.hpp"
 #include "acoustics/ShortTimeRadiatedPower.hpp"
 #include "acoustics/SoundPowerLevel.hpp"
 #include "acoustics/SpectrumAnalyzer.hpp"
 #include "cosim/io/JsonText.hpp"
+#include "cosim/io/VtuWriter.hpp"
 #include "fem/AtomicFile.hpp"
 #include "modal/Hdf5Reader.hpp"
 
@@ -31,6 +34,9 @@ struct Record {
     Eigen::VectorXd area;      // m²
     bool hasEnergy = false;    // format 2: the work on the liner over the cycle's steps
     double cycleTime = 0.0, work = 0.0, storedChange = 0.0;  // s, J, J
+    Eigen::Matrix3Xd points;     // m, the surface's points (format 3)
+    std::vector<int> triangles;  // 3 point indices each (format 3)
+    bool hasSurface = false;
 };
 
 Eigen::MatrixXd matrix(const modal::Hdf5Reader& r, const std::string& name, unsigned long long rows,
@@ -75,6 +81,18 @@ Record readRecord(const std::string& path) {
         rec.work = r.doubleAttribute("/", "liner_work_in_j");
         rec.storedChange = r.doubleAttribute("/", "liner_stored_change_j");
     }
+    if (r.intAttribute("/", "format_version") >= 3) {
+        rec.hasSurface = true;
+        rec.points = matrix(r, "/surface/points_m", points, 3).transpose();
+        std::vector<unsigned long long> triangleDims;
+        const std::vector<double> corners = r.doubles("/surface/triangles", triangleDims);
+        if (triangleDims.size() != 2 || triangleDims[1] != 3) r.fail("dataset /surface/triangles is not T × 3");
+        for (const double c : corners) {
+            if (c < 0.0 || c >= double(points) || c != std::floor(c))
+                r.fail(fmt::format("dataset /surface/triangles holds {}, not a point index below {}", c, points));
+            rec.triangles.push_back(static_cast<int>(c));
+        }
+    }
     rec.time.resize(n);
     rec.crank.resize(n);
     rec.velocity = modal.topRows(static_cast<Eigen::Index>(n)) * shapes.transpose();
@@ -89,6 +107,35 @@ nlohmann::json energyBalance(const Record& rec) {
             {"stored_change_j", rec.storedChange},
             {"damped_j", rec.work - rec.storedChange},
             {"input_power_mean_w", rec.cycleTime > 0.0 ? rec.work / rec.cycleTime : 0.0}};
+}
+
+// The surface's normal velocity per 1/3-octave band up to the range: each point's rms (m/s) and
+// its level re 1 nm/s (ISO 1683), as a ParaView surface (acoustics_surface.vtu).
+void writeBandVelocities(const std::string& path, const Record& rec, const acoustics::VelocitySpectrum& spectrum) {
+    const Eigen::MatrixXd meanSquare = spectrum.meanSquare();  // bins × points
+    const Eigen::VectorXd& f = spectrum.frequency_hz();
+    std::map<int, Eigen::VectorXd> bands;  // band k → per point mean square
+    for (Eigen::Index b = 1; b < f.size(); ++b) {
+        const int k = acoustics::OneThirdOctaveBand::containing(f[b]);
+        if (acoustics::OneThirdOctaveBand::midFrequency_hz(k) > rec.upTo) continue;
+        auto [it, fresh] = bands.try_emplace(k, Eigen::VectorXd::Zero(meanSquare.cols()));
+        it->second += meanSquare.row(b).transpose();
+    }
+    std::vector<PointField> fields;
+    Eigen::VectorXd total = Eigen::VectorXd::Zero(meanSquare.cols());
+    auto add = [&](const std::string& band, const Eigen::VectorXd& ms) {
+        const Eigen::RowVectorXd rms = ms.cwiseSqrt().transpose();
+        fields.push_back({"normal_velocity_rms_m_per_s_" + band, rms});
+        fields.push_back({"normal_velocity_level_db_" + band,
+                          rms.unaryExpr([](double v) { return v > 0.0 ? 20.0 * std::log10(v / 1e-9) : -100.0; })});
+    };
+    for (const auto& [k, ms] : bands) {
+        total += ms;
+        add(fmt::format("{:.0f}hz", acoustics::OneThirdOctaveBand::midFrequency_hz(k)), ms);
+    }
+    add("total", total);
+    std::rotate(fields.begin(), fields.end() - 2, fields.end());  // the total first: ParaView's active scalar
+    writeTriangleSurfaceVtu(path, rec.points, rec.triangles, fields);
 }
 
 nlohmann::json level(double power) {
@@ -148,6 +195,7 @@ nlohmann::json reportLinerVibration(const std::string& dir, const LinerVibration
         {"erp", {{"total_w", total}, {"total_db", level(total)}, {"bands", bands}, {"orders", top}}},
         {"map", {{"frame_deg", frame / samplesPerDeg}, {"frames", map.power_W.rows()}}}};
     if (rec.hasEnergy) doc["energy"] = energyBalance(rec);
+    if (rec.hasSurface) writeBandVelocities(dir + "/acoustics_surface.vtu", rec, spectrum);
     fem::writeTextAtomically(dir + "/acoustics.json", jsonText(doc, 2) + "\n");
     fem::writeTextAtomically(dir + "/acoustics.csv", bandCsv);
     fem::writeTextAtomically(dir + "/acoustics_spectrum.csv", spectrumCsv);

@@ -1,6 +1,7 @@
 #include "cosim/results/SurfaceVelocityRecorder.hpp"
 
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
@@ -57,6 +58,20 @@ void SurfaceVelocityRecorder::surfaceShapes(const modal::ReducedBody& liner) {
     }
     const std::vector<fem::Index> nodes = mesh.groupNodes(spec_.surface);
     const auto p = static_cast<Eigen::Index>(nodes.size());
+    // The flat sub-triangles by point index, outward (the ParaView surface of the band levels).
+    std::vector<int> point(static_cast<std::size_t>(mesh.numNodes()), -1);
+    for (std::size_t i = 0; i < nodes.size(); ++i) point[static_cast<std::size_t>(nodes[i])] = static_cast<int>(i);
+    triangles_.clear();
+    for (std::size_t k = 0; k < surface.triangles().size(); ++k) {
+        const fem::Index t = surface.triangles()[k];
+        for (int sub = 0; sub < (quadratic ? 4 : 1); ++sub) {
+            const int* v = quadratic ? kQuadratic[sub] : kLinear[sub];
+            int corner[3];
+            for (int c = 0; c < 3; ++c) corner[c] = point[static_cast<std::size_t>(mesh.surface.nodes(v[c], t))];
+            if (surface.orientation()[k] < 0) std::swap(corner[1], corner[2]);
+            triangles_.insert(triangles_.end(), corner, corner + 3);
+        }
+    }
     normalShapes_.resize(p, modes_);
     areas_.resize(p);
     points_.resize(3, p);
@@ -150,7 +165,7 @@ void SurfaceVelocityRecorder::write(int cycle, bool last) const {
     fem::writeAtomically(path_, [&](const std::string& tmp) {
         modal::Hdf5Writer w(tmp, "acoustics record", path_);
         w.stringAttribute("/", "format", "flexehd-acoustics");
-        w.intAttribute("/", "format_version", 2);
+        w.intAttribute("/", "format_version", 3);
         w.stringAttribute("/", "surface", spec_.surface);
         w.doubleAttribute("/", "up_to_hz", spec_.upToHz);
         w.doubleAttribute("/", "sample_rate_hz", rate_);
@@ -170,9 +185,11 @@ void SurfaceVelocityRecorder::write(int cycle, bool last) const {
         w.doubles("/surface/normals", {p, 3}, normals.data());
         w.doubles("/surface/area_m2", {p}, areas_.data());
         w.doubles("/surface/normal_shapes", {p, m}, shapes.data());
+        w.ints("/surface/triangles", {triangles_.size() / 3, 3}, triangles_.data());
         for (const auto& [name, unit] : {std::pair{"/time_s", "s"}, {"/crank_deg", "deg"},
                                          {"/liner/modal_velocity", "1/s (modal)"}, {"/surface/points_m", "m"},
                                          {"/surface/normals", "1"}, {"/surface/area_m2", "m2"},
+                                         {"/surface/triangles", "point index"},
                                          {"/surface/normal_shapes", "m/s per unit modal velocity"}})
             w.stringAttribute(name, "units", unit);
         w.close();

@@ -69,6 +69,7 @@ private:
     Eigen::MatrixXd normalShapes_;
     Eigen::VectorXd areas_;
     Eigen::Matrix3Xd points_, normals_;
+    std::vector<int> triangles_;  // 3 point indices per flat sub-triangle, outward
     // The sampling: the grid's origin (s) and the last accepted state (none before the first step).
     int cycle_ = 0;
     double origin_ = 0.0, lastTime_ = 0.0, lastAngle_ = 0.0;

@@ -19,11 +19,15 @@
 #include "cosim/casefile/CaseFile.hpp"
 #include "cosim/results/LinerVibrationReport.hpp"
 #include "cosim/results/SurfaceVelocityRecorder.hpp"
+#include "fem/BoundarySurface.hpp"
 #include "fem/MeshReader.hpp"
+#include "VtkReadBack.hpp"
 #include "../TestScratch.hpp"
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
 
 #include <cmath>
 #include <complex>
@@ -270,6 +274,24 @@ TEST(SurfaceVelocity, TheReportOfATranslatingSleeveRadiatesHalfRhoCVSquaredPiRH)
                 energy["work_in_j"].get<double>(), energy["damped_j"].get<double>(), damped);
     std::printf("translating sleeve: ERP %.6g W against 1/2 rho c V^2 pi R H = %.6g W\n",
                 doc["erp"]["total_w"].get<double>(), expected);
+    // The surface's band velocities for ParaView: in the band of 150 Hz each point's rms is
+    // V |n_x| / √2 (to the normal's turn over its neighbourhood), and all of it; four flat
+    // triangles per quadratic one.
+    const auto surface = flexehd::test::readVtu(dir / "acoustics_surface.vtu");
+    ASSERT_EQ(surface->GetNumberOfPoints(), r.areas().size());
+    EXPECT_EQ(surface->GetNumberOfCells(), 4 * fem::BoundarySurface(sleeve.mesh, "outer").triangles().size());
+    vtkDataArray* band = surface->GetPointData()->GetArray("normal_velocity_rms_m_per_s_158hz");
+    vtkDataArray* all = surface->GetPointData()->GetArray("normal_velocity_rms_m_per_s_total");
+    ASSERT_NE(band, nullptr);
+    ASSERT_NE(all, nullptr);
+    EXPECT_STREQ(surface->GetPointData()->GetArrayName(0), "normal_velocity_rms_m_per_s_total");
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i) {
+        const double expected = V * std::abs(r.normals()(0, i)) / std::sqrt(2.0);
+        worst = std::max(worst, std::abs(band->GetTuple1(i) - expected) / V);
+        EXPECT_NEAR(all->GetTuple1(i), band->GetTuple1(i), 1e-6 * V) << i;
+    }
+    EXPECT_LT(worst, 3e-3);
     EXPECT_TRUE(std::filesystem::exists(dir / "acoustics.csv"));
     EXPECT_TRUE(std::filesystem::exists(dir / "acoustics_map.csv"));
     EXPECT_THROW(reportLinerVibration((dir / "nothing").string()), std::runtime_error);
