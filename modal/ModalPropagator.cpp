@@ -50,6 +50,12 @@ ModalPropagator::ModalPropagator(const ReducedBody& body, const std::vector<int>
     const Eigen::MatrixXd N = heldBasis(body, held);
     const Eigen::Index m = body.numModes(), n = N.cols();
     if (n > 0) (void)heldStiffness(body, N);  // throws if the held body can move rigidly
+    if (n == 0) {  // the held interfaces fix every mode: no response
+        inQ_ = inV_ = inF_ = Eigen::MatrixXcd::Zero(0, m);
+        outQ_ = outV_ = Eigen::MatrixXcd::Zero(m, 0);
+        G_ = Gv_ = Eigen::MatrixXd::Zero(m, m);
+        return;
+    }
     Eigen::VectorXd c(m);
     for (Eigen::Index k = 0; k < m; ++k)
         c(k) = 2.0 * body.dampingRatios(k) * std::sqrt(std::max(body.stiffnessMatrix(k, k), 0.0));
@@ -59,7 +65,7 @@ ModalPropagator::ModalPropagator(const ReducedBody& body, const std::vector<int>
         throw std::runtime_error("modal propagator: the held body's modes could not be computed");
     const Eigen::MatrixXd& Psi = modes.eigenvectors();  // Ψᵀ Mₙ Ψ = I
     const Eigen::VectorXd omega = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-    if (n > 0 && !(omega.minCoeff() > 0.0))
+    if (!(omega.minCoeff() > 0.0))
         throw std::runtime_error("modal propagator: the held body has a mode of zero frequency");
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n) = omega.asDiagonal();
@@ -75,10 +81,11 @@ ModalPropagator::ModalPropagator(const ReducedBody& body, const std::vector<int>
     const double scale = std::max(1.0, lambda_.cwiseAbs().maxCoeff());
     const double residual = (A.cast<Complex>() * V - V * lambda_.asDiagonal()).cwiseAbs().maxCoeff() / scale;
     const double inverse = (V * Vinv - Eigen::MatrixXcd::Identity(2 * n, 2 * n)).cwiseAbs().maxCoeff();
-    if (!(residual < 1e-8) || !(inverse < 1e-8))
+    const double condition = V.norm() * Vinv.norm() / double(2 * n);  // ‖V‖‖V⁻¹‖ (Frobenius, scaled)
+    if (!(residual < 1e-8) || !(inverse < 1e-8) || !(condition < 1e8))
         throw std::runtime_error("modal propagator: the held body's damped modes are not independent (residual " +
-                                 std::to_string(residual) + ", inverse " + std::to_string(inverse) +
-                                 "); is a mode damped exactly critically (damping ratio 1)?");
+                                 std::to_string(residual) + ", inverse " + std::to_string(inverse) + ", condition " +
+                                 std::to_string(condition) + "); is a mode damped (nearly) critically (damping ratio 1)?");
     // x = [Ω u; u̇], u = Ψᵀ Mₙ Nᵀ q;  q = N Ψ Ω⁻¹ x_top, q̇ = N Ψ x_bottom;  B = [0; Ψᵀ Nᵀ].
     const Eigen::MatrixXd toU = Psi.transpose() * Mn * N.transpose();  // n × m
     const Eigen::MatrixXd fromU = N * Psi;                              // m × n

@@ -14,7 +14,7 @@
 //   φ₁(z) = (eᶻ − 1)/z,  φ₂(z) = (eᶻ − 1 − z)/z²,
 //
 // exact at every τ in [0, Δt], for every mode however high above 1/Δt: a mode rings with its own
-// frequency and damping at any step size, where BDF2 damps the modes above about 1/(5Δt)
+// frequency and damping at any step size, where BDF2 damps the modes its step does not resolve
 // numerically and shifts their phase. What the step size still limits is how well the linear
 // force follows the real one. Each step costs products of the 2n_f × m maps; a new step size
 // costs one (m × 2n_f)(2n_f × m) product for the compliance G.

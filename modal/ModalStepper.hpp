@@ -10,12 +10,12 @@
 // step starts from. beginStep prepares both once per step; respond applies them to each
 // iterate's force; loadResponse applies G alone (the coupled Newton's Jacobian columns).
 // Implementations: HeldModalDynamics (BDF2) and ModalPropagator (exact for a force linear
-// over the step); docs/dynamics.md, "The bodies' dynamic response".
+// over the step); docs/modal.md, "Superposition and response".
 #include <Eigen/Core>
 
 namespace flexehd::modal {
 
-/// The state a step starts from and the step's size and BDF2 coefficients (docs/dynamics.md).
+/// The state a step starts from and the step's size and BDF2 coefficients (docs/coupling.md §2).
 struct ModalStepStart {
     double dt = 0.0;                      ///< s
     double a0 = 1.0, a1 = -1.0, a2 = 0.0;  ///< BDF2: ẏ₊ = (a0 y₊ + a1 yₙ + a2 yₙ₋₁)/Δt
@@ -35,7 +35,9 @@ public:
     virtual void respond(const Eigen::VectorXd& f, Eigen::VectorXd& q) const = 0;
     /// G f: the part of q₊ the end force makes (the start state's part left out).
     virtual void loadResponse(const Eigen::VectorXd& f, Eigen::VectorXd& q) const = 0;
-    /// q̇₊ of the step that ends at q₊ = respond(f).
+    /// q̇₊ of the step that ends at q₊ = respond(f): BDF2 takes it from q (the accepted iterate),
+    /// the exact propagator from f alone (the response respond(f) gives, which the accepted
+    /// iterate matches to the coupling tolerance).
     virtual Eigen::VectorXd velocity(const Eigen::VectorXd& q, const Eigen::VectorXd& f) const = 0;
 };
 

@@ -1,5 +1,6 @@
 #include "modal/ModalSuperposition.hpp"
 
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -59,7 +60,7 @@ Eigen::VectorXd heldFrequenciesHz(const ReducedBody& body, const std::vector<int
                                                                         N.transpose() * body.massMatrix * N,
                                                                         Eigen::EigenvaluesOnly);
     if (eig.info() != Eigen::Success) throw std::runtime_error("the held body's frequencies could not be computed");
-    return eig.eigenvalues().cwiseMax(0.0).cwiseSqrt() / (2.0 * 3.14159265358979323846);
+    return eig.eigenvalues().cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
 }
 
 Eigen::VectorXd ModalSuperposition::quasiStatic(const Eigen::VectorXd& g, const std::vector<int>& held) const {

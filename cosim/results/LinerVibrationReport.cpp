@@ -32,7 +32,7 @@ struct Record {
     std::vector<double> time, crank;
     Eigen::MatrixXd velocity;  // samples × points, m/s
     Eigen::VectorXd area;      // m²
-    bool hasEnergy = false;    // format 2: the work on the liner over the cycle's steps
+    bool hasEnergy = false;    // format 2 and later: the work on the liner over the cycle's steps
     double cycleTime = 0.0, work = 0.0, storedChange = 0.0;  // s, J, J
     Eigen::Matrix3Xd points;     // m, the surface's points (format 3)
     std::vector<int> triangles;  // 3 point indices each (format 3)
@@ -53,6 +53,9 @@ Eigen::MatrixXd matrix(const modal::Hdf5Reader& r, const std::string& name, unsi
 Record readRecord(const std::string& path) {
     const modal::Hdf5Reader r(path, "acoustics record");
     if (r.stringAttribute("/", "format") != "flexehd-acoustics") r.fail("not a flexehd acoustics record (format)");
+    const int version = r.intAttribute("/", "format_version");
+    if (version < 1 || version > 3)
+        r.fail(fmt::format("format_version {} is not one this flexehd reads (1 to 3); a newer flexehd wrote it", version));
     Record rec;
     rec.sampleRate = r.doubleAttribute("/", "sample_rate_hz");
     rec.upTo = r.doubleAttribute("/", "up_to_hz");
@@ -75,13 +78,13 @@ Record readRecord(const std::string& path) {
     std::size_t n = 0;
     while (n < rec.time.size() && rec.time[n] < cycleEnd - 1e-9 / rec.sampleRate) ++n;
     if (n < 8) r.fail(fmt::format("{} samples in its cycle: too few for a spectrum", n));
-    if (r.intAttribute("/", "format_version") >= 2) {
+    if (version >= 2) {
         rec.hasEnergy = true;
         rec.cycleTime = r.doubleAttribute("/", "cycle_time_s");
         rec.work = r.doubleAttribute("/", "liner_work_in_j");
         rec.storedChange = r.doubleAttribute("/", "liner_stored_change_j");
     }
-    if (r.intAttribute("/", "format_version") >= 3) {
+    if (version >= 3) {
         rec.hasSurface = true;
         rec.points = matrix(r, "/surface/points_m", points, 3).transpose();
         std::vector<unsigned long long> triangleDims;

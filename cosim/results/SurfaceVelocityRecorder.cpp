@@ -111,7 +111,13 @@ void SurfaceVelocityRecorder::stepAccepted(const AcceptedStep& step) {
         storedAtStart_ = storedEnergy();
     }
     const double span = s.time - lastTime_;
-    if (!(span > 0.0)) return;
+    if (span < 0.0)
+        throw std::logic_error(fmt::format("acoustics: an accepted step goes back in time, {:.9g} s after {:.9g} s",
+                                           s.time, lastTime_));
+    if (span == 0.0) {  // the first state again: its force is the one to start from
+        force_ = force;
+        return;
+    }
     // The grid's samples in (t_n−1, t_n], and the step's end: the exact response to the force
     // linear between the two states.
     std::vector<double> taus;

@@ -1,5 +1,5 @@
 // The liner's recorded surface velocity under a harmonic load, against a full finite-element
-// harmonic solve on the same mesh (docs/acoustics.md §8, docs/dynamics.md "The bodies' dynamic
+// harmonic solve on the same mesh (docs/acoustics.md §8, docs/modal.md "Superposition and
 // response").
 //
 // The example liner (meshes/liner.geo at 0.009 m, held at both seats, reduced as

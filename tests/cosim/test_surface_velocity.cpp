@@ -24,6 +24,7 @@
 #include "VtkReadBack.hpp"
 #include "../TestScratch.hpp"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <vtkDataArray.h>
@@ -234,7 +235,7 @@ TEST(SurfaceVelocity, TheReportOfATranslatingSleeveRadiatesHalfRhoCVSquaredPiRH)
     // 3000 rpm: a cycle of 0.04 s; 2.56 × 2500 Hz = 6400 samples per second, 256 per cycle, bins of
     // 25 Hz; the 3rd order (150 Hz) on bin 6.
     // Two cycles: the first lets the start's transient die (ζω = 754/s: e^{-30}); the file holds the
-    // second. Steps of 1/16 sampling interval: the linear force's factor sinc²(ΩΔt/2) = 1 − 2e-6.
+    // second. Steps of 1/16 sampling interval: the linear force's factor sinc²(ΩΔt/2) = 1 − 7e-6.
     SurfaceVelocityRecorder r(acousticCase(2500.0), sleeve, {}, 0, (dir / "acoustics.h5").string());
     const double fs = 6400.0, V = 1e-3, f = 150.0, W = 2.0 * std::numbers::pi * f;
     const double F = V * std::abs(std::complex<double>(kOmega[0] * kOmega[0] - W * W, 2.0 * kZeta[0] * kOmega[0] * W)) / W;
@@ -285,6 +286,16 @@ TEST(SurfaceVelocity, TheReportOfATranslatingSleeveRadiatesHalfRhoCVSquaredPiRH)
     ASSERT_NE(band, nullptr);
     ASSERT_NE(all, nullptr);
     EXPECT_STREQ(surface->GetPointData()->GetArrayName(0), "normal_velocity_rms_m_per_s_total");
+    for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c) {  // outward, as the points' normals
+        vtkIdType count = 0;
+        const vtkIdType* ids = nullptr;
+        surface->GetCellPoints(c, count, ids);
+        ASSERT_EQ(count, 3);
+        Eigen::Vector3d x[3];
+        for (int k = 0; k < 3; ++k) surface->GetPoint(ids[k], x[k].data());
+        const Eigen::Vector3d n = (x[1] - x[0]).cross(x[2] - x[0]);
+        ASSERT_GT(n.dot(r.normals().col(ids[0])), 0.0) << "triangle " << c;
+    }
     double worst = 0.0;
     for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i) {
         const double expected = V * std::abs(r.normals()(0, i)) / std::sqrt(2.0);

@@ -141,7 +141,7 @@ TEST(CraigBampton, HeldLinerFrequenciesAreTheFullModelsWithTheSeatsFixed) {
     for (int k = 0; k < 12; ++k) worst = std::max(worst, std::abs(held(k) / full(k) - 1.0));
     std::printf("liner held at its seats: first held frequency %.2f Hz (full model %.2f Hz), worst of 12: %.2e\n",
                 held(0), full(0), worst);
-    EXPECT_LT(worst, 1e-6);
+    EXPECT_LT(worst, 1e-9);  // the Lanczos tolerance 1e-10 on the eigenvalues; measured 1.5e-13
 }
 
 TEST(CraigBampton, QuasiStaticSkirtBumpWithinTwoPercent) {

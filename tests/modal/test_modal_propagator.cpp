@@ -1,5 +1,5 @@
 // ModalPropagator (the exact response of a held reduced body to a force linear over each step,
-// docs/dynamics.md) against closed forms and against the BDF2 integrator it stands beside:
+// docs/modal.md) against closed forms and against the BDF2 integrator it stands beside:
 //  - one damped mode under a ramp force from rest: the closed-form response, at steps from a
 //    hundredth of the period to ten periods, to round-off;
 //  - one mode ringing freely at a step of three periods: exact amplitude and phase, where BDF2
@@ -220,6 +220,16 @@ TEST(ModalPropagator, RigidMotionAndCriticalDampingAreRefused) {
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("critically"), std::string::npos) << e.what();
     }
+    // An interface that holds every mode: no response, no failure.
+    ReducedBody fixedBody = modes(Eigen::VectorXd::Constant(1, 100.0), 0.1);
+    fixedBody.interfaces.resize(1);
+    fixedBody.interfaceMotion = Eigen::MatrixXd::Constant(6, 1, 1.0);
+    ModalPropagator fixed(fixedBody, {0});
+    fixed.beginStep(startOf(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1), 1e-3));
+    Eigen::VectorXd qFixed;
+    fixed.respond(Eigen::VectorXd::Constant(1, 5.0), qFixed);
+    EXPECT_EQ(qFixed.size(), 1);
+    EXPECT_EQ(qFixed[0], 0.0);
     ModalPropagator p(modes(Eigen::VectorXd::Constant(1, 100.0), 0.1), {});
     Eigen::VectorXd q;
     EXPECT_THROW(p.respond(Eigen::VectorXd::Zero(1), q), std::logic_error);
