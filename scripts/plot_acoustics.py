@@ -55,6 +55,8 @@ def plot_spectrum(bands, spectrum, doc, out_dir):
             ax.annotate(f"order {line['order']:g}", (line["frequency_hz"], line["erp_db"]), fontsize=8,
                         xytext=(0, 8 + 11 * k), textcoords="offset points", ha="center", color="C3",
                         arrowprops={"arrowstyle": "-", "color": "C3", "lw": 0.5})
+    low, high = ax.get_ylim()
+    ax.set_ylim(low, high + 12.0)  # room for the order labels above the bars
     total = doc["erp"]["total_db"]
     ax.set_title(f"Liner ERP, surface '{doc['record']['surface']}', cycle {doc['record']['cycle']}: total "
                  + (f"{total:.1f} dB re 1 pW" if total is not None else "0 W") + f" up to {doc['record']['up_to_hz']:g} Hz")
