@@ -49,7 +49,46 @@ void addProduct(const FilmLoadGradient::Rows& G, const Eigen::Ref<const Eigen::M
     out.noalias() += Gl * Dl;
 }
 
+// G D over the nodes where G is not zero, where they are fewer than half (the shear's thickness
+// dependence lives where the film carries oil).
+void addSparseColumnsProduct(const FilmLoadGradient::Rows& G, const Eigen::Ref<const Eigen::MatrixXd>& D,
+                             Eigen::MatrixXd& out) {
+    std::vector<Eigen::Index> nodes;
+    for (Eigen::Index c = 0; c < G.cols(); ++c)
+        if ((G.col(c).array() != 0.0).any()) nodes.push_back(c);
+    if (2 * static_cast<Eigen::Index>(nodes.size()) >= G.cols()) {
+        out.noalias() += G * D;
+        return;
+    }
+    const auto nl = static_cast<Eigen::Index>(nodes.size());
+    Eigen::Matrix<double, 6, Eigen::Dynamic> Gl(6, nl);
+    Eigen::MatrixXd Dl(nl, D.cols());
+    for (Eigen::Index i = 0; i < nl; ++i) Gl.col(i) = G.col(nodes[static_cast<std::size_t>(i)]);
+    for (Eigen::Index c = 0; c < D.cols(); ++c)  // column by column: D is column-major
+        for (Eigen::Index i = 0; i < nl; ++i) Dl(i, c) = D(nodes[static_cast<std::size_t>(i)], c);
+    out.noalias() += Gl * Dl;
+}
+
+// G D for D given on its nodes.
+void addNodeProduct(const FilmLoadGradient::Rows& G, const NodeColumns& D, Eigen::MatrixXd& out) {
+    const auto nl = static_cast<Eigen::Index>(D.nodes.size());
+    if (nl == 0) return;
+    Eigen::Matrix<double, 6, Eigen::Dynamic> Gl(6, nl);
+    for (Eigen::Index i = 0; i < nl; ++i) Gl.col(i) = G.col(D.nodes[static_cast<std::size_t>(i)]);
+    out.noalias() += Gl * D.values;
+}
+
 }  // namespace
+
+Eigen::MatrixXd FilmLoadGradient::change(const NodeColumns& dp, const Eigen::Ref<const Eigen::MatrixXd>& dh,
+                                         const NodeColumns& dpc) const {
+    const Eigen::Index cols = std::max({dp.cols(), dh.cols(), dpc.cols()});
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(6, cols);
+    if (dp.cols()) addNodeProduct(pressure, dp, out);
+    if (dh.cols()) addSparseColumnsProduct(thickness, dh, out);
+    if (dpc.cols()) addNodeProduct(contactPressure, dpc, out);
+    return out;
+}
 
 Eigen::MatrixXd FilmLoadGradient::change(const Eigen::Ref<const Eigen::MatrixXd>& dp,
                                          const Eigen::Ref<const Eigen::MatrixXd>& dh,
@@ -57,7 +96,7 @@ Eigen::MatrixXd FilmLoadGradient::change(const Eigen::Ref<const Eigen::MatrixXd>
     const Eigen::Index cols = std::max({dp.cols(), dh.cols(), dpc.cols()});
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(6, cols);
     if (dp.cols()) addProduct(pressure, dp, out);
-    if (dh.cols()) out.noalias() += thickness * dh;
+    if (dh.cols()) addSparseColumnsProduct(thickness, dh, out);
     if (dpc.cols()) addProduct(contactPressure, dpc, out);
     return out;
 }

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "lube/FilmIntegrals.hpp"
+#include "lube/NodeColumns.hpp"
 
 namespace flexehd::lube {
 
@@ -24,6 +25,9 @@ struct FilmLoadGradient {
     /// The load change (6 rows) of a set of directions (a column each; empty = none).
     Eigen::MatrixXd change(const Eigen::Ref<const Eigen::MatrixXd>& dp, const Eigen::Ref<const Eigen::MatrixXd>& dh,
                            const Eigen::Ref<const Eigen::MatrixXd>& dpc) const;
+    /// change with the pressure and contact pressure changes given on their nodes.
+    Eigen::MatrixXd change(const NodeColumns& dp, const Eigen::Ref<const Eigen::MatrixXd>& dh,
+                           const NodeColumns& dpc) const;
 };
 
 FilmLoadGradient filmLoadGradient(const FilmGrid& grid, const FilmState& film, const Lubricant& lubricant,

@@ -78,10 +78,27 @@ void JfoLinearization::linearize(const FilmState& film, double dt, const JfoStat
     // ∂F/∂h of those rows by colour (ColouredDifference).
     const bool flux = inlets_ == InletResponse::FluxHeldWherePartial;
     const Eigen::VectorXd F0 = balances(net, g, sys_, p, phi, flux);
-    dFdh_ = colouredThicknessDerivative(g, colouring_, film, sys_, F0, [&](const FilmState& fc) {
+    const Eigen::SparseMatrix<double> dFdh = colouredThicknessDerivative(g, colouring_, film, sys_, F0, [&](const FilmState& fc) {
         const JfoNetwork nc(topo, g, fc, eta, dt, previous, inlet, pcav);
         return balances(nc, g, sys_, p, phi, flux);
     });
+    keepReachedColumns(dFdh);
+}
+
+void JfoLinearization::keepReachedColumns(const Eigen::SparseMatrix<double>& dFdh) {
+    // Only the nodes next to the system's rows enter ∂F/∂h: its columns there, numbered anew.
+    dFdhNodes_.clear();
+    std::vector<int> column(static_cast<std::size_t>(dFdh.cols()), -1);
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(static_cast<std::size_t>(dFdh.nonZeros()));
+    for (Eigen::Index c = 0; c < dFdh.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator e(dFdh, c); e; ++e) {
+            const auto node = static_cast<std::size_t>(e.col());
+            if (column[node] < 0) column[node] = static_cast<int>(dFdhNodes_.size()), dFdhNodes_.push_back(e.col());
+            entries.emplace_back(e.row(), column[node], e.value());
+        }
+    dFdh_.resize(dFdh.rows(), static_cast<Eigen::Index>(dFdhNodes_.size()));
+    dFdh_.setFromTriplets(entries.begin(), entries.end());
 }
 
 std::vector<char> JfoLinearization::partition(const JfoNetwork& net, const FilmGrid& g, const double* p,
@@ -120,17 +137,31 @@ std::vector<int> JfoLinearization::dependentRows(const JfoNetwork& net, const Fi
 }
 
 Eigen::MatrixXd JfoLinearization::pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const {
+    return pressureChangeOnNodes(dh).dense(solver_->grid().size());
+}
+
+NodeColumns JfoLinearization::pressureChangeOnNodes(const Eigen::Ref<const Eigen::MatrixXd>& dh) const {
     const int n = solver_->grid().size();
     if (dh.rows() != n)
         throw std::invalid_argument("JfoLinearization::pressureChange: columns of " + std::to_string(n) +
                                     " nodes expected, got " + std::to_string(dh.rows()));
-    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, dh.cols());
+    NodeColumns out;
+    out.values.resize(0, dh.cols());
     if (sys_.empty() || dFdh_.rows() == 0) return out;
-    Eigen::MatrixXd dy = -(dFdh_ * dh);
-    lu_->solveInPlace(dy);  // all columns in one pass over the factors
-    for (Eigen::Index c = 0; c < dh.cols(); ++c)
+    // −(∂F/∂h) δh over the nodes ∂F/∂h reaches, then all columns in one pass over the factors.
+    Eigen::MatrixXd dhReached(static_cast<Eigen::Index>(dFdhNodes_.size()), dh.cols());
+    for (Eigen::Index c = 0; c < dh.cols(); ++c)  // column by column: dh is column-major
+        for (std::size_t i = 0; i < dFdhNodes_.size(); ++i) dhReached(static_cast<Eigen::Index>(i), c) = dh(dFdhNodes_[i], c);
+    Eigen::MatrixXd dy = -(dFdh_ * dhReached);
+    lu_->solveInPlace(dy);
+    for (std::size_t r = 0; r < sys_.size(); ++r)
+        if (!sysCav_[r]) out.nodes.push_back(sys_[r]);
+    out.values.resize(static_cast<Eigen::Index>(out.nodes.size()), dh.cols());
+    for (Eigen::Index c = 0; c < dh.cols(); ++c) {
+        Eigen::Index i = 0;
         for (std::size_t r = 0; r < sys_.size(); ++r)
-            if (!sysCav_[r]) out(sys_[r], c) = dy(static_cast<Eigen::Index>(r), c);
+            if (!sysCav_[r]) out.values(i++, c) = dy(static_cast<Eigen::Index>(r), c);
+    }
     return out;
 }
 

@@ -24,6 +24,7 @@
 #include "lube/FilmState.hpp"
 #include "lube/GridColouring.hpp"
 #include "lube/JfoSolver.hpp"
+#include "lube/NodeColumns.hpp"
 
 namespace flexehd::lube {
 
@@ -51,6 +52,8 @@ public:
 
     /// δp (N × k, Pa) for k columns of thickness changes δh (m, N × k).
     Eigen::MatrixXd pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const;
+    /// pressureChange on the full-film nodes, the only ones where it is not zero.
+    NodeColumns pressureChangeOnNodes(const Eigen::Ref<const Eigen::MatrixXd>& dh) const;
 
     /// Film nodes cavitated (φ < 1) in the last linearisation.
     int cavitatedNodes() const { return cavitated_; }
@@ -66,11 +69,14 @@ private:
     std::vector<char> partition(const JfoNetwork& net, const FilmGrid& g, const double* p, const double* phi);
     /// The rows δp depends on: the full-film nodes and the rows their system's entries reach.
     std::vector<int> dependentRows(const JfoNetwork& net, const FilmGrid& g, const std::vector<char>& cavitated) const;
+    /// Keeps ∂F/∂h on the grid nodes it reaches (its non-zero columns).
+    void keepReachedColumns(const Eigen::SparseMatrix<double>& dFdh);
 
     std::vector<int> rows_;        // the Film nodes
     std::vector<int> sys_;         // the rows of the linearisation's system, in order
     std::vector<char> sysCav_;     // per row of it: 1 cavitated
-    Eigen::SparseMatrix<double> dFdh_;  // sys_ rows × grid nodes
+    Eigen::SparseMatrix<double> dFdh_;  // sys_ rows × the grid nodes in dFdhNodes_ (its non-zero columns)
+    std::vector<int> dFdhNodes_;
     int cavitated_ = 0;
 };
 

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include "lube/Lubricant.hpp"
+#include "lube/NodeColumns.hpp"
 
 #include <optional>
 
@@ -34,6 +35,10 @@ public:
     virtual void linearize(const ContactStep& step, const ContactState& now, const ContactIterate& it) = 0;
     /// δp (grid × k, Pa) at the last linearisation for k columns of film-thickness changes δh (m).
     virtual Eigen::MatrixXd pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const = 0;
+    /// pressureChange on the nodes where it is not zero.
+    virtual lube::NodeColumns pressureChangeOnNodes(const Eigen::Ref<const Eigen::MatrixXd>& dh) const {
+        return lube::NodeColumns::fromDense(pressureChange(dh));
+    }
     /// δp (grid × k, Pa) per unit a0/Δt of the master's BDF2 rate for k columns of the squeeze
     /// thickness's change δh_s (m): the part of the film's dependence on h that goes through its
     /// squeeze term (coupling.elastic_squeeze; zero where the film's content term is its own).

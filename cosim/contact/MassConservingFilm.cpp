@@ -143,6 +143,10 @@ Eigen::MatrixXd MassConservingFilm::pressureChange(const Eigen::Ref<const Eigen:
     return linearization_->pressureChange(dh);
 }
 
+lube::NodeColumns MassConservingFilm::pressureChangeOnNodes(const Eigen::Ref<const Eigen::MatrixXd>& dh) const {
+    return linearization_->pressureChangeOnNodes(dh);
+}
+
 Eigen::MatrixXd MassConservingFilm::rateChange(const ContactStep&, const Eigen::MatrixXd& dhs) const {
     return Eigen::MatrixXd::Zero(dhs.rows(), dhs.cols());
 }

@@ -35,6 +35,8 @@ public:
     /// The JFO linearisation over the full film and the cavities upstream of it (docs/lube.md §3b).
     bool linearizationFollowsRigidMotion() const override { return true; }
     Eigen::MatrixXd pressureChange(const Eigen::Ref<const Eigen::MatrixXd>& dh) const override;
+    /// On the full-film nodes (a starved film's few).
+    lube::NodeColumns pressureChangeOnNodes(const Eigen::Ref<const Eigen::MatrixXd>& dh) const override;
     /// Zero: the content term V (φh − φₙhₙ)/Δt is in h, whole (pressureChange has it).
     Eigen::MatrixXd rateChange(const ContactStep& step, const Eigen::MatrixXd& dhs) const override;
     bool rateChangeIsZero() const override { return true; }

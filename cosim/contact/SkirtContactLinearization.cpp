@@ -13,6 +13,8 @@
 #include "lube/FilmLoadGradient.hpp"
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace flexehd::cosim {
 
@@ -83,27 +85,35 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
         if (it.floored > 0) return flooredCols;
         return Cols;
     }();
-    const Eigen::MatrixXd dPh = equation_->pressureChange(filmCols);
+    const lube::NodeColumns dPh = equation_->pressureChangeOnNodes(filmCols);
     // The rate part, where the film has one (a mass-conserving film's content term is in dPh).
     const Eigen::MatrixXd dPrate = ratePart ? equation_->rateChange(step, Dh.rightCols(m)) : Eigen::MatrixXd(n, 0);
     // Contact pressure of the unfloored h, as evaluate(): δp_c = p_c'(h) δh on the nodes in contact
     // (the load is p + p_c); its slope once per node.
     // (None where no node is in contact.)
-    Eigen::MatrixXd dPc;
-    if (contact_)
+    lube::NodeColumns dPc;
+    if (contact_) {
+        std::vector<std::pair<double, double>> slopes;  // (slope, rate slope) per node in contact
         for (int r = 0; r < n; ++r) {
             if (g.kind(r) == lube::NodeKind::Void) continue;
             double rateSlope = 0.0;
             const double slope = contactSlope(step, it, r, rateSlope);
             if (slope == 0.0 && rateSlope == 0.0) continue;
-            if (dPc.size() == 0) dPc.setZero(n, k);
-            dPc.row(r) = slope * Cols.row(r);
+            dPc.nodes.push_back(r);
+            slopes.emplace_back(slope, rateSlope);
+        }
+        dPc.values.resize(static_cast<Eigen::Index>(dPc.nodes.size()), k);
+        for (std::size_t i = 0; i < dPc.nodes.size(); ++i) {
+            const auto row = static_cast<Eigen::Index>(i);
+            const auto [slope, rateSlope] = slopes[i];
+            dPc.values.row(row) = slope * Cols.row(dPc.nodes[i]);
             // The damped hard contact's rate: of every column with the elastic squeeze, else of
             // the motion's columns only (SkirtContact::approachSpeed).
             if (rateSlope == 0.0) continue;
-            if (case_.coupling.elasticSqueeze) dPc.row(r) += rateSlope * Cols.row(r);
-            else if (J.motionColumns) dPc.row(r).head(2) += rateSlope * Cols.row(r).head(2);
+            if (case_.coupling.elasticSqueeze) dPc.values.row(row) += rateSlope * Cols.row(dPc.nodes[i]);
+            else if (J.motionColumns) dPc.values.row(row).head(2) += rateSlope * Cols.row(dPc.nodes[i]).head(2);
         }
+    }
     work.film += t0.seconds();
     t0.restart();
 
@@ -121,14 +131,12 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
                                : Eigen::MatrixXd(6, 0);
 
     // The modal loads of the mapped δp + δp_c, piston rows then liner rows.
-    Eigen::MatrixXd summed;
-    if (dPc.size()) summed = dPh + dPc;
-    const Eigen::MatrixXd& dLoad = dPc.size() ? summed : dPh;
+    const lube::NodeColumns dLoad = lube::NodeColumns::sum(dPh, dPc);
     Eigen::MatrixXd modal(m, k);
     J.modalRate.setZero(elasticRate ? m : 0, m);
     Eigen::MatrixXd F;
     if (piston_) {
-        piston_->modalForces(dLoad, 0.0, F);
+        piston_->modalForces(dLoad, n, 0.0, F);
         modal.topRows(mp_) = F;
         if (ratePart) {
             piston_->modalForces(dPrate, 0.0, F);
@@ -136,7 +144,7 @@ void SkirtContact::linearize(const ContactStep& step, const ContactState& now, c
         }
     }
     if (liner_) {
-        liner_->modalForces(dLoad, step.linerOffset, F);
+        liner_->modalForces(dLoad, n, step.linerOffset, F);
         modal.bottomRows(ml_) = F;
         if (ratePart) {
             liner_->modalForces(dPrate, step.linerOffset, F);

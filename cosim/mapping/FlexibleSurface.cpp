@@ -33,6 +33,10 @@ void FlexibleSurface::modalForces(const Eigen::MatrixXd& P, double offset, Eigen
     mapping_->modalForces(P, offset, F);
 }
 
+void FlexibleSurface::modalForces(const lube::NodeColumns& P, int gridSize, double offset, Eigen::MatrixXd& F) const {
+    mapping_->modalForces(P, gridSize, offset, F);
+}
+
 void FlexibleSurface::filmChangeShapes(double offset, Eigen::MatrixXd& Psi) const {
     mapping_->filmChangeShapes(offset, Psi);
 }

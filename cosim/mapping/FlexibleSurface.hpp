@@ -54,6 +54,7 @@ public:
     void filmChange(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& dh) const;
     /// modalForce of k pressure fields at once (grid nodes × k → modes × k).
     void modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& F) const;
+    void modalForces(const lube::NodeColumns& P, int gridSize, double offset, Eigen::MatrixXd& F) const;
     /// The film-thickness change per unit modal coordinate at the offset (grid nodes × modes):
     /// filmChange(e_j) in column j (0 on Void nodes).
     void filmChangeShapes(double offset, Eigen::MatrixXd& Psi) const;

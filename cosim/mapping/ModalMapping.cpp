@@ -34,6 +34,8 @@ ModalMapping::ModalMapping(const modal::ReducedBody& body, const LoadMapping& lo
                                         " is out of range (0.." + std::to_string(gridSize_ - 1) +
                                         ") or not ascending");
     active_ = std::move(active);
+    activeColumn_.assign(static_cast<std::size_t>(gridSize_), -1);
+    for (std::size_t c = 0; c < active_.size(); ++c) activeColumn_[static_cast<std::size_t>(active_[c])] = static_cast<int>(c);
     const Eigen::Index na = static_cast<Eigen::Index>(active_.size());
     // Φᵀ A and D Φ on the active columns / rows only (the column-major A's columns are cheap to
     // pick; the row-major D's rows too).
@@ -116,6 +118,28 @@ void ModalMapping::modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) c
         Bl.col(c) = B_.col(loaded[static_cast<std::size_t>(c)]);
         pl.row(c) = P.row(active_[static_cast<std::size_t>(loaded[static_cast<std::size_t>(c)])]);
     }
+    out.noalias() = Bl * pl;
+}
+
+void ModalMapping::modalForces(const lube::NodeColumns& P, Eigen::MatrixXd& out) const {
+    std::vector<Eigen::Index> loaded, rows;  // active columns of B and their rows of P
+    for (std::size_t i = 0; i < P.nodes.size(); ++i) {
+        const int node = P.nodes[i];
+        if (node < 0 || node >= gridSize_)
+            throw std::invalid_argument("ModalMapping::modalForces: grid node " + std::to_string(node) +
+                                        " out of range (0.." + std::to_string(gridSize_ - 1) + ")");
+        const int c = activeColumn_[static_cast<std::size_t>(node)];
+        if (c >= 0) loaded.push_back(c), rows.push_back(static_cast<Eigen::Index>(i));
+    }
+    const auto nl = static_cast<Eigen::Index>(loaded.size());
+    Eigen::MatrixXd Bl(B_.rows(), nl);
+    for (Eigen::Index c = 0; c < nl; ++c) Bl.col(c) = B_.col(loaded[static_cast<std::size_t>(c)]);
+    if (nl == P.values.rows()) {  // every node active (a skirt's film nodes)
+        out.noalias() = Bl * P.values;
+        return;
+    }
+    Eigen::MatrixXd pl(nl, P.cols());
+    for (Eigen::Index c = 0; c < nl; ++c) pl.row(c) = P.values.row(rows[static_cast<std::size_t>(c)]);
     out.noalias() = Bl * pl;
 }
 

@@ -14,6 +14,7 @@
 
 #include "cosim/mapping/DeformationMapping.hpp"
 #include "cosim/mapping/LoadMapping.hpp"
+#include "lube/NodeColumns.hpp"
 #include "modal/ReducedBody.hpp"
 
 namespace flexehd::cosim {
@@ -44,12 +45,15 @@ public:
     void radialDisplacement(const Eigen::VectorXd& q, Eigen::VectorXd& out) const;
     /// Modal forces of k pressure fields at once (grid nodes × k → modes × k; one matrix product).
     void modalForces(const Eigen::MatrixXd& P, Eigen::MatrixXd& out) const;
+    /// modalForces of pressure fields given on a set of grid nodes (zero elsewhere): O(nodes × modes × k).
+    void modalForces(const lube::NodeColumns& P, Eigen::MatrixXd& out) const;
 
 private:
     /// The active columns whose grid node carries a load in some column of P (grid nodes × k).
     std::vector<Eigen::Index> loadedColumns(const Eigen::Ref<const Eigen::MatrixXd>& P) const;
     int gridSize_ = 0;
     std::vector<int> active_;
+    std::vector<int> activeColumn_;  // per grid node: its column among the active ones, −1 if inactive
     Eigen::MatrixXd B_, G_;  // Φᵀ A and D_r Φ on the active nodes: modes × active, active × modes
 };
 

@@ -40,6 +40,10 @@ void PistonSurfaceMapping::modalForces(const Eigen::MatrixXd& P, double, Eigen::
     modal_->modalForces(P, F);
 }
 
+void PistonSurfaceMapping::modalForces(const lube::NodeColumns& P, int, double, Eigen::MatrixXd& F) const {
+    modal_->modalForces(P, F);
+}
+
 void PistonSurfaceMapping::filmChange(const Eigen::VectorXd& q, double, Eigen::VectorXd& dh) const {
     modal_->radialDisplacement(q, dh);
     dh = -dh;  // outward skirt displacement closes the gap

@@ -20,6 +20,7 @@ public:
 
     void modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& f) const override;
     void modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& F) const override;
+    void modalForces(const lube::NodeColumns& P, int gridSize, double offset, Eigen::MatrixXd& F) const override;
     void filmChange(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& dh) const override;
     void filmChangeShapes(double offset, Eigen::MatrixXd& Psi) const override;
     Eigen::Matrix<double, 6, 1> resultant(const Eigen::VectorXd& p, double offset) const override;

@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 
+#include "lube/NodeColumns.hpp"
+
 namespace flexehd::cosim {
 
 class SurfaceMapping {
@@ -24,6 +26,10 @@ public:
     virtual void modalForce(const Eigen::VectorXd& p, double offset, Eigen::VectorXd& f) const = 0;
     /// modalForce of k pressure fields at once (grid nodes × k → modes × k).
     virtual void modalForces(const Eigen::MatrixXd& P, double offset, Eigen::MatrixXd& F) const = 0;
+    /// modalForces of fields given on a set of the grid's nodes (zero elsewhere; gridSize nodes).
+    virtual void modalForces(const lube::NodeColumns& P, int gridSize, double offset, Eigen::MatrixXd& F) const {
+        modalForces(P.dense(gridSize), offset, F);
+    }
     /// Film-thickness change (m) on the grid for the modal coordinates q (0 on Void nodes).
     virtual void filmChange(const Eigen::VectorXd& q, double offset, Eigen::VectorXd& dh) const = 0;
     /// filmChange per unit modal coordinate: grid nodes × modes.

@@ -159,6 +159,21 @@ TEST(ModalMapping, RestrictedToFilmNodesEqualsTheFullProducts) {
     restricted.modalForces(Ps, F);
     const Eigen::MatrixXd expected = restricted.loadOperator() * Ps;
     EXPECT_LE((F - expected).norm(), 1e-13 * expected.norm());
+    // The same fields given on their nodes (lube::NodeColumns), one off the active nodes added
+    // (ignored, as by the grid-wide product of a field that is zero there).
+    lube::NodeColumns onNodes = lube::NodeColumns::fromDense(Ps);
+    Eigen::MatrixXd Fn;
+    restricted.modalForces(onNodes, Fn);
+    EXPECT_LE((Fn - expected).norm(), 1e-13 * expected.norm());
+    for (int k = 0; k < g.size(); ++k)
+        if (!on[std::size_t(k)]) {
+            lube::NodeColumns extra;
+            extra.nodes = {k};
+            extra.values = Eigen::RowVector3d(1e6, 1e6, 1e6);
+            restricted.modalForces(lube::NodeColumns::sum(onNodes, extra), Fn);
+            EXPECT_LE((Fn - expected).norm(), 1e-13 * expected.norm());
+            break;
+        }
     const Eigen::VectorXd fs = restricted.modalForce(Eigen::VectorXd(Ps.col(1)));
     EXPECT_LE((fs - expected.col(1)).norm(), 1e-13 * expected.col(1).norm());
     // The full-size operators: zero columns / rows off the active nodes, the same products.

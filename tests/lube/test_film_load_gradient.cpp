@@ -4,6 +4,7 @@
 // film fraction, contact pressure and boundary friction, and a periodic full circle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -65,6 +66,20 @@ void expectMatchesDifferences(const FilmGrid& g, const FilmState& f, const Lubri
     const Eigen::MatrixXd few = G.change(sparseP, Eigen::MatrixXd(), sparseC);
     const Eigen::MatrixXd dense = Eigen::MatrixXd(G.pressure) * sparseP + Eigen::MatrixXd(G.contactPressure) * sparseC;
     EXPECT_LE((few - dense).norm(), 1e-13 * dense.norm());
+    // The same changes given on their nodes (NodeColumns), with the thickness part: the dense
+    // products of every row.
+    Eigen::MatrixXd dh2(n, 2);
+    dh2 << dh, 0.3 * dh;
+    const Eigen::MatrixXd onNodes =
+        G.change(NodeColumns::fromDense(sparseP), dh2, NodeColumns::fromDense(sparseC));
+    const Eigen::MatrixXd all = dense + Eigen::MatrixXd(G.thickness) * dh2;
+    EXPECT_LE((onNodes - all).norm(), 1e-13 * all.norm());
+    // And their sum on the union of their nodes.
+    NodeColumns shifted = NodeColumns::fromDense(sparseC);
+    for (int& k : shifted.nodes) k = std::min(k + 3, n - 1);
+    const NodeColumns both = NodeColumns::sum(NodeColumns::fromDense(sparseP), shifted);
+    EXPECT_LE((both.dense(n) - (sparseP + shifted.dense(n))).norm(), 1e-15 * sparseP.norm());
+    EXPECT_TRUE(std::is_sorted(both.nodes.begin(), both.nodes.end()));
 }
 
 }  // namespace
