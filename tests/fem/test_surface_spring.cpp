@@ -86,7 +86,7 @@ TEST(SpringSupport, StiffBarOnEndFaceSpringsHasTheRigidBodyOnFoundationFrequenci
     RecordProperty("worst_relative_error_omega2", std::to_string(worst));
     std::printf("rigid-on-springs: worst relative error of ω² %.3g (f = %.6g Hz)\n", worst,
                 std::sqrt(translation) / (2 * std::numbers::pi));
-    // Measured 8.5e-6: the bar's own elasticity, about (f_rocking / f_elastic)² ≈ (171 Hz / 73 kHz)².
+    // Measured 8.5e-6: the bar's own elasticity, of the order of (f_rocking / f_elastic)² ≈ (171 Hz / 73 kHz)².
     EXPECT_LT(worst, 3e-5);
     EXPECT_GT(modes.eigenvalues(6), 1e3 * rocking);  // the first elastic mode
 }
