@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -15,6 +16,7 @@
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/EigenmodeSolver.hpp"
 #include "fem/StaticSolver.hpp"
+#include "fem/SurfaceSpring.hpp"
 #include "modal/DenseProducts.hpp"
 #include "modal/LoadPatterns.hpp"
 
@@ -80,6 +82,22 @@ InterfaceSpec parseInterface(const std::string& text) {
     return s;
 }
 
+SupportSpec parseSupport(const std::string& text) {
+    const auto colon = text.rfind(':');
+    SupportSpec s;
+    s.group = text.substr(0, colon == std::string::npos ? 0 : colon);
+    if (colon == std::string::npos || s.group.empty())
+        throw std::invalid_argument("--support '" + text + "': expected GROUP:K with K in N/m^3, e.g. bottom:1e12");
+    const std::string k = text.substr(colon + 1);
+    char* end = nullptr;
+    s.stiffness = std::strtod(k.c_str(), &end);
+    if (k.empty() || end != k.c_str() + k.size())
+        throw std::invalid_argument("--support '" + text + "': K must be a number in N/m^3, e.g. bottom:1e12");
+    if (!(std::isfinite(s.stiffness) && s.stiffness > 0.0))
+        throw std::invalid_argument("--support '" + text + "': K must be finite and > 0 N/m^3");
+    return s;
+}
+
 CraigBamptonReducer::CraigBamptonReducer(const fem::Mesh& mesh, const fem::ElasticMaterial& material)
     : mesh_(mesh), material_(material) {
     material_.validate();
@@ -108,6 +126,39 @@ void requirePressurePatterns(const fem::Mesh& mesh, const std::vector<InterfaceS
     }
 }
 
+// The supports: parsed, on known surface groups, each group once, none an interface (its
+// springs would act on the reference node's rigid motion, which the run prescribes).
+void requireSupports(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs,
+                     const std::vector<std::string>& supports) {
+    std::vector<std::string> groups;
+    for (const std::string& text : supports) {
+        const SupportSpec s = parseSupport(text);
+        try {
+            fem::BoundarySurface(mesh, s.group);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("--support '" + text + "': " + e.what());
+        }
+        if (std::count(groups.begin(), groups.end(), s.group) > 0)
+            throw std::invalid_argument("--support '" + text + "': group '" + s.group +
+                                        "' has a support already; give one stiffness per group");
+        groups.push_back(s.group);
+        for (const auto& i : specs)
+            if (i.group == s.group)
+                throw std::invalid_argument("--support '" + text + "': group '" + s.group +
+                                            "' is also an interface; a surface is either held at an interface or "
+                                            "on a spring support, not both");
+    }
+}
+
+// K plus the spring stiffness of every support (Winkler foundation, fem/SurfaceSpring).
+fem::SparseMatrix supportedStiffness(const fem::Mesh& mesh, fem::SparseMatrix K, const std::vector<std::string>& supports) {
+    for (const std::string& text : supports) {
+        const SupportSpec s = parseSupport(text);
+        K += fem::surfaceSpringMatrix(fem::BoundarySurface(mesh, s.group), s.stiffness);
+    }
+    return K;
+}
+
 // The cheap checks, before anything that can take minutes on a production mesh.
 void requireReducible(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs, const ReductionSettings& settings) {
     if (specs.empty())
@@ -124,6 +175,7 @@ void requireReducible(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& s
             throw std::invalid_argument("interface '" + s.group + "' is a volume group of mesh '" + mesh.source +
                                         "'; an interface is a surface group (the surfaces where the body is held)");
     requirePressurePatterns(mesh, specs, settings.pressurePatterns);
+    requireSupports(mesh, specs, settings.supports);
 }
 
 // The interfaces: node sets tied to reference nodes (RBE2, or averaging) in dofs.
@@ -288,7 +340,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     body.interfaces = tieInterfaces(mesh_, specs, dofs);
 
     fem::ElasticityAssembler assembler(mesh_);
-    const fem::SparseMatrix Kr = dofs.reduce(assembler.stiffness(material_));
+    const fem::SparseMatrix Kr = dofs.reduce(supportedStiffness(mesh_, assembler.stiffness(material_), settings.supports));
     const fem::SparseMatrix Mr = dofs.reduce(assembler.mass(material_.rho));
     const Eigen::Index nf = dofs.numFree(), nb = 6 * dofs.numLinks(), ni = nf - nb;
     rep.dofs = dofs.numDofs();

@@ -8,7 +8,8 @@
 //   e.g. the crown under the cylinder's gas pressure).
 // Boundary DOFs are the 6 DOFs of a reference node per interface: a node set tied to it
 // rigidly (RBE2) or followed by it on average (RBE3). The basis is then orthonormalised: Mᵣ = I, Kᵣ = diag(ω²), rigid-body modes flagged.
-// One factorization of K_ii serves Ψ, the Lanczos iterations and X.
+// One factorization of K_ii serves Ψ, the Lanczos iterations and X. Spring supports
+// (ReductionSettings::supports) add their surface stiffness to K before all of this.
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,15 @@ struct InterfaceSpec {
 /// Parses "GROUP", "GROUP:rbe2", "GROUP:rbe3" with an optional "@x,y,z" reference point (m).
 InterfaceSpec parseInterface(const std::string& text);
 
+/// An elastic (Winkler) support: springs of `stiffness` per unit area (N/m³) on a surface group.
+struct SupportSpec {
+    std::string group;
+    double stiffness = 0.0;
+};
+
+/// Parses "GROUP:K" (K in N/m³, finite and > 0); errors name the option and the text.
+SupportSpec parseSupport(const std::string& text);
+
 /// Wall-clock seconds of the steps, and the size of what was built.
 struct ReductionReport {
     double assembleSeconds = 0, factorSeconds = 0, constraintModeSeconds = 0, normalModeSeconds = 0,
@@ -41,7 +51,8 @@ public:
 
     /// Throws std::invalid_argument for unknown groups, empty or overlapping interfaces,
     /// more modes than interior DOFs, a pressure-pattern group listed twice or also an
-    /// interface; std::runtime_error if the interfaces do not hold the body (K_ii singular:
+    /// interface, a support on an unknown, volume or interface group or listed twice;
+    /// std::runtime_error if the interfaces do not hold the body (K_ii singular:
     /// a disconnected part, or no interface).
     ReducedBody reduce(const std::vector<InterfaceSpec>& interfaces, const ReductionSettings& settings,
                        ReductionReport* report = nullptr) const;

@@ -50,15 +50,16 @@ ModalPropagator::ModalPropagator(const ReducedBody& body, const std::vector<int>
     const Eigen::MatrixXd N = heldBasis(body, held);
     const Eigen::Index m = body.numModes(), n = N.cols();
     if (n > 0) (void)heldStiffness(body, N);  // throws if the held body can move rigidly
+    Eigen::VectorXd& c = damping_;
+    c.resize(m);
+    for (Eigen::Index k = 0; k < m; ++k)
+        c(k) = 2.0 * body.dampingRatios(k) * std::sqrt(std::max(body.stiffnessMatrix(k, k), 0.0));
     if (n == 0) {  // the held interfaces fix every mode: no response
         inQ_ = inV_ = inF_ = Eigen::MatrixXcd::Zero(0, m);
         outQ_ = outV_ = Eigen::MatrixXcd::Zero(m, 0);
         G_ = Gv_ = Eigen::MatrixXd::Zero(m, m);
         return;
     }
-    Eigen::VectorXd c(m);
-    for (Eigen::Index k = 0; k < m; ++k)
-        c(k) = 2.0 * body.dampingRatios(k) * std::sqrt(std::max(body.stiffnessMatrix(k, k), 0.0));
     const Eigen::MatrixXd Mn = N.transpose() * body.massMatrix * N, Kn = N.transpose() * body.stiffnessMatrix * N;
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(Kn, Mn);
     if (modes.info() != Eigen::Success)

@@ -30,6 +30,9 @@ struct ReductionSettings {
     double cutoffHz = 0.0;         ///< 0: none; else keep modes below this frequency
     std::vector<std::string> staticCorrection;  ///< surfaces with residual attachment modes
     std::vector<std::string> pressurePatterns;  ///< surfaces with one uniform-pressure static-correction vector each
+    /// Elastic (Winkler) supports "GROUP:K", K in N/m³: springs on the surface group added to K
+    /// before the reduction (docs/modal.md, "Spring supports").
+    std::vector<std::string> supports;
     int axialOrder = 0;            ///< load patterns: Legendre degree 0..axialOrder along z
     int axialHats = 0;             ///< if > 0: this many piecewise-linear hats along z instead
     int circumferentialOrder = 0;  ///< and Fourier orders 0..circumferentialOrder in θ

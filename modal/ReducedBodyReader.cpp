@@ -280,6 +280,7 @@ ReducedBody readContent(const Reader& r) {
     s.cutoffHz = r.realAttr("/settings", "cutoff_hz");
     s.staticCorrection = r.stringsAttr("/settings", "static_correction");
     s.pressurePatterns = r.optionalStringsAttr("/settings", "pressure_patterns");
+    s.supports = r.optionalStringsAttr("/settings", "supports");
     s.axialOrder = int(r.intAttr("/settings", "axial_order"));
     s.axialHats = int(r.intAttr("/settings", "axial_hats"));
     s.circumferentialOrder = int(r.intAttr("/settings", "circumferential_order"));

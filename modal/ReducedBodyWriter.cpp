@@ -170,6 +170,7 @@ void writeContent(const ReducedBody& b, const Writer& w) {
     w.realAttribute("/settings", "cutoff_hz", s.cutoffHz);
     w.stringsAttribute("/settings", "static_correction", s.staticCorrection);
     w.stringsAttribute("/settings", "pressure_patterns", s.pressurePatterns);
+    w.stringsAttribute("/settings", "supports", s.supports);
     w.intAttribute("/settings", "axial_order", s.axialOrder);
     w.intAttribute("/settings", "axial_hats", s.axialHats);
     w.intAttribute("/settings", "circumferential_order", s.circumferentialOrder);

@@ -74,6 +74,7 @@ nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
                        {"cutoff_hz", s.cutoffHz},
                        {"static_correction", s.staticCorrection},
                        {"pressure_patterns", s.pressurePatterns},
+                       {"supports", s.supports},
                        {"axial_order", s.axialOrder},
                        {"axial_hats", s.axialHats},
                        {"circumferential_order", s.circumferentialOrder},
@@ -148,6 +149,7 @@ void printSummary(const std::string& file, const modal::ReducedBody& b) {
                listOrNone(s.staticCorrection), axial, s.circumferentialOrder, listOrNone(s.pressurePatterns),
                s.dampingRatio);
     fmt::print("load patterns  {}\n", loadPatternsText(b));
+    if (!s.supports.empty()) fmt::print("supports     {} (GROUP:K, N/m^3)\n", fmt::join(s.supports, ", "));
     const auto rigid = std::count(b.rigidBody.begin(), b.rigidBody.end(), 1);
     fmt::print("modes        {} ({} rigid-body), max |M_r - I| = {:.2g}\n", b.numModes(), rigid, massIdentityError(b));
     if (!b.interfaces.empty()) printHeldFrequencies(heldFrequencies(b));

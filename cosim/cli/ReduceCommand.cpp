@@ -59,6 +59,7 @@ void runReduce(const ReduceArgs& a) {
     std::vector<modal::InterfaceSpec> specs;
     for (const auto& s : a.interfaces) specs.push_back(modal::parseInterface(s));
     for (const auto& b : a.dampingBands) modal::parseDampingBand(b);  // fail before the long work
+    for (const auto& s : a.settings.supports) modal::parseSupport(s);
     prepareOutputFile(a.out);
     spdlog::info("reading mesh {}", a.mesh.path);
     fem::MeshOptions options = a.mesh.options;
@@ -72,9 +73,12 @@ void runReduce(const ReduceArgs& a) {
     const auto& uniform = a.settings.pressurePatterns;
     const std::string uniformText =
         uniform.empty() ? "" : fmt::format(", uniform pressure on {}", fmt::join(uniform, ", "));
-    spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s){}", specs.size(),
+    const auto& supports = a.settings.supports;
+    const std::string supportText =
+        supports.empty() ? "" : fmt::format(", spring support on {} [N/m^3]", fmt::join(supports, ", "));
+    spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s){}{}", specs.size(),
                  a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "",
-                 a.settings.staticCorrection.size(), uniformText);
+                 a.settings.staticCorrection.size(), uniformText, supportText);
     modal::ReductionReport rep;
     modal::ReducedBody body = modal::CraigBamptonReducer(mesh, a.material).reduce(specs, a.settings, &rep);
     if (!a.dampingBands.empty()) {
@@ -107,6 +111,7 @@ void runReduce(const ReduceArgs& a) {
                         {"static_correction", rep.staticCorrectionModes},
                         {"dropped_dependent", rep.droppedDependent}};
         doc["pressure_patterns"] = uniform;
+        doc["supports"] = supports;
         doc["rigid_body_modes"] = rigid;
         doc["frequencies_hz"] = std::vector<double>(body.frequenciesHz.data(),
                                                     body.frequenciesHz.data() + body.frequenciesHz.size());
@@ -155,6 +160,10 @@ void addReduceCommand(CLI::App& app) {
     cmd->add_option("--pressure-pattern", a->settings.pressurePatterns,
                     "Surface group with one static-correction vector for a uniform pressure (e.g. crown for the "
                     "cylinder's gas pressure), or GROUP@ZLOW:ZHIGH for its part in that band of z [m]; repeatable");
+    cmd->add_option("--support", a->settings.supports,
+                    "Elastic (Winkler) support GROUP:K: springs of stiffness K per unit area [N/m^3] on the surface "
+                    "group, in all three directions, added to the stiffness before the reduction; repeatable")
+        ->type_name("GROUP:K");
     cmd->add_option("--axial-order", a->settings.axialOrder, "Load patterns: Legendre degree along z")
         ->check(wholeNumberFromTo(0, 20));
     cmd->add_option("--axial-hats", a->settings.axialHats,

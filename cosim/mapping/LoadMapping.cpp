@@ -13,6 +13,7 @@
 
 #include "fem/BoundarySurface.hpp"
 #include "fem/ShapeFunctions.hpp"
+#include "modal/GaussLegendre.hpp"
 
 namespace flexehd::cosim {
 namespace {
@@ -25,36 +26,12 @@ struct RulePoint {
     double xi, eta, weight;  // reference triangle, weights sum to 1/2
 };
 
-// Gauss–Legendre nodes and weights on [0, 1] (Newton on P_n, Abramowitz & Stegun 25.4.29).
-void gaussLegendre(int n, std::vector<double>& x, std::vector<double>& w) {
-    x.assign(static_cast<std::size_t>(n), 0.0);
-    w.assign(static_cast<std::size_t>(n), 0.0);
-    for (int i = 0; i < n; ++i) {
-        double t = std::cos(kPi * (i + 0.75) / (n + 0.5));
-        double dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = t;
-            for (int k = 2; k <= n; ++k) {
-                const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n * (t * p1 - p0) / (t * t - 1.0);
-            const double dt = p1 / dp;
-            t -= dt;
-            if (std::abs(dt) < 1e-16) break;
-        }
-        const auto k = static_cast<std::size_t>(i);
-        x[k] = 0.5 * (1.0 - t);
-        w[k] = 1.0 / ((1.0 - t * t) * dp * dp);  // = (2 / ((1-t²) P'²)) / 2 for [0, 1]
-    }
-}
-
 // Collapsed (Duffy / Stroud conical product) rule on the reference triangle: ξ = u,
 // η = v (1 − u), Jacobian (1 − u); exact for total degree ≤ 2n − 2.
 std::vector<RulePoint> collapsedRule(int n) {
-    std::vector<double> x, w;
-    gaussLegendre(n, x, w);
+    const modal::QuadratureRule rule = modal::gaussLegendre(n);  // on [0, 1] (Abramowitz & Stegun 25.4.29)
+    const std::vector<double>& x = rule.nodes;
+    const std::vector<double>& w = rule.weights;
     std::vector<RulePoint> r;
     for (std::size_t i = 0; i < x.size(); ++i)
         for (std::size_t j = 0; j < x.size(); ++j)

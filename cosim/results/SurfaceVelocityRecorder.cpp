@@ -107,7 +107,9 @@ void SurfaceVelocityRecorder::stepAccepted(const AcceptedStep& step) {
         times_.assign(1, origin_);
         angles_.assign(1, crankAngle720(lastAngle_));
         velocities_.assign(1, w_);
-        work_ = 0.0;
+        work_ = workScale_ = 0.0;
+        steps_ = 0;
+        damped_ = {};
         storedAtStart_ = storedEnergy();
     }
     const double span = s.time - lastTime_;
@@ -133,6 +135,13 @@ void SurfaceVelocityRecorder::stepAccepted(const AcceptedStep& step) {
     propagator_.responseWithin(y_, w_, force_, force, span, taus, q, v);
     for (Eigen::Index j = 0; j + 1 < v.cols(); ++j) velocities_.push_back(v.col(j));
     work_ += propagator_.workOver(y_, w_, force_, force, span, q.col(q.cols() - 1));
+    workScale_ += std::abs(force.dot(q.col(q.cols() - 1))) + std::abs(force_.dot(y_));
+    ++steps_;
+    if (quadrature_) {
+        const modal::DampedEnergy d = quadrature_->overStep(propagator_, y_, w_, force_, force, span);
+        damped_.energy += d.energy;
+        damped_.error += d.error;
+    }
     y_ = q.col(q.cols() - 1);
     w_ = v.col(v.cols() - 1);
     force_ = force;

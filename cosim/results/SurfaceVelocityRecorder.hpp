@@ -14,6 +14,7 @@
 // own response of the liner (dynamic or quasi-static) that the film sees. The recorder samples ẏ
 // on a fixed grid of the case's sampling rate over each cycle and writes the cycle's record at
 // its end to acoustics.h5, so the file holds the last complete cycle.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/coupling/RunObserver.hpp"
+#include "modal/DampedEnergyQuadrature.hpp"
 #include "modal/ModalPropagator.hpp"
 #include "modal/ReducedBody.hpp"
 
@@ -53,6 +55,20 @@ public:
     /// ½ q̇ᵀ M q̇ + ½ qᵀ K q (J); their difference is what its modal damping took.
     double cycleWork() const { return work_; }
     double cycleStoredChange() const { return storedEnergy() - storedAtStart_; }
+    /// From the next step on, also integrates the energy the liner's modal damping takes,
+    /// ∫ q̇ᵀ C q̇ dt, by Gauss–Legendre quadrature of `points` and twice as many points on each step
+    /// (modal::DampedEnergyQuadrature): a check of the balance W = ΔE + D that does not go
+    /// through W − ΔE. Off by default (it costs 3 × points response evaluations per step).
+    void integrateDampedEnergy(int points) { quadrature_.emplace(points); }
+    /// Over the current cycle's steps (with integrateDampedEnergy): the damped energy (J, the
+    /// finer rule's) and its quadrature error bound Σ |D_2m − D_m| over the steps (J).
+    double cycleDampedQuadrature() const { return damped_.energy; }
+    double cycleDampedQuadratureError() const { return damped_.error; }
+    /// Σ (|f₊ᵀq₊| + |fₙᵀqₙ|) over the current cycle's steps (J): the terms the exact work is the
+    /// differences of, whose size sets its round-off.
+    double cycleWorkScale() const { return workScale_; }
+    /// The number of steps in the current cycle.
+    int cycleSteps() const { return steps_; }
     int cyclesWritten() const { return written_; }
 
 private:
@@ -78,6 +94,10 @@ private:
     Eigen::MatrixXd compliance_;     // quasi-static: the response's start
     Eigen::MatrixXd mass_, stiffness_;  // M_r, K_r
     double work_ = 0.0, storedAtStart_ = 0.0;  // J, over the current cycle
+    double workScale_ = 0.0;                   // J, Σ |f₊ᵀq₊| + |fₙᵀqₙ| over the current cycle
+    int steps_ = 0;                            // the current cycle's
+    std::optional<modal::DampedEnergyQuadrature> quadrature_;
+    modal::DampedEnergy damped_;               // J, over the current cycle (with quadrature_)
     Eigen::VectorXd y_, w_, force_;  // the forced response's state and force at the last accepted step
     std::vector<double> times_, angles_;
     std::vector<Eigen::VectorXd> velocities_;

@@ -68,3 +68,46 @@ TEST(CliReduce, VolumeInterfaceAndUnphysicalMaterialAreRefusedWhereTheyEnter) {
     EXPECT_THAT(light.err, HasSubstr("--rho: expected a number from 10 to 1e5, got '1e-3'"));
     EXPECT_FALSE(std::filesystem::exists("/tmp/x.h5"));
 }
+
+// `--support GROUP:K`: Winkler springs on the beam's tip (docs/modal.md, "Spring supports"). The
+// file records the option's text; the held body is stiffer than the plain cantilever.
+TEST(CliReduce, SpringSupportIsRecordedAndStiffensTheHeldBody) {
+    const auto dir = flexehd::test::scratchDir();
+    const std::string base = "reduce --mesh " + dataPath("beam.geo") +
+                             " --E 2.1e11 --nu 0.3 --rho 7850 --interface clamped:rbe2 --modes 6 --size 0.02 --json";
+    const std::string plain = (dir / "plain.h5").string(), supported = (dir / "supported.h5").string();
+    const auto a = runFlexehd(base + " --out " + plain);
+    ASSERT_EQ(a.status, 0) << a.err;
+    const auto b = runFlexehd(base + " --support tip:1e10 --out " + supported);
+    ASSERT_EQ(b.status, 0) << b.err;
+    EXPECT_EQ(nlohmann::json::parse(b.out).at("supports"), nlohmann::json({"tip:1e10"}));
+    const modal::ReducedBody p = modal::readReducedBody(plain), s = modal::readReducedBody(supported);
+    EXPECT_TRUE(p.settings.supports.empty());
+    EXPECT_EQ(s.settings.supports, std::vector<std::string>{"tip:1e10"});
+    // K A = 1e10 · 4e-4 = 4e6 N/m against the cantilever's 3EI/L³ = 8.4e3 N/m: the tip is nearly pinned.
+    EXPECT_GT(modal::heldFrequenciesHz(s, {0})(0), 3.0 * modal::heldFrequenciesHz(p, {0})(0));
+    const auto inspect = runFlexehd("inspect " + supported);
+    ASSERT_EQ(inspect.status, 0) << inspect.err;
+    EXPECT_THAT(inspect.out, HasSubstr("supports     tip:1e10"));
+}
+
+TEST(CliReduce, BadSupportsAreRefusedNamingTheOption) {
+    const std::string base = "reduce --mesh " + dataPath("beam.geo") +
+                             " --E 2.1e11 --nu 0.3 --rho 7850 --interface clamped:rbe2 --out /tmp/x.h5 --support ";
+    const struct {
+        std::string arg, message;
+    } cases[] = {
+        {"tip", "--support 'tip': expected GROUP:K with K in N/m^3"},
+        {"tip:stiff", "--support 'tip:stiff': K must be a number in N/m^3"},
+        {"tip:-1e9", "--support 'tip:-1e9': K must be finite and > 0 N/m^3"},
+        {"tip:inf", "--support 'tip:inf': K must be finite and > 0 N/m^3"},
+        {"top:1e9", "--support 'top:1e9': mesh '"},
+        {"clamped:1e9", "--support 'clamped:1e9': group 'clamped' is also an interface"},
+    };
+    for (const auto& c : cases) {
+        const auto r = runFlexehd(base + c.arg);
+        EXPECT_EQ(r.status, 1) << c.arg;
+        EXPECT_THAT(r.err, HasSubstr(c.message)) << c.arg;
+    }
+    EXPECT_FALSE(std::filesystem::exists("/tmp/x.h5"));
+}

@@ -43,6 +43,7 @@ void expectSameBody(const modal::ReducedBody& a, const modal::ReducedBody& b) {
     EXPECT_EQ(a.settings.cutoffHz, b.settings.cutoffHz);
     EXPECT_EQ(a.settings.staticCorrection, b.settings.staticCorrection);
     EXPECT_EQ(a.settings.pressurePatterns, b.settings.pressurePatterns);
+    EXPECT_EQ(a.settings.supports, b.settings.supports);
     EXPECT_EQ(a.settings.axialOrder, b.settings.axialOrder);
     EXPECT_EQ(a.settings.axialHats, b.settings.axialHats);
     EXPECT_EQ(a.settings.circumferentialOrder, b.settings.circumferentialOrder);
@@ -213,6 +214,27 @@ TEST_F(ReducedBodyFileTest, FileWithoutPressurePatternsReadsAsEmpty) {
     const modal::ReducedBody r = modal::readReducedBody(good_);
     EXPECT_TRUE(r.settings.pressurePatterns.empty());
     EXPECT_EQ(r.settings.staticCorrection, b.settings.staticCorrection);
+}
+
+TEST_F(ReducedBodyFileTest, SpringSupportsRoundTrip) {
+    modal::ReducedBody b = *body_;
+    b.settings.supports = {"xmax:1e12", "boundary:2.5e9"};
+    const std::string path = (dir_ / "supports.h5").string();
+    modal::writeReducedBody(b, path);
+    const modal::ReducedBody r = modal::readReducedBody(path);
+    EXPECT_EQ(r.settings.supports, (std::vector<std::string>{"xmax:1e12", "boundary:2.5e9"}));
+    expectSameBody(b, r);
+}
+
+// A file written before /settings had `supports` reads as a body without spring supports.
+TEST_F(ReducedBodyFileTest, FileWithoutSupportsReadsAsEmpty) {
+    modal::ReducedBody b = *body_;
+    b.settings.supports = {"xmax:1e12"};
+    modal::writeReducedBody(b, good_);
+    RawFile(good_).removeAttribute("/settings", "supports");
+    const modal::ReducedBody r = modal::readReducedBody(good_);
+    EXPECT_TRUE(r.settings.supports.empty());
+    EXPECT_EQ(r.settings.pressurePatterns, b.settings.pressurePatterns);
 }
 
 TEST_F(ReducedBodyFileTest, LayoutAsDocumented) {
