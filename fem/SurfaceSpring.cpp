@@ -13,6 +13,17 @@ SparseMatrix surfaceSpringMatrix(const BoundarySurface& surface, double k) {
     if (!(std::isfinite(k) && k > 0.0))
         throw std::invalid_argument("spring support on '" + surface.name() +
                                     "': stiffness per area must be finite and > 0 N/m^3, got " + std::to_string(k));
+    return surfaceBedMatrix(surface, k);
+}
+
+SparseMatrix surfaceDashpotMatrix(const BoundarySurface& surface, double c) {
+    if (!(std::isfinite(c) && c > 0.0))
+        throw std::invalid_argument("damper support on '" + surface.name() +
+                                    "': damping per area must be finite and > 0 N*s/m^3, got " + std::to_string(c));
+    return surfaceBedMatrix(surface, c);
+}
+
+SparseMatrix surfaceBedMatrix(const BoundarySurface& surface, double k) {
     const Mesh& mesh = surface.mesh();
     std::vector<Eigen::Triplet<double, int>> entries;
     withType(mesh.surface.type, [&]<ElementType T>() {

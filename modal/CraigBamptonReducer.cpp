@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -82,20 +83,39 @@ InterfaceSpec parseInterface(const std::string& text) {
     return s;
 }
 
-SupportSpec parseSupport(const std::string& text) {
+namespace {
+
+// "GROUP:VALUE" of --support and --damper: the group before the last colon, the value a finite
+// number > 0 after it.
+std::pair<std::string, double> parseGroupValue(const std::string& text, const std::string& option,
+                                               const std::string& symbol, const std::string& unit,
+                                               const std::string& example) {
     const auto colon = text.rfind(':');
-    SupportSpec s;
-    s.group = text.substr(0, colon == std::string::npos ? 0 : colon);
-    if (colon == std::string::npos || s.group.empty())
-        throw std::invalid_argument("--support '" + text + "': expected GROUP:K with K in N/m^3, e.g. bottom:1e12");
-    const std::string k = text.substr(colon + 1);
+    std::string group = text.substr(0, colon == std::string::npos ? 0 : colon);
+    if (colon == std::string::npos || group.empty())
+        throw std::invalid_argument(option + " '" + text + "': expected GROUP:" + symbol + " with " + symbol + " in " +
+                                    unit + ", e.g. " + example);
+    const std::string v = text.substr(colon + 1);
     char* end = nullptr;
-    s.stiffness = std::strtod(k.c_str(), &end);
-    if (k.empty() || end != k.c_str() + k.size())
-        throw std::invalid_argument("--support '" + text + "': K must be a number in N/m^3, e.g. bottom:1e12");
-    if (!(std::isfinite(s.stiffness) && s.stiffness > 0.0))
-        throw std::invalid_argument("--support '" + text + "': K must be finite and > 0 N/m^3");
-    return s;
+    const double value = std::strtod(v.c_str(), &end);
+    if (v.empty() || end != v.c_str() + v.size())
+        throw std::invalid_argument(option + " '" + text + "': " + symbol + " must be a number in " + unit + ", e.g. " +
+                                    example);
+    if (!(std::isfinite(value) && value > 0.0))
+        throw std::invalid_argument(option + " '" + text + "': " + symbol + " must be finite and > 0 " + unit);
+    return {std::move(group), value};
+}
+
+}  // namespace
+
+SupportSpec parseSupport(const std::string& text) {
+    auto [group, k] = parseGroupValue(text, "--support", "K", "N/m^3", "bottom:1e12");
+    return {std::move(group), k};
+}
+
+DamperSpec parseDamper(const std::string& text) {
+    auto [group, c] = parseGroupValue(text, "--damper", "C", "N*s/m^3", "bottom:1e6");
+    return {std::move(group), c};
 }
 
 CraigBamptonReducer::CraigBamptonReducer(const fem::Mesh& mesh, const fem::ElasticMaterial& material)
@@ -126,27 +146,30 @@ void requirePressurePatterns(const fem::Mesh& mesh, const std::vector<InterfaceS
     }
 }
 
-// The supports: parsed, on known surface groups, each group once, none an interface (its
-// springs would act on the reference node's rigid motion, which the run prescribes).
+// The supports (springs) or dampers (dashpots): parsed, on known surface groups, each group once
+// per option, none an interface (its springs or dashpots would act on the reference node's rigid
+// motion, which the run prescribes). A group may carry both a spring and a damper support.
+template <class Parse>
 void requireSupports(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& specs,
-                     const std::vector<std::string>& supports) {
+                     const std::vector<std::string>& supports, const std::string& option, const std::string& what,
+                     const std::string& kind, const std::string& value, Parse parse) {
     std::vector<std::string> groups;
     for (const std::string& text : supports) {
-        const SupportSpec s = parseSupport(text);
+        const std::string group = parse(text).group;
         try {
-            fem::BoundarySurface(mesh, s.group);
+            fem::BoundarySurface(mesh, group);
         } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("--support '" + text + "': " + e.what());
+            throw std::invalid_argument(option + " '" + text + "': " + e.what());
         }
-        if (std::count(groups.begin(), groups.end(), s.group) > 0)
-            throw std::invalid_argument("--support '" + text + "': group '" + s.group +
-                                        "' has a support already; give one stiffness per group");
-        groups.push_back(s.group);
+        if (std::count(groups.begin(), groups.end(), group) > 0)
+            throw std::invalid_argument(option + " '" + text + "': group '" + group + "' has a " + what +
+                                        " already; give one " + value + " per group");
+        groups.push_back(group);
         for (const auto& i : specs)
-            if (i.group == s.group)
-                throw std::invalid_argument("--support '" + text + "': group '" + s.group +
+            if (i.group == group)
+                throw std::invalid_argument(option + " '" + text + "': group '" + group +
                                             "' is also an interface; a surface is either held at an interface or "
-                                            "on a spring support, not both");
+                                            "on a " + kind + ", not both");
     }
 }
 
@@ -157,6 +180,21 @@ fem::SparseMatrix supportedStiffness(const fem::Mesh& mesh, fem::SparseMatrix K,
         K += fem::surfaceSpringMatrix(fem::BoundarySurface(mesh, s.group), s.stiffness);
     }
     return K;
+}
+
+// D_s = Φᵀ C_s Φ: the dashpots of every damper support (fem::surfaceDashpotMatrix) projected on
+// the body's final shapes (full DOF numbering), symmetrised; empty without dampers.
+Eigen::MatrixXd projectedSupportDamping(const fem::Mesh& mesh, const Eigen::MatrixXd& shapes,
+                                        const std::vector<std::string>& dampers) {
+    if (dampers.empty()) return {};
+    fem::SparseMatrix Cs(shapes.rows(), shapes.rows());
+    for (const std::string& text : dampers) {
+        const DamperSpec d = parseDamper(text);
+        Cs += fem::surfaceDashpotMatrix(fem::BoundarySurface(mesh, d.group), d.damping);
+    }
+    const Eigen::MatrixXd CsPhi = fem::SparseMatrix(Cs.selfadjointView<Eigen::Upper>()) * shapes;
+    const Eigen::MatrixXd Ds = multiplyTransposed(shapes, CsPhi);
+    return 0.5 * (Ds + Ds.transpose());
 }
 
 // The cheap checks, before anything that can take minutes on a production mesh.
@@ -175,7 +213,8 @@ void requireReducible(const fem::Mesh& mesh, const std::vector<InterfaceSpec>& s
             throw std::invalid_argument("interface '" + s.group + "' is a volume group of mesh '" + mesh.source +
                                         "'; an interface is a surface group (the surfaces where the body is held)");
     requirePressurePatterns(mesh, specs, settings.pressurePatterns);
-    requireSupports(mesh, specs, settings.supports);
+    requireSupports(mesh, specs, settings.supports, "--support", "support", "spring support", "stiffness", parseSupport);
+    requireSupports(mesh, specs, settings.dampers, "--damper", "damper", "damper support", "damping", parseDamper);
 }
 
 // The interfaces: node sets tied to reference nodes (RBE2, or averaging) in dofs.
@@ -377,6 +416,7 @@ ReducedBody CraigBamptonReducer::reduce(const std::vector<InterfaceSpec>& specs,
     Eigen::MatrixXd B, Mb, Kb;
     projectedBasis(Kr, Mr, Psi, Phi, X, B, Mb, Kb);
     orthonormalise(dofs, Kr, Mr, B, Mb, Kb, nb, settings.dampingRatio, body, rep.droppedDependent);
+    body.supportDamping = projectedSupportDamping(mesh_, body.shapes, settings.dampers);
     rep.orthonormaliseSeconds = t.lap();
     if (report) *report = rep;
     return body;

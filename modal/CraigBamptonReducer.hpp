@@ -9,7 +9,9 @@
 // Boundary DOFs are the 6 DOFs of a reference node per interface: a node set tied to it
 // rigidly (RBE2) or followed by it on average (RBE3). The basis is then orthonormalised: Mᵣ = I, Kᵣ = diag(ω²), rigid-body modes flagged.
 // One factorization of K_ii serves Ψ, the Lanczos iterations and X. Spring supports
-// (ReductionSettings::supports) add their surface stiffness to K before all of this.
+// (ReductionSettings::supports) add their surface stiffness to K before all of this; damper
+// supports (ReductionSettings::dampers) leave the reduction undamped and are projected on its
+// final basis, D_s = Φᵀ C_s Φ (ReducedBody::supportDamping).
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +38,15 @@ struct SupportSpec {
 /// Parses "GROUP:K" (K in N/m³, finite and > 0); errors name the option and the text.
 SupportSpec parseSupport(const std::string& text);
 
+/// A viscous support: dashpots of `damping` per unit area (N·s/m³) on a surface group.
+struct DamperSpec {
+    std::string group;
+    double damping = 0.0;
+};
+
+/// Parses "GROUP:C" (C in N·s/m³, finite and > 0); errors name the option and the text.
+DamperSpec parseDamper(const std::string& text);
+
 /// Wall-clock seconds of the steps, and the size of what was built.
 struct ReductionReport {
     double assembleSeconds = 0, factorSeconds = 0, constraintModeSeconds = 0, normalModeSeconds = 0,
@@ -51,7 +62,7 @@ public:
 
     /// Throws std::invalid_argument for unknown groups, empty or overlapping interfaces,
     /// more modes than interior DOFs, a pressure-pattern group listed twice or also an
-    /// interface, a support on an unknown, volume or interface group or listed twice;
+    /// interface, a support or damper on an unknown, volume or interface group or listed twice;
     /// std::runtime_error if the interfaces do not hold the body (K_ii singular:
     /// a disconnected part, or no interface).
     ReducedBody reduce(const std::vector<InterfaceSpec>& interfaces, const ReductionSettings& settings,

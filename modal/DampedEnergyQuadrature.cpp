@@ -19,8 +19,11 @@ DampedEnergy DampedEnergyQuadrature::overStep(const ModalPropagator& propagator,
         for (double x : rule->nodes) taus.push_back(x * dt);
     Eigen::MatrixXd q, v;
     propagator.responseWithin(y, w, fStart, fEnd, dt, taus, q, v);
-    const Eigen::VectorXd& c = propagator.damping();
-    const Eigen::RowVectorXd rate = c.transpose() * v.cwiseAbs2();  // q̇ᵀ C q̇ at each node (W)
+    Eigen::RowVectorXd rate;  // q̇ᵀ C q̇ at each node (W)
+    if (propagator.coupledDamping())
+        rate = v.cwiseProduct(propagator.dampingMatrix() * v).colwise().sum();
+    else
+        rate = propagator.damping().transpose() * v.cwiseAbs2();
     double coarse = 0.0, fine = 0.0;
     const auto mc = static_cast<Eigen::Index>(coarse_.nodes.size());
     for (Eigen::Index i = 0; i < mc; ++i) coarse += coarse_.weights[std::size_t(i)] * rate(i);

@@ -1,7 +1,8 @@
 #pragma once
 // DampedEnergyQuadrature: the energy a held reduced body's modal damping takes over a step,
 //
-//   D = ∫₀^Δt q̇ᵀ C q̇ dt   (C = ModalPropagator::damping(), the damping its equations carry),
+//   D = ∫₀^Δt q̇ᵀ C q̇ dt   (C = ModalPropagator::dampingMatrix(), the damping its equations carry:
+//                          modal damping and the damper supports' projected dashpots),
 //
 // by Gauss–Legendre quadrature (Abramowitz & Stegun 25.4.29) of the exact velocities within the
 // step (ModalPropagator::responseWithin, the piecewise-exact response of Nigam & Jennings 1969).

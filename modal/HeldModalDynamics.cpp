@@ -1,5 +1,6 @@
 #include "modal/HeldModalDynamics.hpp"
 
+#include "modal/ModalDamping.hpp"
 #include "modal/ModalSuperposition.hpp"
 
 #include <cmath>
@@ -9,10 +10,7 @@
 namespace flexehd::modal {
 
 HeldModalDynamics::HeldModalDynamics(const ReducedBody& body, const std::vector<int>& held)
-    : N_(heldBasis(body, held)), M_(body.massMatrix), C_(Eigen::MatrixXd::Zero(body.numModes(), body.numModes())) {
-    const Eigen::Index m = body.numModes();
-    for (Eigen::Index k = 0; k < m; ++k)
-        C_(k, k) = 2.0 * body.dampingRatios(k) * std::sqrt(std::max(body.stiffnessMatrix(k, k), 0.0));
+    : N_(heldBasis(body, held)), M_(body.massMatrix), C_(bodyDampingMatrix(body)) {  // diag(c) + D_s
     Mn_ = N_.transpose() * M_ * N_;
     Cn_ = N_.transpose() * C_ * N_;
     Kn_ = N_.transpose() * body.stiffnessMatrix * N_;

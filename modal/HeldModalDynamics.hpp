@@ -4,7 +4,8 @@
 // secondary motion's, not the modes'), integrated by BDF2 with the caller's step coefficients.
 //
 //   M_r q̈ + C_r q̇ + K_r q = f,   q = N r   (N = heldBasis: the held reference motions vanish),
-//   M_r = I, K_r = diag(ω²), C_r = diag(2 ζ ω)   (the reduced body's orthonormal basis, modal damping)
+//   M_r = I, K_r = diag(ω²), C_r = diag(2 ζ ω) + D_s   (the reduced body's orthonormal basis, modal
+//   damping and the damper supports' projected dashpots, modal::bodyDampingMatrix)
 //
 // BDF2 (variable step): q̇₊ = (a0 q₊ + hq)/Δt, q̈₊ = (a0 q̇₊ + hv)/Δt with the histories
 // hq = a1 qₙ + a2 qₙ₋₁, hv = a1 q̇ₙ + a2 q̇ₙ₋₁ — the same coefficients as the piston's secondary

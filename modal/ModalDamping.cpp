@@ -1,8 +1,10 @@
 #include "modal/ModalDamping.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace flexehd::modal {
 
@@ -31,6 +33,26 @@ void assignModalDamping(ReducedBody& body, double defaultRatio, std::vector<Damp
             }
         body.dampingRatios(k) = body.rigidBody[k] ? 0.0 : z;
     }
+}
+
+Eigen::VectorXd modalDampingCoefficients(const ReducedBody& body) {
+    const Eigen::Index m = body.numModes();
+    Eigen::VectorXd c(m);
+    for (Eigen::Index k = 0; k < m; ++k)
+        c(k) = 2.0 * body.dampingRatios(k) * std::sqrt(std::max(body.stiffnessMatrix(k, k), 0.0));
+    return c;
+}
+
+Eigen::MatrixXd bodyDampingMatrix(const ReducedBody& body) {
+    Eigen::MatrixXd C = modalDampingCoefficients(body).asDiagonal();
+    if (hasSupportDamping(body)) {
+        if (body.supportDamping.rows() != C.rows() || body.supportDamping.cols() != C.cols())
+            throw std::invalid_argument("reduced body: support damping is " + std::to_string(body.supportDamping.rows()) +
+                                        " x " + std::to_string(body.supportDamping.cols()) + " for " +
+                                        std::to_string(C.rows()) + " modes");
+        C += body.supportDamping;
+    }
+    return C;
 }
 
 }  // namespace flexehd::modal

@@ -21,4 +21,16 @@ DampingBand parseDampingBand(const std::string& text);
 /// rigid-body modes.
 void assignModalDamping(ReducedBody& body, double defaultRatio, std::vector<DampingBand> bands);
 
+/// The modal dashpots c_k = 2 ζ_k √K_kk (N·s/m per unit modal coordinate) of the body's ratios.
+Eigen::VectorXd modalDampingCoefficients(const ReducedBody& body);
+
+/// Whether the body carries projected damper supports (a non-empty ReducedBody::supportDamping).
+inline bool hasSupportDamping(const ReducedBody& body) { return body.supportDamping.size() > 0; }
+
+/// The body's damping matrix in its modal coordinates, C = diag(c_k) + D_s (m x m, N·s/m):
+/// modal damping plus the damper supports' projected dashpots, which couple the modes
+/// (non-proportional, "non-classical" damping of the projected equations; Craig & Kurdila,
+/// *Fundamentals of Structural Dynamics*, 2nd ed., Wiley 2006, on damped MDOF systems).
+Eigen::MatrixXd bodyDampingMatrix(const ReducedBody& body);
+
 }  // namespace flexehd::modal

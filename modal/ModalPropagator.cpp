@@ -1,5 +1,6 @@
 #include "modal/ModalPropagator.hpp"
 
+#include "modal/ModalDamping.hpp"
 #include "modal/ModalSuperposition.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -51,9 +52,9 @@ ModalPropagator::ModalPropagator(const ReducedBody& body, const std::vector<int>
     const Eigen::Index m = body.numModes(), n = N.cols();
     if (n > 0) (void)heldStiffness(body, N);  // throws if the held body can move rigidly
     Eigen::VectorXd& c = damping_;
-    c.resize(m);
-    for (Eigen::Index k = 0; k < m; ++k)
-        c(k) = 2.0 * body.dampingRatios(k) * std::sqrt(std::max(body.stiffnessMatrix(k, k), 0.0));
+    c = modalDampingCoefficients(body);
+    coupled_ = hasSupportDamping(body);
+    dampingMatrix_ = bodyDampingMatrix(body);
     if (n == 0) {  // the held interfaces fix every mode: no response
         inQ_ = inV_ = inF_ = Eigen::MatrixXcd::Zero(0, m);
         outQ_ = outV_ = Eigen::MatrixXcd::Zero(m, 0);
@@ -71,7 +72,10 @@ ModalPropagator::ModalPropagator(const ReducedBody& body, const std::vector<int>
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n) = omega.asDiagonal();
     A.bottomLeftCorner(n, n) = -omega.asDiagonal().toDenseMatrix();
-    A.bottomRightCorner(n, n) = -(Psi.transpose() * N.transpose() * c.asDiagonal() * N * Psi);
+    if (coupled_)  // the damper supports couple the modes: the full C = diag(c) + D_s
+        A.bottomRightCorner(n, n) = -(Psi.transpose() * N.transpose() * dampingMatrix_ * N * Psi);
+    else
+        A.bottomRightCorner(n, n) = -(Psi.transpose() * N.transpose() * c.asDiagonal() * N * Psi);
     const Eigen::EigenSolver<Eigen::MatrixXd> eig(A);
     if (eig.info() != Eigen::Success)
         throw std::runtime_error("modal propagator: the damped modes could not be computed");

@@ -57,15 +57,22 @@ public:
                     const Eigen::VectorXd& fEnd, double dt, const Eigen::VectorXd& yEnd) const;
     /// The damped modes' eigenvalues λ (1/s; ω_d = Im λ, ζω = −Re λ).
     const Eigen::VectorXcd& eigenvalues() const { return lambda_; }
-    /// The modal damping the equations carry, C = diag(c) in the body's modal coordinates q with
-    /// c_k = 2 ζ_k √K_kk (N·s/m per unit modal coordinate); the damping block of A is Ψᵀ Nᵀ C N Ψ, and
-    /// the rate at which it takes energy is q̇ᵀ C q̇ (W).
+    /// The modal dashpots c_k = 2 ζ_k √K_kk (N·s/m per unit modal coordinate), the diagonal part
+    /// diag(c) of the damping the equations carry.
     const Eigen::VectorXd& damping() const { return damping_; }
+    /// The damping the equations carry in the body's modal coordinates q, C = diag(c) + D_s with
+    /// D_s the damper supports' projected dashpots (ReducedBody::supportDamping; none: C = diag(c));
+    /// the damping block of A is Ψᵀ Nᵀ C N Ψ, and the rate at which it takes energy is q̇ᵀ C q̇ (W).
+    const Eigen::MatrixXd& dampingMatrix() const { return dampingMatrix_; }
+    /// Whether C has the damper supports' coupling (is not diagonal).
+    bool coupledDamping() const { return coupled_; }
 
 private:
     Eigen::VectorXcd startModes(const Eigen::VectorXd& y, const Eigen::VectorXd& w) const;
 
-    Eigen::VectorXd damping_;                 // c (m), C = diag(c)
+    Eigen::VectorXd damping_;                 // c (m)
+    Eigen::MatrixXd dampingMatrix_;           // C = diag(c) + D_s (m × m)
+    bool coupled_ = false;                    // D_s present
     Eigen::VectorXcd lambda_;                 // 2n_f eigenvalues of A
     Eigen::MatrixXcd inQ_, inV_, inF_;        // z = inQ q + inV q̇;  V⁻¹B (2n_f × m)
     Eigen::MatrixXcd outQ_, outV_;            // q = Re(outQ z), q̇ = Re(outV z)  (m × 2n_f)

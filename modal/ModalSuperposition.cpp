@@ -82,6 +82,9 @@ Eigen::MatrixXd ModalSuperposition::compliance(const std::vector<int>& held) con
 
 ModalDynamics::ModalDynamics(const ReducedBody& body, double dt) : dt_(dt) {
     if (!(dt > 0.0)) throw std::invalid_argument("modal dynamics: time step must be > 0 s");
+    if (body.supportDamping.size() > 0)
+        throw std::invalid_argument("modal dynamics: the body's damper supports couple its modes, which this "
+                                    "mode-by-mode integration cannot carry; use HeldModalDynamics or ModalPropagator");
     const Eigen::Index m = body.numModes();
     omega2_ = body.stiffnessMatrix.diagonal();
     c_.resize(m);

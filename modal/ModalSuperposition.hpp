@@ -45,7 +45,9 @@ private:
 
 /// Dynamic modal response M_r q̈ + C_r q̇ + K_r q = Φᵀ f with M_r = I, K_r = diag(ω²),
 /// C_r = diag(2ζω): each mode integrated by the implicit trapezoidal (Newmark average
-/// acceleration) rule, unconditionally stable and energy-conserving without damping.
+/// acceleration) rule, unconditionally stable and energy-conserving without damping. Modal
+/// damping only: throws std::invalid_argument for a body with damper supports
+/// (ReducedBody::supportDamping), whose coupling a mode-by-mode rule cannot carry.
 class ModalDynamics {
 public:
     ModalDynamics(const ReducedBody& body, double timeStep);

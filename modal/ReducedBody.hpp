@@ -31,8 +31,11 @@ struct ReductionSettings {
     std::vector<std::string> staticCorrection;  ///< surfaces with residual attachment modes
     std::vector<std::string> pressurePatterns;  ///< surfaces with one uniform-pressure static-correction vector each
     /// Elastic (Winkler) supports "GROUP:K", K in N/m³: springs on the surface group added to K
-    /// before the reduction (docs/modal.md, "Spring supports").
+    /// before the reduction (docs/modal.md, "Spring and damper supports").
     std::vector<std::string> supports;
+    /// Viscous supports "GROUP:C", C in N·s/m³: dashpots on the surface group, projected on the
+    /// (undamped) basis into ReducedBody::supportDamping (docs/modal.md, "Spring and damper supports").
+    std::vector<std::string> dampers;
     int axialOrder = 0;            ///< load patterns: Legendre degree 0..axialOrder along z
     int axialHats = 0;             ///< if > 0: this many piecewise-linear hats along z instead
     int circumferentialOrder = 0;  ///< and Fourier orders 0..circumferentialOrder in θ
@@ -58,6 +61,10 @@ struct ReducedBody {
     Eigen::VectorXd frequenciesHz;    ///< m, ascending
     std::vector<int> rigidBody;       ///< m flags: 1 = rigid-body mode (ω ≈ 0)
     Eigen::VectorXd dampingRatios;    ///< m, modal damping ratio ζ (0 for rigid-body modes)
+    /// m x m, N·s/m: the damper supports' dashpots projected on the basis, D_s = Φᵀ C_s Φ
+    /// (symmetric, not diagonal); empty (0 x 0) without dampers. The body's damping matrix is
+    /// diag(2 ζ_k √K_kk) + D_s (modal::bodyDampingMatrix).
+    Eigen::MatrixXd supportDamping;
     /// Motion of each interface's reference node per unit modal coordinate:
     /// rows 6i..6i+5 = (u_x, u_y, u_z, θ_x, θ_y, θ_z) of interface i, m and rad.
     Eigen::MatrixXd interfaceMotion;

@@ -57,6 +57,30 @@ std::optional<std::string> stiffnessDefect(const Eigen::MatrixXd& k) {
     return std::nullopt;
 }
 
+// The damper supports' projected dashpots: symmetric and positive semi-definite (dashpots take
+// energy, never give it), present exactly when /settings lists dampers.
+std::optional<std::string> supportDampingDefect(const ReducedBody& b) {
+    const Eigen::MatrixXd& d = b.supportDamping;
+    if (d.size() == 0) {
+        if (!b.settings.dampers.empty())
+            return fmt::format("attribute 'dampers' of /settings lists {} damper(s) but dataset /modes/support_damping "
+                               "is missing",
+                               b.settings.dampers.size());
+        return std::nullopt;
+    }
+    if (b.settings.dampers.empty())
+        return std::string("dataset /modes/support_damping is present but attribute 'dampers' of /settings lists none");
+    if (auto e = nonFinite("/modes/support_damping", d, false)) return e;
+    if (auto e = notSymmetric("/modes/support_damping", d)) return e;
+    const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d, Eigen::EigenvaluesOnly).eigenvalues();
+    const double scale = lambda.cwiseAbs().maxCoeff();
+    if (lambda.minCoeff() < -1e-8 * scale)
+        return fmt::format("dataset /modes/support_damping has a negative eigenvalue ({:.3g} N s/m, largest {:.3g} "
+                           "N s/m): dashpots cannot release energy",
+                           lambda.minCoeff(), scale);
+    return std::nullopt;
+}
+
 std::optional<std::string> materialDefect(const fem::ElasticMaterial& m) {
     if (!std::isfinite(m.E) || !(m.E > 0.0))
         return fmt::format("attribute 'E_pa' of /material is {}, expected a Young's modulus > 0 Pa", m.E);
@@ -91,6 +115,7 @@ std::optional<std::string> reducedBodyDefect(const ReducedBody& b) {
         if (b.dampingRatios[k] < 0.0)
             return fmt::format("dataset /modes/damping_ratio has {} at [{}], expected a ratio >= 0", b.dampingRatios[k], k);
     if (auto d = massDefect(b.massMatrix)) return d;
+    if (auto d = supportDampingDefect(b)) return d;
     return stiffnessDefect(b.stiffnessMatrix);
 }
 

@@ -281,6 +281,7 @@ ReducedBody readContent(const Reader& r) {
     s.staticCorrection = r.stringsAttr("/settings", "static_correction");
     s.pressurePatterns = r.optionalStringsAttr("/settings", "pressure_patterns");
     s.supports = r.optionalStringsAttr("/settings", "supports");
+    s.dampers = r.optionalStringsAttr("/settings", "dampers");
     s.axialOrder = int(r.intAttr("/settings", "axial_order"));
     s.axialHats = int(r.intAttr("/settings", "axial_hats"));
     s.circumferentialOrder = int(r.intAttr("/settings", "circumferential_order"));
@@ -327,6 +328,8 @@ ReducedBody readContent(const Reader& r) {
     b.dampingRatios = Eigen::Map<const Eigen::VectorXd>(zeta.data(), Eigen::Index(m));
     b.interfaceMotion =
         r.readMatrix("/modes/interface_motion", 6 * b.interfaces.size(), m, "6 x interfaces, modes");
+    // Added after version 1 (docs/reduced-body-format.md, "Versioning"): older files have no dampers.
+    if (r.has("/modes/support_damping")) b.supportDamping = r.readMatrix("/modes/support_damping", m, m, "modes x modes");
     if (const auto defect = reducedBodyDefect(b)) r.fail(*defect);
     return b;
 }

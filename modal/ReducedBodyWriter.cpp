@@ -125,6 +125,11 @@ void checkConsistent(const ReducedBody& b) {
         fail("frequencies, damping ratios and rigid-body flags need one entry per mode (" + std::to_string(m) + ")");
     for (int flag : b.rigidBody)
         if (flag != 0 && flag != 1) fail("rigid-body flags must be 0 or 1");
+    if (b.supportDamping.size() > 0 && (b.supportDamping.rows() != m || b.supportDamping.cols() != m))
+        fail("support damping matrix is " + size(b.supportDamping.rows(), b.supportDamping.cols()) + " for " +
+             std::to_string(m) + " modes");
+    if ((b.supportDamping.size() > 0) != !b.settings.dampers.empty())
+        fail("support damping matrix and damper settings must come together");
     const auto ni = Eigen::Index(b.interfaces.size());
     if (b.interfaceMotion.rows() != 6 * ni || b.interfaceMotion.cols() != m)
         fail("interface motion is " + size(b.interfaceMotion.rows(), b.interfaceMotion.cols()) + ", expected " +
@@ -171,6 +176,7 @@ void writeContent(const ReducedBody& b, const Writer& w) {
     w.stringsAttribute("/settings", "static_correction", s.staticCorrection);
     w.stringsAttribute("/settings", "pressure_patterns", s.pressurePatterns);
     w.stringsAttribute("/settings", "supports", s.supports);
+    w.stringsAttribute("/settings", "dampers", s.dampers);
     w.intAttribute("/settings", "axial_order", s.axialOrder);
     w.intAttribute("/settings", "axial_hats", s.axialHats);
     w.intAttribute("/settings", "circumferential_order", s.circumferentialOrder);
@@ -218,6 +224,8 @@ void writeContent(const ReducedBody& b, const Writer& w) {
     w.dataset("/modes/rigid_body", rigid.data(), {m});
     w.dataset("/modes/damping_ratio", b.dampingRatios.data(), {m}, "1");
     w.matrix("/modes/interface_motion", b.interfaceMotion, "m and rad per unit modal coordinate");
+    // Optional: only a body with damper supports has it (docs/reduced-body-format.md).
+    if (b.supportDamping.size() > 0) w.matrix("/modes/support_damping", b.supportDamping, "N s/m");
 }
 
 

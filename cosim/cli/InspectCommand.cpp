@@ -75,6 +75,7 @@ nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
                        {"static_correction", s.staticCorrection},
                        {"pressure_patterns", s.pressurePatterns},
                        {"supports", s.supports},
+                       {"dampers", s.dampers},
                        {"axial_order", s.axialOrder},
                        {"axial_hats", s.axialHats},
                        {"circumferential_order", s.circumferentialOrder},
@@ -84,6 +85,8 @@ nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
     doc["frequencies_hz"] = toVector(b.frequenciesHz);
     doc["damping_ratios"] = toVector(b.dampingRatios);
     doc["rigid_body"] = b.rigidBody;
+    // The damper supports' projected dashpots D_s (N s/m): its diagonal, one per mode; empty without dampers.
+    doc["support_damping_diagonal"] = toVector(Eigen::VectorXd(b.supportDamping.diagonal()));
     doc["mass_identity_error"] = massIdentityError(b);
     doc["held_frequencies_hz"] = b.interfaces.empty() ? std::vector<double>() : toVector(heldFrequencies(b));
     return doc;
@@ -150,6 +153,9 @@ void printSummary(const std::string& file, const modal::ReducedBody& b) {
                s.dampingRatio);
     fmt::print("load patterns  {}\n", loadPatternsText(b));
     if (!s.supports.empty()) fmt::print("supports     {} (GROUP:K, N/m^3)\n", fmt::join(s.supports, ", "));
+    if (!s.dampers.empty())
+        fmt::print("dampers      {} (GROUP:C, N*s/m^3), projected on the modes: largest |D_s| {:.4g} N*s/m\n",
+                   fmt::join(s.dampers, ", "), b.supportDamping.size() > 0 ? b.supportDamping.cwiseAbs().maxCoeff() : 0.0);
     const auto rigid = std::count(b.rigidBody.begin(), b.rigidBody.end(), 1);
     fmt::print("modes        {} ({} rigid-body), max |M_r - I| = {:.2g}\n", b.numModes(), rigid, massIdentityError(b));
     if (!b.interfaces.empty()) printHeldFrequencies(heldFrequencies(b));

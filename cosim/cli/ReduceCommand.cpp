@@ -60,6 +60,7 @@ void runReduce(const ReduceArgs& a) {
     for (const auto& s : a.interfaces) specs.push_back(modal::parseInterface(s));
     for (const auto& b : a.dampingBands) modal::parseDampingBand(b);  // fail before the long work
     for (const auto& s : a.settings.supports) modal::parseSupport(s);
+    for (const auto& s : a.settings.dampers) modal::parseDamper(s);
     prepareOutputFile(a.out);
     spdlog::info("reading mesh {}", a.mesh.path);
     fem::MeshOptions options = a.mesh.options;
@@ -76,9 +77,12 @@ void runReduce(const ReduceArgs& a) {
     const auto& supports = a.settings.supports;
     const std::string supportText =
         supports.empty() ? "" : fmt::format(", spring support on {} [N/m^3]", fmt::join(supports, ", "));
-    spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s){}{}", specs.size(),
-                 a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "",
-                 a.settings.staticCorrection.size(), uniformText, supportText);
+    const auto& dampers = a.settings.dampers;
+    const std::string damperText =
+        dampers.empty() ? "" : fmt::format(", damper support on {} [N*s/m^3]", fmt::join(dampers, ", "));
+    spdlog::info("reducing: {} interface(s), {} normal modes{}, static correction on {} surface(s){}{}{}",
+                 specs.size(), a.settings.normalModes, a.settings.cutoffHz > 0 ? " (cut-off)" : "",
+                 a.settings.staticCorrection.size(), uniformText, supportText, damperText);
     modal::ReductionReport rep;
     modal::ReducedBody body = modal::CraigBamptonReducer(mesh, a.material).reduce(specs, a.settings, &rep);
     if (!a.dampingBands.empty()) {
@@ -112,6 +116,7 @@ void runReduce(const ReduceArgs& a) {
                         {"dropped_dependent", rep.droppedDependent}};
         doc["pressure_patterns"] = uniform;
         doc["supports"] = supports;
+        doc["dampers"] = dampers;
         doc["rigid_body_modes"] = rigid;
         doc["frequencies_hz"] = std::vector<double>(body.frequenciesHz.data(),
                                                     body.frequenciesHz.data() + body.frequenciesHz.size());
@@ -164,6 +169,11 @@ void addReduceCommand(CLI::App& app) {
                     "Elastic (Winkler) support GROUP:K: springs of stiffness K per unit area [N/m^3] on the surface "
                     "group, in all three directions, added to the stiffness before the reduction; repeatable")
         ->type_name("GROUP:K");
+    cmd->add_option("--damper", a->settings.dampers,
+                    "Viscous support GROUP:C: dashpots of C per unit area [N*s/m^3] on the surface group, in all "
+                    "three directions, projected on the (undamped) modes and stored with the body; a group may also "
+                    "have a --support; repeatable")
+        ->type_name("GROUP:C");
     cmd->add_option("--axial-order", a->settings.axialOrder, "Load patterns: Legendre degree along z")
         ->check(wholeNumberFromTo(0, 20));
     cmd->add_option("--axial-hats", a->settings.axialHats,

@@ -69,7 +69,7 @@ TEST(CliReduce, VolumeInterfaceAndUnphysicalMaterialAreRefusedWhereTheyEnter) {
     EXPECT_FALSE(std::filesystem::exists("/tmp/x.h5"));
 }
 
-// `--support GROUP:K`: Winkler springs on the beam's tip (docs/modal.md, "Spring supports"). The
+// `--support GROUP:K`: Winkler springs on the beam's tip (docs/modal.md, "Spring and damper supports"). The
 // file records the option's text; the held body is stiffer than the plain cantilever.
 TEST(CliReduce, SpringSupportIsRecordedAndStiffensTheHeldBody) {
     const auto dir = flexehd::test::scratchDir();
@@ -103,6 +103,59 @@ TEST(CliReduce, BadSupportsAreRefusedNamingTheOption) {
         {"tip:inf", "--support 'tip:inf': K must be finite and > 0 N/m^3"},
         {"top:1e9", "--support 'top:1e9': mesh '"},
         {"clamped:1e9", "--support 'clamped:1e9': group 'clamped' is also an interface"},
+    };
+    for (const auto& c : cases) {
+        const auto r = runFlexehd(base + c.arg);
+        EXPECT_EQ(r.status, 1) << c.arg;
+        EXPECT_THAT(r.err, HasSubstr(c.message)) << c.arg;
+    }
+    EXPECT_FALSE(std::filesystem::exists("/tmp/x.h5"));
+}
+
+// `--damper GROUP:C`: dashpots on the beam's tip, with springs on the same group (docs/modal.md,
+// "Spring and damper supports"). The modes are those of the springs alone (the reduction stays
+// undamped); the file carries D_s = Φᵀ C_s Φ, which `inspect` and `reduce --json` list.
+TEST(CliReduce, DamperSupportIsProjectedOnTheModesAndListed) {
+    const auto dir = flexehd::test::scratchDir();
+    const std::string base = "reduce --mesh " + dataPath("beam.geo") +
+                             " --E 2.1e11 --nu 0.3 --rho 7850 --interface clamped:rbe2 --modes 6 --size 0.02 --json"
+                             " --support tip:1e10";
+    const std::string springs = (dir / "springs.h5").string(), damped = (dir / "damped.h5").string();
+    const auto a = runFlexehd(base + " --out " + springs);
+    ASSERT_EQ(a.status, 0) << a.err;
+    const auto b = runFlexehd(base + " --damper tip:1e5 --out " + damped);
+    ASSERT_EQ(b.status, 0) << b.err;
+    EXPECT_EQ(nlohmann::json::parse(b.out).at("dampers"), nlohmann::json({"tip:1e5"}));
+    EXPECT_EQ(nlohmann::json::parse(a.out).at("dampers"), nlohmann::json::array());
+    const modal::ReducedBody s = modal::readReducedBody(springs), d = modal::readReducedBody(damped);
+    EXPECT_TRUE(s.settings.dampers.empty());
+    EXPECT_EQ(s.supportDamping.size(), 0);
+    EXPECT_EQ(d.settings.dampers, std::vector<std::string>{"tip:1e5"});
+    ASSERT_EQ(d.supportDamping.rows(), d.numModes());
+    EXPECT_EQ(d.frequenciesHz, s.frequenciesHz);  // the same undamped reduction
+    EXPECT_GT(d.supportDamping.diagonal().maxCoeff(), 0.0);
+    const auto inspect = runFlexehd("inspect " + damped);
+    ASSERT_EQ(inspect.status, 0) << inspect.err;
+    EXPECT_THAT(inspect.out, HasSubstr("dampers      tip:1e5 (GROUP:C, N*s/m^3)"));
+    const auto json = runFlexehd("inspect --json " + damped);
+    ASSERT_EQ(json.status, 0) << json.err;
+    EXPECT_EQ(nlohmann::json::parse(json.out).at("settings").at("dampers"), nlohmann::json({"tip:1e5"}));
+}
+
+TEST(CliReduce, BadDampersAreRefusedNamingTheOption) {
+    const std::string base = "reduce --mesh " + dataPath("beam.geo") +
+                             " --E 2.1e11 --nu 0.3 --rho 7850 --interface clamped:rbe2 --out /tmp/x.h5 --damper ";
+    const struct {
+        std::string arg, message;
+    } cases[] = {
+        {"tip", "--damper 'tip': expected GROUP:C with C in N*s/m^3"},
+        {"tip:soft", "--damper 'tip:soft': C must be a number in N*s/m^3"},
+        {"tip:0", "--damper 'tip:0': C must be finite and > 0 N*s/m^3"},
+        {"tip:-1e5", "--damper 'tip:-1e5': C must be finite and > 0 N*s/m^3"},
+        {"tip:nan", "--damper 'tip:nan': C must be finite and > 0 N*s/m^3"},
+        {"top:1e5", "--damper 'top:1e5': mesh '"},
+        {"clamped:1e5", "--damper 'clamped:1e5': group 'clamped' is also an interface"},
+        {"tip:1e5 --damper tip:2e5", "--damper 'tip:2e5': group 'tip' has a damper already"},
     };
     for (const auto& c : cases) {
         const auto r = runFlexehd(base + c.arg);
