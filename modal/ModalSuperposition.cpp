@@ -1,5 +1,6 @@
 #include "modal/ModalSuperposition.hpp"
 
+#include <algorithm>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -61,6 +62,17 @@ Eigen::VectorXd heldFrequenciesHz(const ReducedBody& body, const std::vector<int
                                                                         Eigen::EigenvaluesOnly);
     if (eig.info() != Eigen::Success) throw std::runtime_error("the held body's frequencies could not be computed");
     return eig.eigenvalues().cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
+}
+
+double normalModesUpToHz(const ReducedBody& body) {
+    const ReductionSettings& s = body.settings;
+    if (s.cutoffHz > 0.0) return s.cutoffHz;
+    if (s.normalModes <= 0) return 0.0;
+    std::vector<int> all(body.interfaces.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    const Eigen::VectorXd f = all.empty() ? body.frequenciesHz : heldFrequenciesHz(body, all);
+    if (f.size() == 0) return 0.0;
+    return f(std::min<Eigen::Index>(s.normalModes, f.size()) - 1);
 }
 
 Eigen::VectorXd ModalSuperposition::quasiStatic(const Eigen::VectorXd& g, const std::vector<int>& held) const {

@@ -21,6 +21,13 @@ Eigen::LDLT<Eigen::MatrixXd> heldStiffness(const ReducedBody& body, const Eigen:
 /// at rest: the eigenvalues of (Nᵀ K_r N, Nᵀ M_r N) — what the body vibrates at in a run that
 /// holds them. Throws std::runtime_error if the held body can still move rigidly.
 Eigen::VectorXd heldFrequenciesHz(const ReducedBody& body, const std::vector<int>& held);
+/// The frequency (Hz) up to which the body's basis holds every fixed-interface normal mode: the
+/// reduction's cut-off (`--cutoff`) where it had one, else the highest fixed-interface normal mode
+/// it kept (`--modes N`): the N-th frequency with every interface held, as those modes are exact
+/// eigenvectors of the held body and so its lowest Ritz values (docs/modal.md, "Command line"); without
+/// interfaces the N-th of the body's own frequencies; 0 without normal modes. Above it the basis
+/// misses modes, so a vibration record is refused beyond it.
+double normalModesUpToHz(const ReducedBody& body);
 
 class ModalSuperposition {
 public:

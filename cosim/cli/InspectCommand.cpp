@@ -89,6 +89,7 @@ nlohmann::json toJson(const std::string& file, const modal::ReducedBody& b) {
     doc["support_damping_diagonal"] = toVector(Eigen::VectorXd(b.supportDamping.diagonal()));
     doc["mass_identity_error"] = massIdentityError(b);
     doc["held_frequencies_hz"] = b.interfaces.empty() ? std::vector<double>() : toVector(heldFrequencies(b));
+    doc["normal_modes_up_to_hz"] = modal::normalModesUpToHz(b);
     return doc;
 }
 
@@ -99,6 +100,17 @@ void printHeldFrequencies(const Eigen::VectorXd& held) {
     for (Eigen::Index k = 0; k < std::min<Eigen::Index>(6, held.size()); ++k) first.push_back(fmt::format("{:.6g}", held(k)));
     fmt::print("held         every interface held: {} modes, {:.6g} to {:.6g} Hz, the first {}{} Hz\n", held.size(),
                held(0), held(held.size() - 1), fmt::join(first, ", "), held.size() > 6 ? ", …" : "");
+}
+
+// "covered      every fixed-interface normal mode up to 8902.6 Hz (--modes 30): the range a
+// vibration record (acoustics.up_to_hz) may ask for" (docs/modal.md, "Command line").
+void printCoveredRange(const modal::ReducedBody& b) {
+    const auto& s = b.settings;
+    const std::string how = s.cutoffHz > 0.0 ? fmt::format("--cutoff {:g}", s.cutoffHz)
+                                             : fmt::format("--modes {}", s.normalModes);
+    fmt::print("covered      every fixed-interface normal mode up to {:.6g} Hz ({}): the range a vibration record "
+               "(acoustics.up_to_hz) may ask for\n",
+               modal::normalModesUpToHz(b), how);
 }
 
 std::string listOrNone(const std::vector<std::string>& names) {
@@ -159,6 +171,7 @@ void printSummary(const std::string& file, const modal::ReducedBody& b) {
     const auto rigid = std::count(b.rigidBody.begin(), b.rigidBody.end(), 1);
     fmt::print("modes        {} ({} rigid-body), max |M_r - I| = {:.2g}\n", b.numModes(), rigid, massIdentityError(b));
     if (!b.interfaces.empty()) printHeldFrequencies(heldFrequencies(b));
+    printCoveredRange(b);
     fmt::print("{:>6}  {:>16}  {:>13}\n", "mode", "frequency [Hz]", "damping ratio");
     for (int k = 0; k < b.numModes(); ++k)
         fmt::print("{:>6}  {:>16.6g}  {:>13.4g}{}\n", k + 1, b.frequenciesHz(k), b.dampingRatios(k),

@@ -15,6 +15,7 @@
 #include "fem/MeshReader.hpp"
 #include "modal/CraigBamptonReducer.hpp"
 #include "modal/ModalDamping.hpp"
+#include "modal/ModalSuperposition.hpp"
 #include "modal/ReducedBodyFile.hpp"
 
 namespace flexehd::cli {
@@ -118,6 +119,7 @@ void runReduce(const ReduceArgs& a) {
         doc["supports"] = supports;
         doc["dampers"] = dampers;
         doc["rigid_body_modes"] = rigid;
+        doc["normal_modes_up_to_hz"] = modal::normalModesUpToHz(body);
         doc["frequencies_hz"] = std::vector<double>(body.frequenciesHz.data(),
                                                     body.frequenciesHz.data() + body.frequenciesHz.size());
         doc["timings_s"] = {{"assemble", rep.assembleSeconds},
@@ -135,6 +137,9 @@ void runReduce(const ReduceArgs& a) {
     std::printf("%s -> %s: %d modes (%d constraint, %d normal, %d static correction%s), %d rigid-body\n",
                 a.mesh.path.c_str(), a.out.c_str(), body.numModes(), rep.constraintModes, rep.normalModes,
                 rep.staticCorrectionModes, uniformText.c_str(), rigid);
+    if (!supports.empty()) fmt::print("spring supports {} [N/m^3]\n", fmt::join(supports, ", "));
+    if (!dampers.empty()) fmt::print("damper supports {} [N*s/m^3]\n", fmt::join(dampers, ", "));
+    std::printf("covers every fixed-interface normal mode up to %.6g Hz\n", modal::normalModesUpToHz(body));
     std::printf("%6s  %16s\n", "mode", "frequency [Hz]");
     for (int k = 0; k < body.numModes(); ++k)
         std::printf("%6d  %16.6g%s\n", k + 1, body.frequenciesHz(k), body.rigidBody[k] ? "  (rigid-body)" : "");

@@ -31,6 +31,17 @@ SurfaceVelocityRecorder::SurfaceVelocityRecorder(const EngineCase& c, const moda
         throw std::invalid_argument(fmt::format("acoustics.surface: the liner's mesh ({}) has no surface group '{}' "
                                                 "(its groups: {})",
                                                 liner.meshPath, spec_.surface, liner.mesh.groupNames()));
+    // Above the highest fixed-interface normal mode the basis misses modes: the record would show
+    // a response the body cannot have (docs/acoustics.md §8).
+    if (const double covered = modal::normalModesUpToHz(liner); spec_.upToHz > covered)
+        throw std::invalid_argument(fmt::format(
+            "acoustics.up_to_hz: {:g} Hz is above the liner's normal modes: its reduced body {} keeps the "
+            "fixed-interface normal modes up to {:.6g} Hz ({}). Reduce the liner again with `flexehd reduce "
+            "--cutoff {:g}` (every normal mode below that frequency), or set up_to_hz to at most {:.6g} Hz",
+            spec_.upToHz, c.linerBody.file.empty() ? liner.meshPath : c.linerBody.file, covered,
+            liner.settings.cutoffHz > 0.0 ? fmt::format("reduced with --cutoff {:g}", liner.settings.cutoffHz)
+                                          : fmt::format("reduced with --modes {}", liner.settings.normalModes),
+            spec_.upToHz, covered));
     surfaceShapes(liner);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -140,6 +141,28 @@ TEST(CliReduce, DamperSupportIsProjectedOnTheModesAndListed) {
     const auto json = runFlexehd("inspect --json " + damped);
     ASSERT_EQ(json.status, 0) << json.err;
     EXPECT_EQ(nlohmann::json::parse(json.out).at("settings").at("dampers"), nlohmann::json({"tip:1e5"}));
+}
+
+// The text summary lists the supports and the range the modes cover, the 6th held frequency with
+// --modes 6 (modal::normalModesUpToHz; against the full model in test_craig_bampton.cpp), and
+// `inspect` prints and writes the same range.
+TEST(CliReduce, TheSummaryListsTheSupportsAndTheRangeTheModesCover) {
+    const auto dir = flexehd::test::scratchDir();
+    const std::string file = (dir / "beam.h5").string();
+    const auto r = runFlexehd("reduce --mesh " + dataPath("beam.geo") +
+                              " --E 2.1e11 --nu 0.3 --rho 7850 --interface clamped:rbe2 --modes 6 --size 0.02"
+                              " --support tip:1e10 --damper tip:1e5 --out " + file);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("spring supports tip:1e10 [N/m^3]"));
+    EXPECT_THAT(r.out, HasSubstr("damper supports tip:1e5 [N*s/m^3]"));
+    const double sixth = modal::heldFrequenciesHz(modal::readReducedBody(file), {0})(5);
+    EXPECT_THAT(r.out, HasSubstr(fmt::format("covers every fixed-interface normal mode up to {:.6g} Hz", sixth)));
+    const auto inspect = runFlexehd("inspect " + file);
+    ASSERT_EQ(inspect.status, 0) << inspect.err;
+    EXPECT_THAT(inspect.out, HasSubstr(fmt::format("every fixed-interface normal mode up to {:.6g} Hz (--modes 6)", sixth)));
+    const auto json = runFlexehd("inspect --json " + file);
+    ASSERT_EQ(json.status, 0) << json.err;
+    EXPECT_DOUBLE_EQ(nlohmann::json::parse(json.out).at("normal_modes_up_to_hz").get<double>(), sixth);
 }
 
 TEST(CliReduce, BadDampersAreRefusedNamingTheOption) {

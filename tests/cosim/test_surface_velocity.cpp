@@ -66,6 +66,8 @@ modal::ReducedBody translatingSleeve() {
     b.dampingRatios = kZeta;
     b.frequenciesHz = kOmega / (2.0 * std::numbers::pi);
     b.rigidBody.assign(3, 0);
+    // Its three modes are all it has: it covers every range (a cut-off above any asked).
+    b.settings.cutoffHz = 1e6;
     return b;
 }
 
@@ -102,6 +104,27 @@ std::vector<double> readDoubles(hid_t file, const std::string& name, std::vector
 }
 
 }  // namespace
+
+// A basis of the sleeve's first two modes (as `reduce --modes 2` keeps them) covers 600 Hz, its
+// second frequency: a record up to 2000 Hz is refused with the frequency, the file and the
+// `reduce --cutoff` that covers it; up to 600 Hz it is taken.
+TEST(SurfaceVelocity, ARangeAboveTheLinersNormalModesIsRefused) {
+    modal::ReducedBody sleeve = translatingSleeve();
+    sleeve.settings.cutoffHz = 0.0;
+    sleeve.settings.normalModes = 2;
+    EngineCase c = acousticCase(2000.0);
+    c.linerBody.file = "/cases/sleeve.h5";
+    try {
+        SurfaceVelocityRecorder(c, sleeve, {}, 0, "unused.h5");
+        ADD_FAILURE() << "a range above the normal modes was accepted";
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        for (const char* part : {"acoustics.up_to_hz", "2000 Hz", "/cases/sleeve.h5", "up to 600 Hz", "--modes 2",
+                                 "--cutoff 2000", "at most 600 Hz"})
+            EXPECT_NE(what.find(part), std::string::npos) << part << " in: " << what;
+    }
+    EXPECT_NO_THROW(SurfaceVelocityRecorder(acousticCase(600.0), sleeve, {}, 0, "unused.h5"));
+}
 
 TEST(SurfaceVelocity, TheSleevesOuterPointsCarryItsAreaAndRadialNormals) {
     const modal::ReducedBody sleeve = translatingSleeve();

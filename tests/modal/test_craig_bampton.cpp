@@ -128,7 +128,7 @@ TEST(CraigBampton, HeldLinerFrequenciesAreTheFullModelsWithTheSeatsFixed) {
     for (const char* g : {"top_seat", "bottom_seat"}) dofs.constrain(m.groupNodes(g), fem::kAllComponents);
     dofs.finalize();
     fem::EigenmodeOptions opt;
-    opt.count = 12;
+    opt.count = 21;
     const Eigen::VectorXd full =
         fem::solveEigenmodes(dofs.reduce(a.stiffness(kIron)), dofs.reduce(a.mass(kIron.rho)), opt).frequenciesHz();
     auto s = settings(20, {"bore"});
@@ -142,6 +142,23 @@ TEST(CraigBampton, HeldLinerFrequenciesAreTheFullModelsWithTheSeatsFixed) {
     std::printf("liner held at its seats: first held frequency %.2f Hz (full model %.2f Hz), worst of 12: %.2e\n",
                 held(0), full(0), worst);
     EXPECT_LT(worst, 1e-9);  // the Lanczos tolerance 1e-10 on the eigenvalues; measured 1.5e-13
+    // The range the basis covers (modal::normalModesUpToHz): with --modes 20, the full model's 20th
+    // mode; with a cut-off between the full model's 10th and 11th modes, the cut-off, and the held
+    // body has the full model's ten modes below it.
+    EXPECT_NEAR(modal::normalModesUpToHz(body) / full(19), 1.0, 1e-9);
+    auto cut = settings(0);
+    cut.cutoffHz = 0.5 * (full(9) + full(10));
+    ASSERT_GT(full(10) / full(9), 1.0 + 1e-6);  // a gap for the cut-off
+    const auto cutBody =
+        modal::CraigBamptonReducer(m, kIron)
+            .reduce({modal::parseInterface("top_seat:rbe2"), modal::parseInterface("bottom_seat:rbe2")}, cut);
+    EXPECT_EQ(cutBody.settings.normalModes, 10);
+    EXPECT_EQ(modal::normalModesUpToHz(cutBody), cut.cutoffHz);
+    const Eigen::VectorXd heldCut = modal::heldFrequenciesHz(cutBody, {0, 1});
+    for (int k = 0; k < 10; ++k) EXPECT_NEAR(heldCut(k) / full(k), 1.0, 1e-9) << "mode " << k + 1;
+    EXPECT_GT(heldCut(10), cut.cutoffHz);
+    std::printf("covered: %.2f Hz with 20 modes (full model's 20th %.2f Hz); cut-off %.2f Hz keeps %d modes\n",
+                modal::normalModesUpToHz(body), full(19), cut.cutoffHz, cutBody.settings.normalModes);
 }
 
 TEST(CraigBampton, QuasiStaticSkirtBumpWithinTwoPercent) {

@@ -12,6 +12,7 @@
 
 #include "modal/HeldModalDynamics.hpp"
 #include "modal/ModalSuperposition.hpp"
+#include "Bdf2Integration.hpp"
 #include "OscillatorModes.hpp"
 
 using namespace flexehd::modal;
@@ -30,32 +31,6 @@ double forcedOscillator(double w, double zeta, double F, double W, double t) {
     return A * std::sin(W * t) + B * std::cos(W * t) + std::exp(-zeta * w * t) * (c1 * std::cos(wd * t) + c2 * std::sin(wd * t));
 }
 
-/// Integrates with BDF2 (BDF1 on the first step) over the step sizes `steps`, the force at the
-/// end of each step from `force(t)`; returns q at each step end.
-template <class Force>
-std::vector<Eigen::VectorXd> integrate(HeldModalDynamics& dyn, const std::vector<double>& steps, Force force) {
-    const Eigen::Index m = dyn.modes();
-    Eigen::VectorXd q = Eigen::VectorXd::Zero(m), qOld = q, v = q, vOld = q, qNew;
-    std::vector<Eigen::VectorXd> out;
-    double t = 0.0, dtOld = 0.0;
-    for (const double dt : steps) {
-        double a0 = 1.0, a1 = -1.0, a2 = 0.0;
-        if (dtOld > 0.0) {
-            const double w = dt / dtOld;
-            a0 = (1 + 2 * w) / (1 + w), a1 = -(1 + w), a2 = w * w / (1 + w);
-        }
-        t += dt;
-        dyn.setStep(a0, dt);
-        const Eigen::VectorXd hq = a1 * q + a2 * qOld, hv = a1 * v + a2 * vOld;
-        dyn.respond(force(t), hq, hv, qNew);
-        qOld = q, vOld = v;
-        q = qNew;
-        v = dyn.bdf2Velocity(q, hq);
-        dtOld = dt;
-        out.push_back(q);
-    }
-    return out;
-}
 }  // namespace
 
 // One mode at 800 Hz, ζ = 0.05, forced at 300 Hz from rest over 10 ms: the BDF2 solution converges
@@ -76,7 +51,7 @@ TEST(HeldModalDynamics, SingleModeMatchesTheAnalyticForcedOscillator) {
                 steps.assign(std::size_t(n), T / n);
             }
             HeldModalDynamics dyn(b, {});
-            const auto q = integrate(dyn, steps, [&](double t) { return Eigen::VectorXd::Constant(1, F * std::sin(W * t)); });
+            const auto q = flexehd::test::integrateBdf2(dyn, steps, [&](double t) { return Eigen::VectorXd::Constant(1, F * std::sin(W * t)); });
             double err = 0.0, t = 0.0;
             for (std::size_t k = 0; k < steps.size(); ++k) {
                 t += steps[k];
@@ -117,14 +92,14 @@ TEST(HeldModalDynamics, SlowLoadingTendsToTheQuasiStaticResponse) {
     const int n = 4000;
     HeldModalDynamics dyn(b, {0});
     EXPECT_EQ(dyn.modes(), 5);
-    const auto q = integrate(dyn, std::vector<double>(n, T / n), [&](double t) { return Eigen::VectorXd(f * (t / T)); });
+    const auto q = flexehd::test::integrateBdf2(dyn, std::vector<double>(n, T / n), [&](double t) { return Eigen::VectorXd(f * (t / T)); });
     std::printf("slow: |q - q_qs| / |q_qs| = %.3g\n", (q.back() - qs).norm() / qs.norm());
     EXPECT_LT((q.back() - qs).norm(), 1e-3 * qs.norm());
     EXPECT_LT((b.interfaceMotion * q.back()).norm(), 1e-12 * q.back().norm());
     // A fast load (over a period of the lowest mode) is far from quasi-static: the test can fail.
     HeldModalDynamics fast(b, {0});
     const double Tf = 2 * kPi / omega[0];
-    const auto qf = integrate(fast, std::vector<double>(n, Tf / n), [&](double t) { return Eigen::VectorXd(f * (t / Tf)); });
+    const auto qf = flexehd::test::integrateBdf2(fast, std::vector<double>(n, Tf / n), [&](double t) { return Eigen::VectorXd(f * (t / Tf)); });
     EXPECT_GT((qf.back() - qs).norm(), 1e-2 * qs.norm());
 }
 
