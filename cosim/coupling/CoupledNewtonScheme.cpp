@@ -21,6 +21,12 @@ void CoupledNewtonScheme::beginStep(const Eigen::Vector2d& x, const Eigen::Vecto
     iterate_.acceptedY = y;
 }
 
+Eigen::VectorXd CoupledNewtonScheme::givenLoadChange(const Eigen::VectorXd& dH) const {
+    const Eigen::Index m = mp_ + ml_;
+    if (!parts_.valid || dH.size() != m || newtonInverse_.rows() != 2 + m || newtonInverse_.cols() != 2 + m) return {};
+    return newtonInverse_.rightCols(m) * dH;
+}
+
 CouplingScheme::PassOutcome CoupledNewtonScheme::pass(const StepContext& ctx, const StepTolerances& tol, int /*pass*/,
                                                       const StepEvaluation& ev, double couplingRes, Eigen::Vector2d& x,
                                                       Eigen::VectorXd& y, int& iterations, Eigen::Vector2d& dx,

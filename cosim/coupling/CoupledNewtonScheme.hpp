@@ -24,6 +24,8 @@ public:
 
     CouplingNeeds needs() const override { return CouplingNeeds{true}; }
     void beginStep(const Eigen::Vector2d& x, const Eigen::VectorXd& y) override;
+    /// J⁻¹ (0, dH) with the kept inverse Jacobian (the residual's modal rows are y − H(y)).
+    Eigen::VectorXd givenLoadChange(const Eigen::VectorXd& dH) const override;
     PassOutcome pass(const StepContext& ctx, const StepTolerances& tol, int pass, const StepEvaluation& ev,
                      double couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
                      Eigen::Vector2d& dx, bool& resolved, std::string& why) override;

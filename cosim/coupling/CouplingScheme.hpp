@@ -47,6 +47,9 @@ public:
     virtual void contactsChanged() {}
     /// A new step from the iterate (x, y).
     virtual void beginStep(const Eigen::Vector2d& x, const Eigen::VectorXd& y) = 0;
+    /// The change (δx, δy) of the solution that a change dH of the bodies' response to their
+    /// given loads brings, to first order, before any film solve (empty: the scheme cannot say).
+    virtual Eigen::VectorXd givenLoadChange(const Eigen::VectorXd& /*dH*/) const { return {}; }
     /// Pass `pass` of the step at the evaluated iterate ev of (x, y) with its coupling residual:
     /// the motion's update dx, and resolved when the iteration has converged to the resolution of
     /// its unknowns. Film solves it makes are counted in `iterations`.

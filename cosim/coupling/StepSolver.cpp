@@ -180,13 +180,31 @@ Eigen::Vector2d StepSolver::predictedMotion(const StepState& s, const StepState&
 
 Eigen::VectorXd StepSolver::predictedModal(const StepState& s, const StepState& prev, double dt, bool quadratic) {
     if (!(s.dt > 0.0) || prev.y.size() != s.y.size()) return s.y;
-    if (!quadratic || !(prev.dt > 0.0) || prev.yFrom.size() != s.y.size()) return s.y + (dt / s.dt) * (s.y - prev.y);
+    return extrapolatedModal(s, prev, dt, quadratic, s.y, prev.y, prev.yFrom);
+}
+
+Eigen::VectorXd StepSolver::extrapolatedModal(const StepState& s, const StepState& prev, double dt, bool quadratic,
+                                              const Eigen::VectorXd& now, const Eigen::VectorXd& before,
+                                              const Eigen::VectorXd& beforeThat) {
+    if (!(s.dt > 0.0) || before.size() != now.size()) return {};
+    if (!quadratic || !(prev.dt > 0.0) || beforeThat.size() != now.size()) return now + (dt / s.dt) * (now - before);
     // Lagrange weights at t = Δt of the times -(Δt_n + Δt_{n-1}), -Δt_n, 0.
     const double t0 = -(s.dt + prev.dt), t1 = -s.dt;
     const double w0 = (dt - t1) * dt / ((t0 - t1) * t0);
     const double w1 = (dt - t0) * dt / ((t1 - t0) * t1);
     const double w2 = (dt - t0) * (dt - t1) / (t0 * t1);
-    return w0 * prev.yFrom + w1 * prev.y + w2 * s.y;
+    return w0 * beforeThat + w1 * before + w2 * now;
+}
+
+Eigen::VectorXd StepSolver::givenLoadResponse(const StepContext& ctx) const {
+    if (!pistonLoads_ || !pistonBody_ || pistonDynamics_) return {};
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(mp_), q;
+    pistonLoads_->add(ctx.step.cylinderPressure, Eigen::Vector2d::Zero(), ctx.crank.acceleration + dyn_.gravity(),
+                      ctx.step.ringGas, f);
+    pistonBody_->quasiStatic(f, q);
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(mp_ + ml_);
+    y.head(mp_) = q;
+    return y;
 }
 
 bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg, StepState& out, StepEvaluation& ev, int& iterations,
@@ -203,6 +221,20 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
     // weights on the last states' convergence errors make the start worse: the last step tells.
     Eigen::VectorXd y = predictedModal(s, prev, dt, s.quadraticModalStart);
     const bool flexible = mp_ + ml_ > 0;
+    // The given loads (a ring's flank force jumps as the ring lifts in its groove) change the
+    // solution by what they change beyond their own extrapolation; the kept Jacobian says how
+    // much, before the first film solve (docs/coupling.md §1).
+    const Eigen::VectorXd given = givenLoadResponse(ctx);
+    if (given.size()) {
+        const Eigen::VectorXd expected =
+            extrapolatedModal(s, prev, dt, s.quadraticModalStart, s.yGiven, prev.yGiven, prev.yGivenFrom);
+        const Eigen::VectorXd dz =
+            expected.size() == given.size() ? scheme_->givenLoadChange(given - expected) : Eigen::VectorXd();
+        if (dz.size() == 2 + y.size()) {
+            x += dz.head<2>();
+            y += dz.tail(y.size());
+        }
+    }
     const int maxIt = case_.coupling.maxIterations;
     iterations = 0;
     failure.clear();
@@ -234,6 +266,8 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
         if ((motionDone && couplingRes <= tol.coupling) || resolved) {
             if (resolved && !(motionDone && couplingRes <= tol.coupling)) ++work_.resolvedSteps;
             acceptStep(ctx, s, x, y, ev, out);
+            out.yGiven = given;
+            out.yGivenFrom = s.yGiven;
             out.quadraticModalStart =
                 flexible && largestFilmChange(ctx, y - predictedModal(s, prev, dt, true)) <
                                 largestFilmChange(ctx, y - predictedModal(s, prev, dt, false));

@@ -73,6 +73,11 @@ public:
     /// through the last three states' y (prev.yFrom, prev.y, s.y), else (or where fewer are known)
     /// the linear extrapolation through the last two, s.y on the first step (docs/coupling.md §1).
     static Eigen::VectorXd predictedModal(const StepState& s, const StepState& prev, double dt, bool quadratic);
+    /// The same extrapolation of any modal vector the states carry: v at s, at prev and at the
+    /// state before prev (empty where unknown; empty result where the extrapolation needs it).
+    static Eigen::VectorXd extrapolatedModal(const StepState& s, const StepState& prev, double dt, bool quadratic,
+                                             const Eigen::VectorXd& now, const Eigen::VectorXd& before,
+                                             const Eigen::VectorXd& beforeThat);
 
 private:
     // The schemes are parts of the step: they evaluate the motion's difference columns
@@ -101,6 +106,10 @@ private:
                          int& solves);
     void acceptStep(const StepContext& ctx, const StepState& s, const Eigen::Vector2d& x, const Eigen::VectorXd& y,
                     const StepEvaluation& ev, StepState& out) const;
+    /// The bodies' quasi-static response to the step's given loads (bodies.piston.loads at the
+    /// step's cylinder pressure, crank acceleration and ring-pack gas, no secondary acceleration);
+    /// empty without such loads or with a dynamic piston.
+    Eigen::VectorXd givenLoadResponse(const StepContext& ctx) const;
     /// N per ring of the pack's gas model (top first): the liner film's axial force on it at s.
     std::vector<double> ringFriction(const StepState& s) const;
 

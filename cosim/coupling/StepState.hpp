@@ -27,6 +27,10 @@ struct StepState {
     Eigen::VectorXd y;      // modal coordinates: the piston's, then the liner's
     Eigen::VectorXd yFrom;  // y of the state the step that reached this one started from (empty: initial)
     bool quadraticModalStart = false;  // y's quadratic extrapolation predicted this step better than the linear one
+    // The bodies' quasi-static response to the step's given loads (the flexible piston's crown gas,
+    // axial inertia and ring pack, which do not depend on the iterate), and that of the state the
+    // step started from (empty: none).
+    Eigen::VectorXd yGiven, yGivenFrom;
     Eigen::VectorXd w;      // modal velocities ẏ (bodies.response: dynamic; else empty)
     Eigen::VectorXd f;      // modal forces at y, N (flexible bodies; empty: none yet)
     std::vector<ContactState> films;  // per contact (the squeeze term's history, the warm start)

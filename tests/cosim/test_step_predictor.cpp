@@ -93,3 +93,30 @@ TEST(StepPredictor, TheModalCoordinatesFollowTheirQuadraticThroughTheLastThreeSt
     s.dt = 0.0;  // s is the initial state
     EXPECT_EQ(StepSolver::predictedModal(s, prev, dt, true), s.y);
 }
+
+// The response to the given loads (StepState::yGiven) is extrapolated with y's weights: on a
+// quadratic it is exact with three states, linear with two, and unknown (empty) where the state
+// before s does not carry it — then the start takes no given-load change.
+TEST(StepPredictor, TheGivenLoadsResponseIsExtrapolatedAsTheModalCoordinates) {
+    Eigen::VectorXd c0(2), c1(2), c2(2);
+    c0 << 4e-6, -1e-6;
+    c1 << -0.3, 0.05;
+    c2 << 2e3, -700.0;
+    auto at = [&](double t) { return Eigen::VectorXd(c0 + t * c1 + t * t * c2); };
+    const double t0 = 0.0, t1 = 0.9e-4, t2 = 2.0e-4, dt = 1.4e-4;
+    StepState prev, s;
+    prev.dt = t1 - t0;
+    prev.yGiven = at(t1);
+    prev.yGivenFrom = at(t0);
+    s.dt = t2 - t1;
+    s.yGiven = at(t2);
+    const Eigen::VectorXd expected = at(t2 + dt);
+    const Eigen::VectorXd q =
+        StepSolver::extrapolatedModal(s, prev, dt, true, s.yGiven, prev.yGiven, prev.yGivenFrom);
+    EXPECT_LE((q - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+    const Eigen::VectorXd linear =
+        StepSolver::extrapolatedModal(s, prev, dt, false, s.yGiven, prev.yGiven, prev.yGivenFrom);
+    EXPECT_LE((expected - linear - c2 * dt * (dt + s.dt)).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+    EXPECT_EQ(StepSolver::extrapolatedModal(s, prev, dt, true, s.yGiven, prev.yGiven, Eigen::VectorXd()), linear);
+    EXPECT_EQ(StepSolver::extrapolatedModal(s, prev, dt, true, s.yGiven, Eigen::VectorXd(), Eigen::VectorXd()).size(), 0);
+}
