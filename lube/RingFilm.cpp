@@ -162,6 +162,24 @@ RingFilm::RingFilm(RingFaceProfile profile, Lubricant lubricant, int nodes, doub
     for (int i = 0; i < nodes; ++i) drop_[i] = profile_.drop(x_[i]);
 }
 
+OpenGap openGap(const RingFilmResult& r) {
+    OpenGap g;
+    const Eigen::Index n = r.x.size();
+    if (n < 2 || r.fraction.size() != n || r.h.size() != n) return g;
+    // The edge nodes' fractions are the boundary's (a full film at the trailing edge's pressure):
+    // there the gap is open as far as the oil next to the edge leaves it.
+    Eigen::ArrayXd phi = r.fraction.array();
+    if (n > 2) phi[0] = phi[1], phi[n - 1] = phi[n - 2];
+    const Eigen::ArrayXd open = (1.0 - phi) * r.h.array();
+    if (!(open.minCoeff() > 0.0)) return g;  // the oil fills the gap somewhere across the face
+    const Eigen::ArrayXd w = open.cube().inverse();
+    double integral = 0.0;
+    for (Eigen::Index k = 0; k + 1 < n; ++k) integral += 0.5 * (w[k] + w[k + 1]) * (r.x[k + 1] - r.x[k]);
+    g.resistance = integral;
+    g.narrowest = open.minCoeff();
+    return g;
+}
+
 RingFilmResult RingFilm::solve(const RingFilmState& s, std::vector<char>* cavitated) const {
     return solveWith(s, 0.0, nullptr, cavitated);
 }

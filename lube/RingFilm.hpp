@@ -56,6 +56,17 @@ struct RingFilmResult {
     double friction = 0.0;    ///< the film's axial shear force on the ring per unit circumference (N/m)
 };
 
+/// The gap a face's oil leaves open to the gas (docs/ring-pack.md, "Gas past a face on the oil
+/// layer"): the open height h_o = (1 − φ) h at each node across the face (at the edges with the
+/// fraction of the node next to them: the edges' own are the boundary's), its resistance
+/// ∫ dx/h_o³ (m⁻², trapezoidal over the nodes; +∞ where the oil fills the gap at some node: no
+/// path) and the narrowest h_o (m). A flooded film (φ = 1) has none.
+struct OpenGap {
+    double resistance = std::numeric_limits<double>::infinity();
+    double narrowest = 0.0;
+};
+OpenGap openGap(const RingFilmResult& r);
+
 class RingFilm {
 public:
     /// nodes across the face (≥ 5); a constant-property lubricant (its reference viscosity);

@@ -72,6 +72,8 @@ struct ContactState {
     double minGap = std::numeric_limits<double>::infinity();
     /// N, the contact's axial force on the piston at the step (+z towards the head)
     double axialForce = 0.0;
+    /// A ring on the liner's oil layer: the gap its oil leaves open to the gas (none elsewhere)
+    RingOpenGap openGap;
 };
 
 /// A contact's film at one iterate (x, y) of a step.
@@ -92,6 +94,7 @@ struct ContactIterate {
     double sideInflow = 0.0;                 ///< m³/s into the film at its sides (< 0: leakage)
     double oilVolume = 0.0;                  ///< m³, oil in the film, Σ V φ h
     double layerLeft = 0.0;  ///< m, a ring on the liner's layer: the layer it leaves behind (outflow / |U|)
+    RingOpenGap openGap;     ///< a ring on the liner's layer: the gap its oil leaves open to the gas
     Eigen::VectorXd linerLoad;  ///< Pa, a ring on a flexible liner: its pressure on the liner, on its load grid
 };
 

@@ -68,7 +68,7 @@ StepContext StepSolver::stepContext(const StepState& s, const StepState& prev, d
     ctx.gas = dyn_.gasForce(cylinderPressure);
     st.cylinderPressure = cylinderPressure - case_.engine.crankcasePressure;
     if (packGas_) st.ringGas = &packGas_->trial(st.dt, cylinderPressure, ctx.crank.acceleration + dyn_.gravity(),
-                                                ringFriction(s));
+                                                ringFriction(s), ringOpenGaps(s));
     st.linerOffset = linerOffset_(ctx.crankDeg);
     st.oil = s.oil.layer ? &s.oil : nullptr;
     ctx.now = &s;
@@ -101,6 +101,15 @@ std::vector<double> StepSolver::ringFriction(const StepState& s) const {
             friction[static_cast<std::size_t>(ring)] = s.films[c].axialForce;
     }
     return friction;
+}
+
+std::vector<RingOpenGap> StepSolver::ringOpenGaps(const StepState& s) const {
+    std::vector<RingOpenGap> gaps(case_.rings.size());
+    for (std::size_t c = 0; c < contacts_.size() && c < s.films.size(); ++c) {
+        const int ring = contacts_[c]->packRing();
+        if (ring >= 0 && static_cast<std::size_t>(ring) < gaps.size()) gaps[static_cast<std::size_t>(ring)] = s.films[c].openGap;
+    }
+    return gaps;
 }
 
 StepTolerances StepSolver::stepTolerances() const {

@@ -112,6 +112,8 @@ private:
     Eigen::VectorXd givenLoadResponse(const StepContext& ctx) const;
     /// N per ring of the pack's gas model (top first): the liner film's axial force on it at s.
     std::vector<double> ringFriction(const StepState& s) const;
+    /// Per ring of the pack's gas model: the gap its oil left open to the gas at s.
+    std::vector<RingOpenGap> ringOpenGaps(const StepState& s) const;
 
     const EngineCase& case_;
     const CrankKinematics& kin_;

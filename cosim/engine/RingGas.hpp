@@ -3,7 +3,17 @@
 // in a run", "Ring lift in a run"), what the ring's film contact and the flexible piston's
 // ring-belt loads read of the pack's gas.
 
+#include <limits>
+
 namespace flexehd::cosim {
+
+/// The gap a ring's oil leaves open to the gas across its running faces (lube::openGap; the oil-
+/// control ring's two lands in series, docs/ring-pack.md, "Gas past a face on the oil layer"):
+/// ∫ dx/h_o³ over the faces (m⁻², +∞ where the oil closes the gap) and the narrowest open height (m).
+struct RingOpenGap {
+    double resistance = std::numeric_limits<double>::infinity();
+    double narrowest = 0.0;
+};
 
 /// Pressures (Pa, gauge: relative to the crankcase) above the ring's face, behind it and below
 /// it, the mass flow past it (kg/s, towards the crankcase > 0: through its end gap and, off its

@@ -69,6 +69,14 @@ void InterRingGas::setOrificeArea(int i, double area) {
     orifice_.at(static_cast<std::size_t>(i)).area = area;
 }
 
+void InterRingGas::setChannel(int i, double conductance, double limitArea) {
+    if (!(conductance >= 0.0) || !(limitArea >= 0.0) || !std::isfinite(conductance + limitArea))
+        throw std::invalid_argument("InterRingGas: a channel's conductance and area must be >= 0");
+    GasOrifice& o = orifice_.at(static_cast<std::size_t>(i));
+    o.channel = conductance;
+    o.channelArea = limitArea;
+}
+
 double InterRingGas::litresPerMinute(double massFlow, const GasProperties& gas) {
     const double normalDensity = 101325.0 / (gas.gasConstant * 273.15);  // kg/m³
     return massFlow / normalDensity * 1000.0 * 60.0;
@@ -106,7 +114,14 @@ void InterRingGas::flows(const Eigen::VectorXd& p, Eigen::VectorXd& f, Eigen::Ve
         const int inner = o.from >= 0 ? o.from : o.to >= 0 ? o.to : 0;
         const double tFrom = temperature_[static_cast<std::size_t>(o.from >= 0 ? o.from : inner)];
         const double tTo = temperature_[static_cast<std::size_t>(o.to >= 0 ? o.to : inner)];
-        f[k] = orificeFlow(gas_, o.area, endPressure(o.from, p), endPressure(o.to, p), tFrom, tTo, &dFrom[k], &dTo[k]);
+        const double pFrom = endPressure(o.from, p), pTo = endPressure(o.to, p);
+        f[k] = orificeFlow(gas_, o.area, pFrom, pTo, tFrom, tTo, &dFrom[k], &dTo[k]);
+        if (o.channel > 0.0) {
+            double cFrom = 0.0, cTo = 0.0;
+            f[k] += channelFlow(gas_, o.channel, o.channelArea, pFrom, pTo, tFrom, tTo, &cFrom, &cTo);
+            dFrom[k] += cFrom;
+            dTo[k] += cTo;
+        }
     }
 }
 

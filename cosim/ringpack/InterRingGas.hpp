@@ -29,6 +29,9 @@ struct GasOrifice {
     static constexpr int kCylinder = -1, kCrankcase = -2;
     int from = kCylinder, to = kCrankcase;
     double area = 0.0;
+    /// In parallel, a ring face's open gap (channelFlow): its conductance G (m³, 0: none) and the
+    /// orifice area of its narrowest open height that limits it (m²).
+    double channel = 0.0, channelArea = 0.0;
 };
 
 class InterRingGas {
@@ -45,6 +48,9 @@ public:
     /// Orifice i's effective area C_d A (m², ≥ 0) from the next step on (a flank clearance that
     /// opens or closes with its ring's axial position).
     void setOrificeArea(int i, double area);
+    /// Orifice i's open-gap channel in parallel (GasOrifice::channel, channelArea) from the next
+    /// step on (a ring face whose oil leaves the gap open).
+    void setChannel(int i, double conductance, double limitArea);
 
     /// One backward-Euler step of dt (s) to the cylinder and crankcase pressures (Pa, absolute)
     /// at its end. Throws std::runtime_error when Newton's method does not converge.

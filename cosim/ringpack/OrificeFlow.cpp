@@ -64,4 +64,26 @@ double orificeFlow(const GasProperties& gas, double cda, double pa, double pb, d
     return -m;
 }
 
+double channelFlow(const GasProperties& gas, double conductance, double limitArea, double pa, double pb, double ta,
+                   double tb, double* dpa, double* dpb) {
+    if (!(pa > 0.0) || !(pb > 0.0) || !(ta > 0.0) || !(tb > 0.0) || !(conductance >= 0.0) || !(limitArea >= 0.0) ||
+        !std::isfinite(pa + pb + ta + tb + conductance + limitArea))
+        throw std::invalid_argument("channel flow: pressures (" + std::to_string(pa) + ", " + std::to_string(pb) +
+                                    " Pa) and temperatures must be positive, the conductance and area >= 0");
+    if (dpa) *dpa = 0.0;
+    if (dpb) *dpb = 0.0;
+    if (conductance == 0.0) return 0.0;
+    const double t = pa >= pb ? ta : tb;
+    const double k = conductance / (24.0 * gas.viscosity * gas.gasConstant * t);
+    double m = k * (pa * pa - pb * pb), da = 2.0 * k * pa, db = -2.0 * k * pb;
+    if (limitArea > 0.0) {
+        double oa = 0.0, ob = 0.0;
+        const double cap = orificeFlow(gas, limitArea, pa, pb, ta, tb, &oa, &ob);
+        if (std::abs(cap) < std::abs(m)) m = cap, da = oa, db = ob;
+    }
+    if (dpa) *dpa = da;
+    if (dpb) *dpb = db;
+    return m;
+}
+
 }  // namespace flexehd::cosim

@@ -13,6 +13,9 @@ namespace flexehd::cosim {
 struct GasProperties {
     double gamma = 1.4;                 ///< ratio of specific heats (air)
     double gasConstant = 287.0;         ///< specific gas constant R (J/(kg K), air)
+    /// dynamic viscosity μ (Pa s): air at 450 K, the lands' default temperature (2.507e-5 Pa s;
+    /// Incropera & DeWitt, Fundamentals of Heat and Mass Transfer, Table A.4)
+    double viscosity = 2.507e-5;
 };
 
 /// r* = (2/(γ+1))^{γ/(γ−1)}.
@@ -23,5 +26,17 @@ double criticalPressureRatio(const GasProperties& gas);
 /// ∂ṁ/∂p_a and ∂ṁ/∂p_b (kg/(s Pa)).
 double orificeFlow(const GasProperties& gas, double cda, double pa, double pb, double ta, double tb,
                    double* dpa = nullptr, double* dpb = nullptr);
+
+/// Mass flow (kg/s) from a to b through the gap a ring face's oil leaves open (docs/ring-pack.md,
+/// "Gas past a face on the oil layer"): laminar, isothermal and compressible across the face,
+/// ṁ' = −h_o³ p/(12 μ R T) dp/dx per unit circumference, integrated over the face,
+///
+///   ṁ = G (p_a² − p_b²)/(24 μ R T),   G = πD / ∫ dx/h_o³  (conductance, m³),
+///
+/// T the upstream side's temperature; at most the isentropic flow through the narrowest open
+/// height's orifice, limitArea = C_d πD min h_o (m²), which a wide open gap reaches first. dpa,
+/// dpb as orificeFlow's.
+double channelFlow(const GasProperties& gas, double conductance, double limitArea, double pa, double pb, double ta,
+                   double tb, double* dpa = nullptr, double* dpb = nullptr);
 
 }  // namespace flexehd::cosim

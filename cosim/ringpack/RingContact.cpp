@@ -213,6 +213,15 @@ void RingContact::oilFlows(const ContactStep& step, const ContactState& now, con
     // What the trailing edge leaves, as the layer the liner carries away at |U|.
     const double U = -step.pistonVelocity, out = U >= 0.0 ? -high.inflowHigh : -low.inflowLow;
     it.layerLeft = std::abs(U) > 0.0 ? std::max(out, 0.0) / std::abs(U) : 0.0;
+    // The gap the oil leaves open to the gas, the faces in series.
+    it.openGap.resistance = 0.0;
+    it.openGap.narrowest = std::numeric_limits<double>::infinity();
+    for (const lube::RingFilmResult& f : r.faces) {
+        const lube::OpenGap g = lube::openGap(f);
+        it.openGap.resistance += g.resistance;
+        it.openGap.narrowest = std::min(it.openGap.narrowest, g.narrowest);
+    }
+    if (!std::isfinite(it.openGap.resistance)) it.openGap = RingOpenGap{};
 }
 
 void RingContact::evaluate(const ContactStep& step, const ContactState& now, const ContactState& before,
@@ -301,6 +310,7 @@ ContactState RingContact::accepted(const ContactStep& step, const ContactState& 
     s.linerOffset = step.linerOffset;
     s.minGap = it.minGap;
     s.axialForce = it.action.fz;
+    s.openGap = it.openGap;
     s.fraction = it.fraction;
     s.oilBalance = afterStep(now.oilBalance, it, step.dt);
     return s;

@@ -83,16 +83,16 @@ RingPackGas::RingPackGas(const EngineCase& c)
             collapse_.emplace_back(c.rings[i].mass / circumference_, c.rings[i].groove.backClearance);
         }
     // Orifices: each ring's end gap (index i), then with lift its upper and lower flank clearances
-    // (n + 2i, n + 2i + 1), closed while the ring rests on its lower flank, and its face (3n + i),
-    // closed while the ring is on the liner.
+    // (n + 2i, n + 2i + 1), closed while the ring rests on its lower flank, and its face (3n + i
+    // with lift, else n + i): an orifice closed while the ring is on the liner, and the laminar
+    // channel of the gap its oil leaves open (none on a flooded liner).
     for (std::size_t i = 0; i < n; ++i) orifices.push_back({above(i), below(i), gaps_[i]});
-    if (lift_) {
+    if (lift_)
         for (std::size_t i = 0; i < n; ++i) {
             orifices.push_back({above(i), behind(i), dischargeCoefficient_ * rings_[i].flankLength * rings_[i].sideClearance});
             orifices.push_back({behind(i), below(i), 0.0});
         }
-        for (std::size_t i = 0; i < n; ++i) orifices.push_back({above(i), below(i), 0.0});
-    }
+    for (std::size_t i = 0; i < n; ++i) orifices.push_back({above(i), below(i), 0.0});
     if (!all.empty()) accepted_.emplace(GasProperties{}, all, temperatures, orifices, crankcase_);
     around_.resize(n);
 }
@@ -141,12 +141,27 @@ void RingPackGas::moveRings(double dt, double cylinderPressure, double accelerat
     }
 }
 
+std::pair<double, double> RingPackGas::faceChannel(std::size_t i, const std::vector<RingOpenGap>& openGaps) const {
+    if (i >= openGaps.size() || !(openGaps[i].resistance > 0.0) || !std::isfinite(openGaps[i].resistance)) return {0.0, 0.0};
+    if (lift_ && trialCollapse_[i].position() > 0.0) return {0.0, 0.0};  // the face's orifice takes it
+    return {circumference_ / openGaps[i].resistance, dischargeCoefficient_ * circumference_ * openGaps[i].narrowest};
+}
+
+void RingPackGas::setFaceChannels(const std::vector<RingOpenGap>& openGaps) {
+    for (std::size_t i = 0; i < rings_.size(); ++i) {
+        const auto [conductance, area] = faceChannel(i, openGaps);
+        trial_->setChannel(face(i), conductance, area);
+    }
+}
+
 const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressure, double acceleration,
-                                               const std::vector<double>& friction) {
+                                               const std::vector<double>& friction,
+                                               const std::vector<RingOpenGap>& openGaps) {
     const std::size_t n = around_.size();
     if (accepted_) {
         trial_ = *accepted_;
         if (lift_) moveRings(dt, cylinderPressure, acceleration, friction);
+        setFaceChannels(openGaps);
         trial_->advance(dt, cylinderPressure, crankcase_);
     }
     const InterRingGas* gas = trial_ ? &*trial_ : nullptr;
@@ -156,9 +171,14 @@ const std::vector<RingGas>& RingPackGas::trial(double dt, double cylinderPressur
         r.behind = pressure(behind(i), gas, cylinderPressure) - crankcase_;
         r.below = pressure(below(i), gas, cylinderPressure) - crankcase_;
         const auto k = static_cast<int>(i);
-        r.flow = gas ? gas->flow(k) + (lift_ ? gas->flow(static_cast<int>(n) + 2 * k + 1) + gas->flow(face(i)) : 0.0)
-                     : orificeFlow(GasProperties{}, gaps_[i], cylinderPressure, crankcase_,
-                                   RingGasSpec::kLandTemperature, RingGasSpec::kLandTemperature);
+        if (gas) {
+            r.flow = gas->flow(k) + (lift_ ? gas->flow(static_cast<int>(n) + 2 * k + 1) : 0.0) + gas->flow(face(i));
+        } else {  // a single ring without lift: its end gap and its face's open gap, cylinder to crankcase
+            const double t = RingGasSpec::kLandTemperature;
+            const auto [conductance, area] = faceChannel(i, openGaps);
+            r.flow = orificeFlow(GasProperties{}, gaps_[i], cylinderPressure, crankcase_, t, t) +
+                     channelFlow(GasProperties{}, conductance, area, cylinderPressure, crankcase_, t, t);
+        }
         r.position = lift_ ? trialMotion_[i].position() : 0.0;
         r.flankForce = lift_ ? trialMotion_[i].flankForce() : 0.0;
         r.faceOpening = lift_ ? trialCollapse_[i].position() : 0.0;
@@ -183,7 +203,7 @@ void RingPackGas::accept() {
 double RingPackGas::inflow() const {
     // From the cylinder: the top ring's end gap (orifice 0) and, with lift, its upper flank (n).
     if (!trial_) return around_.empty() ? 0.0 : around_.front().flow;
-    return trial_->flow(0) + (lift_ ? trial_->flow(static_cast<int>(around_.size())) + trial_->flow(face(0)) : 0.0);
+    return trial_->flow(0) + (lift_ ? trial_->flow(static_cast<int>(around_.size())) : 0.0) + trial_->flow(face(0));
 }
 
 double RingPackGas::blowBy() const {

@@ -22,6 +22,7 @@
 // below. A step's pressures follow from the cylinder pressure at its end (backward Euler, from the
 // last accepted step's); they are kept when the step is accepted.
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "cosim/case/EngineCase.hpp"
@@ -43,9 +44,13 @@ public:
     /// lift the rings first move in their grooves under the gas at the step's start (the
     /// cylinder's at its end), their inertia at the piston's axial acceleration A = Z̈ + g
     /// (m/s², +z towards the head) and `friction` (N per ring, top first, the liner film's axial
-    /// force on each ring at the last accepted step; empty: none).
+    /// force on each ring at the last accepted step; empty: none). openGaps: per ring, the gap its
+    /// oil left open to the gas at the last accepted step (a ring on the liner's oil layer; empty:
+    /// none): a laminar channel past its face in parallel with it (channelFlow; none while the
+    /// gas holds the ring off the liner, whose face's orifice then takes the flow).
     const std::vector<RingGas>& trial(double dt, double cylinderPressure, double acceleration = 0.0,
-                                      const std::vector<double>& friction = {});
+                                      const std::vector<double>& friction = {},
+                                      const std::vector<RingOpenGap>& openGaps = {});
     /// The last trial becomes the accepted state.
     void accept();
 
@@ -68,7 +73,12 @@ private:
     int above(std::size_t i) const;
     int below(std::size_t i) const;
     int behind(std::size_t i) const;
-    int face(std::size_t i) const { return static_cast<int>(3 * rings_.size() + i); }  // its face's orifice
+    // its face's orifice (after the end gaps and, with lift, the flanks' clearances)
+    int face(std::size_t i) const { return static_cast<int>((lift_ ? 3 : 1) * rings_.size() + i); }
+    /// Each face's open-gap channel for the coming step.
+    void setFaceChannels(const std::vector<RingOpenGap>& openGaps);
+    /// Ring i's open-gap channel: G = πD/∫dx/h_o³ (m³) and C_d πD min h_o (m²); 0 while collapsed.
+    std::pair<double, double> faceChannel(std::size_t i, const std::vector<RingOpenGap>& openGaps) const;
     double pressure(int node, const InterRingGas* gas, double cylinder) const;
     /// Each ring's step in its groove and its flanks' openings (ring lift).
     void moveRings(double dt, double cylinderPressure, double acceleration, const std::vector<double>& friction);

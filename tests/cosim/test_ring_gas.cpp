@@ -99,3 +99,64 @@ TEST(InterRingGas, GasMassIsConservedOverAFiredCycle) {
     // The blow-by in l/min at normal conditions: air's normal density 1.2922 kg/m³ (DIN 1343).
     EXPECT_NEAR(gas.blowByLitresPerMinute(), gas.blowBy() / 1.2922 * 6e4, 1e-3 * std::abs(gas.blowBy() / 1.2922 * 6e4));
 }
+
+// The gas through a face's open gap (channelFlow): a uniform slit of height h, length b and width
+// W, against the momentum balance integrated along it, dp/dx = −12 μ R T ṁ'/(h³ p) (laminar,
+// isothermal), from p_a over b by RK4 and the flow ṁ' = ṁ/W found by bisection to land on p_b; its
+// derivatives against differences; a wide gap held to its narrowest height's orifice.
+TEST(ChannelFlow, ASlitPassesTheIsothermalLaminarFlowOfItsMomentumBalance) {
+    const double h = 3e-6, b = 1.2e-3, W = 0.27, pa = 3e5, pb = 1e5, mu = kAir.viscosity, R = kAir.gasConstant;
+    const double G = W * h * h * h / b;  // πD/∫dx/h³ for a uniform gap
+    auto outlet = [&](double q) {  // p at x = b for a flow q per unit width
+        double p = pa;
+        const int N = 2000;
+        const double dx = b / N;
+        auto f = [&](double pp) { return -12.0 * mu * R * kT * q / (h * h * h * pp); };
+        for (int k = 0; k < N; ++k) {
+            const double k1 = f(p), k2 = f(p + 0.5 * dx * k1), k3 = f(p + 0.5 * dx * k2), k4 = f(p + dx * k3);
+            p += dx / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+            if (!(p > 0.0)) return -1.0;  // a flow the pressure drop cannot carry over b
+        }
+        return p;
+    };
+    double lo = 0.0, hi = 1e-9;
+    while (outlet(hi) > pb) hi *= 2.0;
+    for (int it = 0; it < 100; ++it) (outlet(0.5 * (lo + hi)) > pb ? lo : hi) = 0.5 * (lo + hi);
+    const double reference = W * 0.5 * (lo + hi);
+    double da = 0.0, db = 0.0;
+    const double m = channelFlow(kAir, G, 0.0, pa, pb, kT, kT, &da, &db);
+    std::printf("slit: %.6e kg/s (momentum balance %.6e)\n", m, reference);
+    EXPECT_NEAR(m / reference, 1.0, 1e-9);
+    EXPECT_NEAR(channelFlow(kAir, G, 0.0, pb, pa, kT, kT), -m, 1e-15);
+    const double e = 1.0;
+    EXPECT_NEAR(da, (channelFlow(kAir, G, 0.0, pa + e, pb, kT, kT) - channelFlow(kAir, G, 0.0, pa - e, pb, kT, kT)) / (2 * e),
+                1e-6 * std::abs(da));
+    EXPECT_NEAR(db, (channelFlow(kAir, G, 0.0, pa, pb + e, kT, kT) - channelFlow(kAir, G, 0.0, pa, pb - e, kT, kT)) / (2 * e),
+                1e-6 * std::abs(db));
+    // A 100 µm gap: laminar flow would be 4e4 times the 3 µm one's, beyond the orifice of that height.
+    const double wide = 100e-6, area = 0.86 * W * wide;
+    EXPECT_EQ(channelFlow(kAir, W * std::pow(wide, 3) / b, area, pa, pb, kT, kT), orificeFlow(kAir, area, pa, pb, kT, kT));
+    EXPECT_EQ(channelFlow(kAir, 0.0, 0.0, pa, pb, kT, kT), 0.0);
+    EXPECT_THROW(channelFlow(kAir, -1.0, 0.0, pa, pb, kT, kT), std::invalid_argument);
+}
+
+// A closed volume leaking through a channel alone (InterRingGas with the channel on its orifice):
+// V/(R T) dp/dt = −G (p² − p_d²)/(24 μ R T), whose solution is p = p_d coth(a p_d t + arcoth(p0/p_d)),
+// a = G/(24 μ V); backward Euler converges to it at first order.
+TEST(InterRingGas, AVolumeLeakingThroughAChannelFollowsItsClosedForm) {
+    const double V = 1e-7, G = 0.27 * std::pow(4e-6, 3) / 1.2e-3, p0 = 5e5, pd = 1e5;
+    const double a = G / (24.0 * kAir.viscosity * V), T = 0.5 / (a * pd);
+    const double exact = pd / std::tanh(a * pd * T + std::atanh(pd / p0));
+    std::vector<double> err;
+    for (int N : {100, 200, 400}) {
+        InterRingGas gas(kAir, {V}, {kT}, {0.0, 0.0}, p0);
+        gas.setChannel(1, G, 0.0);
+        for (int s = 0; s < N; ++s) gas.advance(T / N, 1e5, pd);
+        err.push_back(std::abs(gas.pressures()[0] / exact - 1.0));
+        std::printf("N %d: p %.6g Pa (closed form %.6g), error %.3g\n", N, gas.pressures()[0], exact, err.back());
+    }
+    for (std::size_t k = 1; k < err.size(); ++k) EXPECT_NEAR(std::log2(err[k - 1] / err[k]), 1.0, 0.1);
+    EXPECT_LT(err.back(), 5e-3);
+    InterRingGas gas(kAir, {V}, {kT}, {0.0, 0.0}, p0);
+    EXPECT_THROW(gas.setChannel(1, -1.0, 0.0), std::invalid_argument);
+}
