@@ -13,10 +13,9 @@
 #include "cosim/results/HistoryWriter.hpp"
 #include "cosim/run/CaseRun.hpp"
 #include "fem/BoundarySurface.hpp"
-#include "fem/DofMap.hpp"
+#include "PistonFullModel.hpp"
 #include "fem/ElasticityAssembler.hpp"
 #include "fem/MeshReader.hpp"
-#include "fem/StaticSolver.hpp"
 #include "modal/CraigBamptonReducer.hpp"
 #include "modal/ReducedBodyFile.hpp"
 #include "SmallEngineCase.hpp"
@@ -71,27 +70,10 @@ modal::ReducedBody reducedPiston() {
     return modal::CraigBamptonReducer(piston(), kAlu).reduce({modal::parseInterface("pin_bore:rbe2@0,0,0")}, s);
 }
 
-// The full model's static displacement under nodal forces f with the pin bore's nodes held.
-Eigen::VectorXd fullStatic(const Eigen::VectorXd& f) {
-    const fem::Mesh& m = piston();
-    const fem::SparseMatrix K = fem::ElasticityAssembler(m).stiffness(kAlu);
-    fem::DofMap dofs(m.numNodes(), 3);
-    dofs.constrain(m.groupNodes("pin_bore"), fem::kAllComponents);
-    dofs.finalize();
-    return dofs.expand(fem::StaticSolver(dofs.reduce(K)).solve(dofs.reduceLoad(f, K)));
-}
+Eigen::VectorXd fullStatic(const Eigen::VectorXd& f) { return test::pinBoreHeldStatic(piston(), kAlu, f); }
 
-// The body force −ρ a(r) of the rigid acceleration a(r) = (ë + β̈ z, 0, A − β̈ x) about the pin
-// axis at the origin, as consistent nodal forces −M a.
 Eigen::VectorXd inertiaForces(double lateral, double tilt, double axial) {
-    const fem::Mesh& m = piston();
-    Eigen::VectorXd a = Eigen::VectorXd::Zero(3 * m.numNodes());
-    for (fem::Index k = 0; k < m.numNodes(); ++k) {
-        a[3 * k] = lateral + tilt * m.nodes(2, k);
-        a[3 * k + 2] = axial - tilt * m.nodes(0, k);
-    }
-    const fem::SparseMatrix M = fem::ElasticityAssembler(m).mass(kAlu.rho);
-    return -(M.selfadjointView<Eigen::Upper>() * a);
+    return test::rigidAccelerationForces(piston(), kAlu.rho, lateral, tilt, axial);
 }
 
 // The example's cylinder pressure trace (crank °, Pa absolute), read here from its CSV.
