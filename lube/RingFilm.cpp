@@ -87,6 +87,8 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
     std::vector<double> dl(size), dd(size), du(size), y(size);  // row k's sub, diagonal, super; rhs
     std::vector<double> gas(static_cast<std::size_t>(n));
     int peak = -1;  // the last pass's highest full node
+    // Nodes held full (see below) and the partitions of the last two passes.
+    std::vector<char> held(static_cast<std::size_t>(n), 0), last, lastButOne;
     const int passes = 4 * n;
     for (int pass = 0; pass < passes; ++pass) {
         gasPressures(cav, p, peak, gas);
@@ -136,10 +138,39 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
                 if (v > 1.0) cav[si] = 0, changed = true;
             } else {
                 p[i] = v, phi[i] = 1.0;
-                if (v < gas[si] && rows[si - 1].B > 0.0) cav[si] = 1, changed = true;
+                if (v < gas[si] && rows[si - 1].B > 0.0 && !held[si]) cav[si] = 1, changed = true;
             }
         }
+        // A partition that returns to the one of two passes before alternates: at a meniscus of
+        // the higher gas the full nodes next to it, whose pressures rise into it from the lower
+        // one's side and so stay below it, cavitate, and as partial nodes the oil the Couette flow
+        // brings over-fills them (φ > 1). Those nodes are held full: the meniscus lies at the
+        // cavity node, where the pressure reaches the gas's. Not next to an edge: held full
+        // below its edge's gas pressure, such a node would draw oil through the edge by pressure
+        // flow, more than the layer brings (docs/ring-pack.md, "The rings on the liner's oil
+        // layer").
+        if (changed && cav == lastButOne && !cav.empty() && !last.empty() && cav[1] == last[1] &&
+            cav[static_cast<std::size_t>(m)] == last[static_cast<std::size_t>(m)]) {
+            for (int i = 1; i <= m; ++i) {
+                const auto si = static_cast<std::size_t>(i);
+                if (cav[si] != last[si]) held[si] = 1, cav[si] = 0;
+            }
+        }
+        lastButOne = std::move(last);
+        last = cav;
         if (!changed) {  // settled: the balances hold to round-off; the bounds as JfoSolver clips them
+            // With nodes held full the partition is no complementarity solution of the usual
+            // kind: it stands only where its partial nodes keep their oil (φ ≥ 0) and its full
+            // ones their pressure above p_cav.
+            if (std::find(held.begin(), held.end(), 1) != held.end())
+                for (int i = 1; i <= m; ++i) {
+                    const bool partial = cav[static_cast<std::size_t>(i)];
+                    if ((partial && phi[i] < -1e-9) || (!partial && p[i] < pcav))
+                        throw std::runtime_error(
+                            "RingFilm: the mass-conserving film's full/cavitated partition alternates, and holding "
+                            "its alternating nodes full leaves " +
+                            std::string(partial ? "a partial node without oil" : "a full node below p_cav"));
+                }
             for (int i = 1; i <= m; ++i)
                 p[i] = std::max(p[i], cav[static_cast<std::size_t>(i)] ? gas[static_cast<std::size_t>(i)] : pcav),
                 phi[i] = std::clamp(phi[i], 0.0, 1.0);

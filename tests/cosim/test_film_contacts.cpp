@@ -54,14 +54,19 @@ void compareSplitSkirt(EngineCase c, double spanDeg, double& worstLateral, doubl
 
     ASSERT_EQ(a.size(), b.size());
     const double reach = std::max(c.piston.skirtTop, -c.piston.skirtBottom);
+    // The pressure's scale: the whole skirt's peak over the span. (Near a dead centre the film
+    // carries little but its squeeze, a difference of velocities, which the runs' motion
+    // differences change by a larger part: 442 against 447 Pa at BDC in the flexible test, 3e-5 of
+    // the span's peak.)
+    double peak = 1.0;
+    for (const Snapshot& s : a) peak = std::max(peak, s.pressure.cwiseAbs().maxCoeff());
     for (std::size_t i = 0; i < a.size(); ++i) {
         ASSERT_NEAR(a[i].continuousDeg, b[i].continuousDeg, 1e-9);
         if (a[i].contactPressure.cwiseAbs().maxCoeff() > 0.0) continue;  // floors differ: not comparable
         ++compared;
         worstLateral = std::max(worstLateral, std::abs(a[i].lateral - b[i].lateral) / c.piston.clearance);
         worstTilt = std::max(worstTilt, std::abs(a[i].tilt - b[i].tilt) * reach / c.piston.clearance);
-        const double scale = std::max(a[i].pressure.cwiseAbs().maxCoeff(), 1.0);
-        worstPressure = std::max(worstPressure, (a[i].pressure - 2.0 * b[i].pressure).cwiseAbs().maxCoeff() / scale);
+        worstPressure = std::max(worstPressure, (a[i].pressure - 2.0 * b[i].pressure).cwiseAbs().maxCoeff() / peak);
         if (a[i].pistonModal.size()) {  // the film change of the modal difference, in clearances
             Eigen::VectorXd dh;
             whole.contact<SkirtContact>().piston()->filmChange(a[i].pistonModal - b[i].pistonModal, 0.0, dh);
@@ -80,7 +85,7 @@ void compareSplitSkirt(EngineCase c, double spanDeg, double& worstLateral, doubl
 // test). The bars are ten times that on the motion and on the modal coordinates' film change
 // (in clearances, as the coupling tolerance: relative to the largest modal coordinate the bar
 // would tighten without bound where the skirt barely deflects); the pressure, which
-// changes by about 3 δh/h with the film thickness h ≥ 0.1 c here, gets 1e-2 of its peak.
+// changes by about 3 δh/h with the film thickness h ≥ 0.1 c here, gets 1e-2 of its peak over the span.
 constexpr double kMotionBar = 1e-4, kPressureBar = 1e-2;
 
 TEST(FilmContacts, TwoHalfViscosityContactsAreTheWholeSkirtRigid) {
