@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace flexehd::lube {
 
@@ -46,34 +48,57 @@ JfoRow jfoRow(double cBelow, double cAbove, double qBelow, double qAbove, double
     return w;
 }
 
-// The pressure of each cavitated node's gas (Jeng, ASLE Trans. 35 (1992) 707, starved ring
-// films: the partial film before the meniscus is at the leading side's gas pressure, after the
-// rupture at the trailing side's): a cavitated node below the full film's pressure peak is at the
-// lower edge's pressure, one above it at the upper edge's (neither below p_cav, the edges' values
-// p[0], p[n − 1]); with no full node the lower half at the lower edge's, the upper half at the
-// upper edge's. peak: the last solution's highest full node (−1: none yet, the full nodes' middle).
+// Each node's gas pressure (Jeng, ASLE Trans. 35 (1992) 707, starved ring films: the partial
+// film before the meniscus is at the leading side's gas pressure, after the rupture at the
+// trailing side's; the edges' values p[0], p[n − 1], neither below p_cav). A cavitated node
+// takes the gas it opens to: a run of cavitated nodes reaching one edge that edge's gas. Any other
+// node takes the gas of its side of the full film's pressure peak, below it the lower edge's,
+// above it the upper edge's, the peak itself the lower of the two: a run between full nodes, a
+// run reaching both edges (no full node), and a full node, for which it is the pressure below
+// which the film ruptures. peak: the last solution's highest full node (−1: none yet, the full
+// nodes' middle).
 void gasPressures(const std::vector<char>& cav, const Eigen::VectorXd& p, int peak, std::vector<double>& gas) {
-    const int n = static_cast<int>(cav.size());
+    const int n = static_cast<int>(cav.size()), m = n - 2;
     if (peak < 0) {
         int lo = n - 1, hi = 0;
-        for (int i = 1; i + 1 < n; ++i)
+        for (int i = 1; i <= m; ++i)
             if (!cav[static_cast<std::size_t>(i)]) lo = std::min(lo, i), hi = std::max(hi, i);
         peak = lo <= hi ? (lo + hi) / 2 : n / 2;
     }
-    for (int i = 0; i < n; ++i) gas[static_cast<std::size_t>(i)] = i < peak ? p[0] : p[n - 1];
+    for (int i = 0; i < n; ++i)
+        gas[static_cast<std::size_t>(i)] = i < peak ? p[0] : i > peak ? p[n - 1] : std::min(p[0], p[n - 1]);
+    for (int first = 1; first <= m;) {  // the runs of cavitated nodes [first, last]
+        if (!cav[static_cast<std::size_t>(first)]) {
+            ++first;
+            continue;
+        }
+        int last = first;
+        while (last < m && cav[static_cast<std::size_t>(last) + 1]) ++last;
+        if ((first == 1) != (last == m))
+            for (int i = first; i <= last; ++i) gas[static_cast<std::size_t>(i)] = first == 1 ? p[0] : p[n - 1];
+        first = last + 1;
+    }
 }
 
 // The partition full film (unknown p, φ = 1) / cavitated (unknown φ, p = its gas pressure,
 // gasPressures) of the inner nodes, solved and updated until it settles (a primal–dual active
-// set, as JfoSolver's): full nodes with p below their gas pressure become cavitated (where an
-// outflow or storage can carry a partial film, B > 0), cavitated ones with φ > 1 full. Between
-// two cavitated nodes no pressure flow: the gas moves, not the oil. p and φ hold the edges'
-// pressures and fractions and receive the inner nodes'; cav the start (per node) and the outcome.
-// A partition's matrix is diagonally dominant by columns (a full node's column: Σ c against its
-// neighbours' −c; a cavitated node's: B against the −a of its outflow), so the Thomas algorithm
-// needs no interchanges and its growth is bounded (Higham, Accuracy and Stability of Numerical
-// Algorithms, 2nd ed., Thm 9.9).
-constexpr int kPeakPasses = 8;  // passes over which the gas pressures follow the pressure peak
+// set, as JfoSolver's). Between two cavitated nodes no pressure flow: the gas moves, not the oil.
+// The update (docs/lube.md §9):
+// - a cavitated node with φ > 1 becomes full;
+// - a full node below its gas pressure ruptures (becomes cavitated, where an outflow or storage
+//   can carry a partial film, B > 0) — unless a cavitated neighbour's gas stands above both its
+//   pressure and its own gas while its pressure is at least p_cav: that gas pushes the film,
+//   which is under no tension;
+// - a cavitated node whose gas drains more oil into a full neighbour than it holds (φ < 0) has
+//   emptied: the meniscus moves into that neighbour, which becomes cavitated at the same gas.
+// So a gas above the film's pressure displaces the film as the oil leaves ahead of it, rather
+// than permeating it. p and φ hold the edges' pressures and fractions and receive the inner
+// nodes'; cav the start (per node) and the outcome. A partition's matrix is diagonally dominant
+// by columns (a full node's column: Σ c against its neighbours' −c; a cavitated node's: B against
+// the −a of its outflow), so the Thomas algorithm needs no interchanges and its growth is bounded
+// (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., Thm 9.9).
+constexpr int kPeakPasses = 8;  // passes over which a move of the pressure peak asks for another
+constexpr std::size_t kRecentPartitions = 32;  // partitions kept to see the update cycle
 
 void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::VectorXd& p, Eigen::VectorXd& phi,
                         std::vector<char>& cav) {
@@ -87,9 +112,8 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
     std::vector<double> dl(size), dd(size), du(size), y(size);  // row k's sub, diagonal, super; rhs
     std::vector<double> gas(static_cast<std::size_t>(n));
     int peak = -1;  // the last pass's highest full node
-    // Nodes held full (see below) and the partitions of the last two passes.
-    std::vector<char> held(static_cast<std::size_t>(n), 0), last, lastButOne;
     const int passes = 4 * n;
+    std::deque<std::pair<int, std::vector<char>>> recent;  // the last partitions the update made, and after which pass
     for (int pass = 0; pass < passes; ++pass) {
         gasPressures(cav, p, peak, gas);
         for (int k = 0; k < m; ++k) {
@@ -116,61 +140,57 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
             if (!std::isfinite(v))
                 throw std::runtime_error("RingFilm: the mass-conserving film's balance is singular (pass " +
                                          std::to_string(pass + 1) + ")");
+        // The peak follows the solution; over the first passes a move asks for another pass.
         bool changed = false;
-        // The peak follows the solution over the first passes, then stays (the partition's
-        // update with its gas pressures fixed settles like JfoSolver's).
-        const int lastPeak = peak;
-        if (pass < kPeakPasses) {
-            peak = -1;
-            for (int i = 1; i <= m; ++i)
-                if (!cav[static_cast<std::size_t>(i)] && (peak < 0 || y[static_cast<std::size_t>(i) - 1] > p[peak])) {
-                    p[i] = y[static_cast<std::size_t>(i) - 1];
-                    peak = i;
-                }
-            if (peak < 0) peak = n / 2;
-            changed = pass > 0 && peak != lastPeak;
+        int highest = -1;
+        for (int i = 1; i <= m; ++i)
+            if (!cav[static_cast<std::size_t>(i)] &&
+                (highest < 0 || y[static_cast<std::size_t>(i) - 1] > y[static_cast<std::size_t>(highest) - 1]))
+                highest = i;
+        if (highest >= 0 && highest != peak) {
+            changed = pass < kPeakPasses && peak >= 0;
+            peak = highest;
         }
+        const std::vector<char> was = cav;  // the pass's partition
         for (int i = 1; i <= m; ++i) {
             const auto si = static_cast<std::size_t>(i);
             const double v = y[si - 1];
-            if (cav[si]) {
+            if (was[si]) {
                 p[i] = gas[si], phi[i] = v;
                 if (v > 1.0) cav[si] = 0, changed = true;
-            } else {
-                p[i] = v, phi[i] = 1.0;
-                if (v < gas[si] && rows[si - 1].B > 0.0 && !held[si]) cav[si] = 1, changed = true;
+                continue;
+            }
+            p[i] = v, phi[i] = 1.0;
+            const double own = peak < 0 || i == peak ? std::min(p[0], p[n - 1]) : i < peak ? p[0] : p[n - 1];
+            auto pushes = [&](int j) {
+                return j >= 1 && j <= m && was[static_cast<std::size_t>(j)] && gas[static_cast<std::size_t>(j)] > v &&
+                       gas[static_cast<std::size_t>(j)] > own;
+            };
+            const bool pushed = v >= pcav && (pushes(i - 1) || pushes(i + 1));
+            if (v < own && !pushed && rows[si - 1].B > 0.0) cav[si] = 1, changed = true;
+        }
+        for (int i = 1; i <= m; ++i) {  // emptied cavitated nodes: the meniscus moves on
+            const auto si = static_cast<std::size_t>(i);
+            if (!was[si] || !(y[si - 1] < 0.0)) continue;
+            for (const int b : {i - 1, i + 1}) {
+                const auto sb = static_cast<std::size_t>(b);
+                if (b >= 1 && b <= m && !was[sb] && y[sb - 1] < gas[si] && rows[sb - 1].B > 0.0 && !cav[sb])
+                    cav[sb] = 1, changed = true;
             }
         }
-        // A partition that returns to the one of two passes before alternates: at a meniscus of
-        // the higher gas the full nodes next to it, whose pressures rise into it from the lower
-        // one's side and so stay below it, cavitate, and as partial nodes the oil the Couette flow
-        // brings over-fills them (φ > 1). Those nodes are held full: the meniscus lies at the
-        // cavity node, where the pressure reaches the gas's. Not next to an edge: held full
-        // below its edge's gas pressure, such a node would draw oil through the edge by pressure
-        // flow, more than the layer brings (docs/ring-pack.md, "The rings on the liner's oil
-        // layer").
-        if (changed && cav == lastButOne && !cav.empty() && !last.empty() && cav[1] == last[1] &&
-            cav[static_cast<std::size_t>(m)] == last[static_cast<std::size_t>(m)]) {
-            for (int i = 1; i <= m; ++i) {
-                const auto si = static_cast<std::size_t>(i);
-                if (cav[si] != last[si]) held[si] = 1, cav[si] = 0;
-            }
+        // A partition that returns to one of the last passes' cycles and will not settle.
+        if (cav != was) {
+            for (const auto& [when, partition] : recent)
+                if (partition == cav)
+                    throw std::runtime_error(
+                        "RingFilm: the mass-conserving film's full/cavitated partition cycles (it returns after " +
+                        std::to_string(pass + 1 - when) +
+                        " passes), as where the gas on one side stands above what the film next to it can hold while "
+                        "the inflow refills it: the gas blows through the face within the step");
+            recent.emplace_back(pass + 1, cav);
+            if (recent.size() > kRecentPartitions) recent.pop_front();
         }
-        lastButOne = std::move(last);
-        last = cav;
         if (!changed) {  // settled: the balances hold to round-off; the bounds as JfoSolver clips them
-            // With nodes held full the partition is no complementarity solution of the usual
-            // kind: it stands only where its partial nodes keep their oil (φ ≥ 0) and its full
-            // ones their pressure above p_cav.
-            if (std::find(held.begin(), held.end(), 1) != held.end())
-                for (int i = 1; i <= m; ++i) {
-                    const bool partial = cav[static_cast<std::size_t>(i)];
-                    if ((partial && phi[i] < -1e-9) || (!partial && p[i] < pcav))
-                        throw std::runtime_error(
-                            "RingFilm: the mass-conserving film's full/cavitated partition alternates, and holding "
-                            "its alternating nodes full leaves " +
-                            std::string(partial ? "a partial node without oil" : "a full node below p_cav"));
-                }
             for (int i = 1; i <= m; ++i)
                 p[i] = std::max(p[i], cav[static_cast<std::size_t>(i)] ? gas[static_cast<std::size_t>(i)] : pcav),
                 phi[i] = std::clamp(phi[i], 0.0, 1.0);
@@ -304,7 +324,11 @@ void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::Vect
     }
     std::vector<char> own;
     std::vector<char>& cav = cavitated ? *cavitated : own;
-    if (cav.size() != static_cast<std::size_t>(n)) cav.assign(static_cast<std::size_t>(n), 0);
+    if (cav.size() != static_cast<std::size_t>(n)) {  // no start given: a step's partial nodes stay partial
+        cav.assign(static_cast<std::size_t>(n), 0);
+        if (previous)
+            for (int i = 1; i + 1 < n; ++i) cav[static_cast<std::size_t>(i)] = (*previous)[i] < 1.0;
+    }
     settleJfoPartition(rows, pcav_, r.p, r.fraction, cav);
     r.oil = 0.0;
     for (int i = 1; i + 1 < n; ++i) r.oil += 0.5 * (x_[i + 1] - x_[i - 1]) * r.fraction[i] * r.h[i];

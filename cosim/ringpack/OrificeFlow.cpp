@@ -8,7 +8,7 @@ namespace flexehd::cosim {
 
 namespace {
 
-constexpr double kLinearBelow = 1e-4;  // 1 − r below which the flow is linear in Δp
+constexpr double kLinearBelow = 1e-4;  // 1 − r below which the flow is a quadratic in Δp
 
 // ψ(r) = √(r^{2/γ} − r^{(γ+1)/γ}) and dψ/dr.
 double psi(double g, double r, double* dr) {
@@ -27,11 +27,18 @@ double downhill(const GasProperties& gas, double cda, double pu, double pd, doub
         dpu = k * psi(g, rs, nullptr);
         return dpu * pu;
     }
-    if (1.0 - r < kLinearBelow) {  // linear in Δp, matched to the law at r1 = 1 − kLinearBelow
-        const double r1 = 1.0 - kLinearBelow, slope = k * psi(g, r1, nullptr) / (kLinearBelow);
-        dpu = slope;
-        dpd = -slope;
-        return slope * (pu - pd);
+    if (1.0 - r < kLinearBelow) {
+        // ṁ = A Δp + B Δp²/p_u, Δp = p_u − p_d: finite slope at Δp = 0, and the law's value and
+        // slope at r1 = 1 − kLinearBelow (Δp1 = kLinearBelow p_u), so that the flow is C¹ there.
+        const double e = kLinearBelow, r1 = 1.0 - e;
+        double d1 = 0.0;
+        const double psi1 = psi(g, r1, &d1);
+        const double s1 = -k * d1;  // the law's ∂ṁ/∂Δp at r1 (p_u held)
+        const double a = 2.0 * k * psi1 / e - s1, b = (s1 * e - k * psi1) / (e * e);
+        const double dp = pu - pd, q = dp / pu;
+        dpd = -(a + 2.0 * b * q);
+        dpu = a + 2.0 * b * q - b * q * q;
+        return a * dp + b * dp * q;
     }
     double dr = 0.0;
     const double s = psi(g, r, &dr);

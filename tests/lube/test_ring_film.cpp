@@ -4,7 +4,8 @@
 // ring at rest) with the measured order of convergence; the pure squeeze of the same face
 // (W' = 3√2 π η V R^1.5 / h0^1.5 for an approach speed V, full film); the face fed by a liner
 // oil layer (starved, mass-conserving) against its meniscus solution and against JfoSolver on a
-// grid of three θ columns across the face; and the face profiles.
+// grid of three θ columns across the face; a gas pushing an oil slug off the face against the
+// slug's Poiseuille flow with the measured order; and the face profiles.
 #include <gtest/gtest.h>
 #include <gmock/gmock.h>
 
@@ -594,14 +595,14 @@ TEST(RingFilm, TheGapAFaceLeavesOpenToTheGasIsItsHeightLessItsOil) {
     EXPECT_TRUE(std::isinf(openGap(film.solve(s)).resistance));
 }
 
-// A step whose full/cavitated partition alternates (the top ring of the example engine's pack on
-// a 0.3 µm layer at full load, moving down at 3.95 m/s with 4.35 bar of gas above it and the
-// crankcase's below; the state taken from such a run): the full nodes at the face's narrowest gap,
-// between the partial film at the lower gas's pressure and the one at the upper's, have their
-// pressures below the upper gas's, and as partial nodes they over-fill. Held full, the step
-// settles, and its oil balances with the edges' inflow as every step's does; its partial nodes
-// keep their oil, and its full nodes hold pressures between the two gases'.
-TEST(RingFilm, AnAlternatingPartitionSettlesWithItsMeniscusNodesHeldFull) {
+// A step whose full nodes at the face's narrowest gap stand below the higher gas next to them (the
+// top ring of the example engine's pack on a 0.3 µm layer at full load, moving down at 3.95 m/s
+// with 4.35 bar of gas above it and the crankcase's below; the state taken from such a run):
+// ruptured to that gas they would over-fill as partial nodes, and a partition that let them
+// rupture alternated. Pushed by the gas instead, the step settles, and its oil balances with the
+// edges' inflow as every step's does; its partial nodes keep their oil, and its full nodes hold
+// pressures between the two gases'.
+TEST(RingFilm, AFilmBelowTheHigherGasAtItsMeniscusIsPushedNotRuptured) {
     const RingFilm film(RingFaceProfile::barrel(1.15e-3, 8e-6, 0.0), Lubricant(0.0086, 820.0), 101, 0.0, 0.6e-6);
     RingFilmState s;
     s.minimumGap = s.nominalGap = 3.8006176219327308e-07;
@@ -654,4 +655,54 @@ TEST(RingFilm, AnAlternatingPartitionSettlesWithItsMeniscusNodesHeldFull) {
                 full, belowUpperGas, oilBefore, r.oil, imbalance, flow);
     EXPECT_GT(belowUpperGas, 0) << "the state must be one the partition's plain update alternates on";
     EXPECT_LT(imbalance, 1e-12 * std::max(flow, r.oil));
+}
+
+// The gas displacing the oil (docs/lube.md §9): a flat face, the liner at rest, its lower half
+// full of oil and its upper half empty, 1 bar of gas above it and none below. The gas pushes the
+// slug out through the lower edge as its Poiseuille flow says, Q = h³ Δp/(12 η L) per unit
+// circumference with L the slug's length, so dL/dt = −Q/h and L² = L0² − h² Δp t/(6 η). The
+// steps (backward Euler, Δt ∝ Δx) keep each step's oil to round-off, every fraction within [0, 1],
+// and follow the closed form to first order in the grid: the meniscus lies within the node whose
+// oil the gas drains, the slug's pressure reaching the gas's at that node's centre.
+TEST(RingFilm, AGasAboveAnOilSlugPushesItOutAsItsPoiseuilleFlowSays) {
+    const double b = 1e-3, h = 10e-6, eta = 0.0086, dp = 1e5;
+    const double L0 = 0.5 * b, tEmpty = 6.0 * eta * L0 * L0 / (h * h * dp);
+    double coarser = 0.0;
+    for (const int n : {101, 201, 401}) {
+        const RingFilm film(RingFaceProfile::table({{-0.5 * b, 0.0}, {0.5 * b, 0.0}}), Lubricant(eta), n);
+        RingFilmState s;
+        s.minimumGap = h;
+        s.pressureAbove = dp;
+        s.supplyFilm = 0.0;
+        s.withFriction = false;
+        Eigen::VectorXd phi(n);
+        for (int i = 0; i < n; ++i) phi[i] = i < (n - 1) / 2 ? 1.0 : i == (n - 1) / 2 ? 0.5 : 0.0;
+        const double dx = b / (n - 1);
+        double oil = 0.0;
+        for (int i = 1; i + 1 < n; ++i) oil += dx * phi[i] * h;
+        const double start = oil / h;
+        const int steps = 40 * n;
+        const double dt = 0.75 * tEmpty / steps;
+        double worst = 0.0, imbalance = 0.0;
+        for (int k = 1; k <= steps; ++k) {
+            const RingFilmResult r = film.step(s, dt, phi);
+            imbalance = std::max(imbalance, std::abs(r.oil - oil - dt * r.inflow) / (dt * std::abs(r.inflow)));
+            EXPECT_GE(r.fraction.minCoeff(), 0.0);
+            EXPECT_LE(r.fraction.maxCoeff(), 1.0);
+            phi = r.fraction;
+            oil = r.oil;
+            const double L = std::sqrt(start * start - h * h * dp * k * dt / (6.0 * eta));
+            worst = std::max(worst, std::abs(oil / h - L) / L0);
+        }
+        std::printf("%d nodes, %d steps: slug length within %.3g of L0 of the closed form, step imbalance %.2g of its "
+                    "flow%s\n",
+                    n, steps, worst, imbalance,
+                    coarser > 0.0 ? (" (" + std::to_string(coarser / worst) + "x closer)").c_str() : "");
+        EXPECT_LT(imbalance, 1e-9);
+        if (coarser > 0.0) {
+            EXPECT_GT(coarser / worst, 1.8) << n;  // first order: 2 per halving
+        }
+        coarser = worst;
+    }
+    EXPECT_LT(coarser, 2.5e-3);
 }
