@@ -48,6 +48,12 @@ JfoRow jfoRow(double cBelow, double cAbove, double qBelow, double qAbove, double
     return w;
 }
 
+// The gas of node i's side of the pressure peak (the edges' p[0], p[n − 1]; the peak the lower).
+double sideGas(int i, int peak, const Eigen::VectorXd& p) {
+    const Eigen::Index n = p.size();
+    return i < peak ? p[0] : i > peak ? p[n - 1] : std::min(p[0], p[n - 1]);
+}
+
 // Each node's gas pressure (Jeng, ASLE Trans. 35 (1992) 707, starved ring films: the partial
 // film before the meniscus is at the leading side's gas pressure, after the rupture at the
 // trailing side's; the edges' values p[0], p[n − 1], neither below p_cav). A cavitated node
@@ -65,8 +71,7 @@ void gasPressures(const std::vector<char>& cav, const Eigen::VectorXd& p, int pe
             if (!cav[static_cast<std::size_t>(i)]) lo = std::min(lo, i), hi = std::max(hi, i);
         peak = lo <= hi ? (lo + hi) / 2 : n / 2;
     }
-    for (int i = 0; i < n; ++i)
-        gas[static_cast<std::size_t>(i)] = i < peak ? p[0] : i > peak ? p[n - 1] : std::min(p[0], p[n - 1]);
+    for (int i = 0; i < n; ++i) gas[static_cast<std::size_t>(i)] = sideGas(i, peak, p);
     for (int first = 1; first <= m;) {  // the runs of cavitated nodes [first, last]
         if (!cav[static_cast<std::size_t>(first)]) {
             ++first;
@@ -113,6 +118,7 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
     std::vector<double> gas(static_cast<std::size_t>(n));
     int peak = -1;  // the last pass's highest full node
     const int passes = 4 * n;
+    std::vector<char> was;  // a pass's partition, before its update
     std::deque<std::pair<int, std::vector<char>>> recent;  // the last partitions the update made, and after which pass
     for (int pass = 0; pass < passes; ++pass) {
         gasPressures(cav, p, peak, gas);
@@ -151,7 +157,7 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
             changed = pass < kPeakPasses && peak >= 0;
             peak = highest;
         }
-        const std::vector<char> was = cav;  // the pass's partition
+        was = cav;  // the pass's partition
         for (int i = 1; i <= m; ++i) {
             const auto si = static_cast<std::size_t>(i);
             const double v = y[si - 1];
@@ -161,7 +167,7 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
                 continue;
             }
             p[i] = v, phi[i] = 1.0;
-            const double own = peak < 0 || i == peak ? std::min(p[0], p[n - 1]) : i < peak ? p[0] : p[n - 1];
+            const double own = sideGas(i, peak, p);  // peak ≥ 0: this pass has a full node
             auto pushes = [&](int j) {
                 return j >= 1 && j <= m && was[static_cast<std::size_t>(j)] && gas[static_cast<std::size_t>(j)] > v &&
                        gas[static_cast<std::size_t>(j)] > own;
