@@ -102,6 +102,12 @@ void gasPressures(const std::vector<char>& cav, const Eigen::VectorXd& p, int pe
 // by columns (a full node's column: Σ c against its neighbours' −c; a cavitated node's: B against
 // the −a of its outflow), so the Thomas algorithm needs no interchanges and its growth is bounded
 // (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., Thm 9.9).
+// The partition update returned to one of its recent partitions (docs/lube.md §9: the face's film
+// cannot hold the gas difference within the step).
+struct PartitionCycles : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 constexpr int kPeakPasses = 8;  // passes over which a move of the pressure peak asks for another
 constexpr std::size_t kRecentPartitions = 32;  // partitions kept to see the update cycle
 
@@ -188,7 +194,7 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
         if (cav != was) {
             for (const auto& [when, partition] : recent)
                 if (partition == cav)
-                    throw std::runtime_error(
+                    throw PartitionCycles(
                         "RingFilm: the mass-conserving film's full/cavitated partition cycles (it returns after " +
                         std::to_string(pass + 1 - when) +
                         " passes), as where the gas on one side stands above what the film next to it can hold while "
@@ -204,6 +210,141 @@ void settleJfoPartition(const std::vector<JfoRow>& rows, double pcav, Eigen::Vec
         }
     }
     throw std::runtime_error("RingFilm: the mass-conserving film's full/cavitated partition did not settle in " +
+                             std::to_string(passes) + " passes");
+}
+
+// The face open to the gas (docs/lube.md §9): the gas passes the face through the gap its oil
+// leaves open, its pressure falling from the higher edge's to the lower's along the open
+// channel's resistance ∫ dx/h_o³, h_o = (1 − φ) h with the last step's film fraction (at the
+// edges the fraction of the node next to them, as openGap; a node the oil filled takes
+// h_o = kOpenFloor h, so the fall concentrates there). Per node, not below p_cav.
+constexpr double kOpenFloor = 0.01;
+
+std::vector<double> openFaceGas(const Eigen::VectorXd& x, const Eigen::VectorXd& h, const Eigen::VectorXd& previous,
+                                double pLow, double pHigh, double pcav) {
+    const Eigen::Index n = x.size();
+    auto inverseCube = [&](Eigen::Index i) {
+        const double open = std::max(1.0 - previous[std::clamp<Eigen::Index>(i, 1, n - 2)], kOpenFloor) * h[i];
+        return 1.0 / (open * open * open);
+    };
+    std::vector<double> resistance(static_cast<std::size_t>(n), 0.0);
+    for (Eigen::Index i = 1; i < n; ++i)
+        resistance[static_cast<std::size_t>(i)] = resistance[static_cast<std::size_t>(i) - 1] +
+                                                  0.5 * (x[i] - x[i - 1]) * (inverseCube(i - 1) + inverseCube(i));
+    std::vector<double> gas(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i)
+        gas[static_cast<std::size_t>(i)] =
+            std::max(pcav, pLow + (pHigh - pLow) * resistance[static_cast<std::size_t>(i)] / resistance.back());
+    return gas;
+}
+
+// The open face's balance: each inner node full film (unknown p, φ = 1) or partial
+// (unknown φ, p its gas). A face between two partial nodes, or between a partial node and an
+// edge, carries its pressure flow c (p_j − p_k) in the oil streaks the gas flows between: weighted
+// by the upwind node's fraction, as the Couette flux is, so that no node gives more oil than it
+// holds (the gas from an edge brings none). Any other face's pressure flow is the full film's. The face f between nodes j = f and
+// k = f + 1 carries F = a_j u_j + a_k u_k + b, u the nodes' unknowns (the edges' known).
+struct OpenFace {
+    const std::vector<double>& c;  // faces' conductances
+    const std::vector<double>& q;  // faces' Couette coefficients (U/2) h_f
+    const std::vector<double>& gas;
+    const std::vector<char>& partial;
+    const Eigen::VectorXd& p;    // the edges' pressures
+    const Eigen::VectorXd& phi;  // the edges' fractions
+    struct Flux {
+        double aj = 0.0, ak = 0.0, b = 0.0;
+    };
+    Flux flux(int f) const {
+        const int n = static_cast<int>(partial.size()), j = f, k = f + 1;
+        auto edge = [&](int i) { return i == 0 || i == n - 1; };
+        auto part = [&](int i) { return !edge(i) && partial[static_cast<std::size_t>(i)]; };
+        Flux F;
+        auto carried = [&](int i, double coefficient, double& a) {  // coefficient × φ_i
+            if (part(i)) a += coefficient;
+            else F.b += coefficient * (edge(i) ? phi[i] : 1.0);
+        };
+        auto pushed = [&](int i, double coefficient, double& a) {  // coefficient × p_i
+            if (edge(i)) F.b += coefficient * p[i];
+            else if (part(i)) F.b += coefficient * gas[static_cast<std::size_t>(i)];
+            else a += coefficient;
+        };
+        const auto sf = static_cast<std::size_t>(f);
+        if (q[sf] > 0.0) carried(j, q[sf], F.aj);
+        else carried(k, q[sf], F.ak);
+        if ((part(j) || part(k)) && (part(j) || edge(j)) && (part(k) || edge(k))) {
+            const double w = c[sf] * ((edge(j) ? p[j] : gas[sf]) - (edge(k) ? p[k] : gas[sf + 1]));
+            const int from = w > 0.0 ? j : k;
+            if (!edge(from)) carried(from, w, from == j ? F.aj : F.ak);  // the gas from an edge brings no oil
+        } else {
+            pushed(j, c[sf], F.aj);
+            pushed(k, -c[sf], F.ak);
+        }
+        return F;
+    }
+};
+
+// The open face's partition, settled as settleJfoPartition's without the gas's own
+// rules (its pressures are given): a partial node with φ > 1 becomes full, a full node below its
+// gas partial. storage Δx h/Δt and held Δx φₙ hₙ/Δt per inner node.
+void settleOpenFace(const std::vector<double>& c, const std::vector<double>& q, const std::vector<double>& storage,
+                    const std::vector<double>& held, const std::vector<double>& gas, Eigen::VectorXd& p,
+                    Eigen::VectorXd& phi, std::vector<char>& partial) {
+    const int n = static_cast<int>(p.size()), m = n - 2;
+    partial.front() = partial.back() = 0;
+    const auto size = static_cast<std::size_t>(m);
+    std::vector<double> dl(size), dd(size), du(size), y(size);
+    const OpenFace face{c, q, gas, partial, p, phi};
+    const int passes = 4 * n;
+    for (int pass = 0; pass < passes; ++pass) {
+        // Each inner node's balance: storage φ_i − held = F_below − F_above.
+        for (int k = 0; k < m; ++k) {
+            const bool part = partial[static_cast<std::size_t>(k) + 1];
+            dl[static_cast<std::size_t>(k)] = du[static_cast<std::size_t>(k)] = 0.0;
+            dd[static_cast<std::size_t>(k)] = part ? storage[static_cast<std::size_t>(k)] : 0.0;
+            y[static_cast<std::size_t>(k)] =
+                held[static_cast<std::size_t>(k)] - (part ? 0.0 : storage[static_cast<std::size_t>(k)]);
+        }
+        for (int f = 0; f + 1 < n; ++f) {
+            const OpenFace::Flux F = face.flux(f);
+            if (f >= 1) {  // node j = f: + F
+                const auto r = static_cast<std::size_t>(f) - 1;
+                dd[r] += F.aj, y[r] -= F.b;
+                if (f + 1 <= m) du[r] += F.ak;
+            }
+            if (f + 1 <= m) {  // node k = f + 1: − F
+                const auto r = static_cast<std::size_t>(f);
+                dd[r] -= F.ak, y[r] += F.b;
+                if (f >= 1) dl[r] -= F.aj;
+            }
+        }
+        tridiagonalSolve(dl, dd, du, y);
+        bool changed = false;
+        for (int i = 1; i <= m; ++i) {
+            const auto si = static_cast<std::size_t>(i);
+            const double v = y[si - 1];
+            if (!std::isfinite(v))
+                throw std::runtime_error("RingFilm: the face open to the gas: balance is singular (pass " +
+                                         std::to_string(pass + 1) + ")");
+            if (partial[si]) {
+                p[i] = gas[si], phi[i] = v;
+                if (v > 1.0) partial[si] = 0, changed = true;
+            } else {
+                p[i] = v, phi[i] = 1.0;
+                if (v < gas[si]) partial[si] = 1, changed = true;
+            }
+        }
+        for (int i = 1; i <= m; ++i) {  // a partial node its full neighbour emptied: the meniscus moves on
+            if (!partial[static_cast<std::size_t>(i)] || !(y[static_cast<std::size_t>(i) - 1] < 0.0)) continue;
+            for (const int b : {i - 1, i + 1})
+                if (b >= 1 && b <= m && !partial[static_cast<std::size_t>(b)] && storage[static_cast<std::size_t>(b) - 1] > 0.0)
+                    partial[static_cast<std::size_t>(b)] = 1, changed = true;
+        }
+        if (!changed) {
+            for (int i = 1; i <= m; ++i) phi[i] = std::clamp(phi[i], 0.0, 1.0);
+            return;
+        }
+    }
+    throw std::runtime_error("RingFilm: the face open to the gas: full/partial partition did not settle in " +
                              std::to_string(passes) + " passes");
 }
 
@@ -321,12 +462,13 @@ void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::Vect
     // The balance of each inner node (docs/lube.md §3b); a step's content term with the face's
     // last gap h_min − Δt ḣ_min.
     std::vector<JfoRow> rows(static_cast<std::size_t>(n - 2));
+    std::vector<double> storage(rows.size()), held(rows.size());
     for (int i = 1; i + 1 < n; ++i) {
         const double width = 0.5 * (x_[i + 1] - x_[i - 1]);
-        const double storage = previous ? width * r.h[i] / dt : 0.0;
-        const double before = previous ? width * (*previous)[i] * (r.h[i] - dt * s.squeezeRate) / dt : 0.0;
         const auto f = static_cast<std::size_t>(i);  // the face above node i
-        rows[f - 1] = jfoRow(c[f - 1], c[f], q[f - 1], q[f], storage, before);
+        storage[f - 1] = previous ? width * r.h[i] / dt : 0.0;
+        held[f - 1] = previous ? width * (*previous)[i] * (r.h[i] - dt * s.squeezeRate) / dt : 0.0;
+        rows[f - 1] = jfoRow(c[f - 1], c[f], q[f - 1], q[f], storage[f - 1], held[f - 1]);
     }
     std::vector<char> own;
     std::vector<char>& cav = cavitated ? *cavitated : own;
@@ -335,14 +477,40 @@ void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::Vect
         if (previous)
             for (int i = 1; i + 1 < n; ++i) cav[static_cast<std::size_t>(i)] = (*previous)[i] < 1.0;
     }
-    settleJfoPartition(rows, pcav_, r.p, r.fraction, cav);
+    const std::vector<char> start = cav;
+    try {
+        settleJfoPartition(rows, pcav_, r.p, r.fraction, cav);
+        // Partial from edge to edge between two gases: the gas passes the face.
+        r.openToGas = previous && r.p[0] != r.p[n - 1] &&
+                         std::all_of(cav.begin() + 1, cav.end() - 1, [](char v) { return v != 0; });
+    } catch (const PartitionCycles&) {
+        if (!previous) throw;  // a steady film has no last fraction to open the gap
+        r.openToGas = true;
+        cav = start;
+    }
+    std::vector<double> gas;  // the open face's gas pressures
+    if (r.openToGas) {
+        gas = openFaceGas(x_, r.h, *previous, r.p[0], r.p[n - 1], pcav_);
+        settleOpenFace(c, q, storage, held, gas, r.p, r.fraction, cav);
+    }
     r.oil = 0.0;
     for (int i = 1; i + 1 < n; ++i) r.oil += 0.5 * (x_[i + 1] - x_[i - 1]) * r.fraction[i] * r.h[i];
     // The edges' flows into the film with the scheme's face fluxes (Couette flux upwinded).
-    const double qLow = q.front(), qHigh = q.back();
-    r.inflowLow = c.front() * (r.p[0] - r.p[1]) + qLow * (qLow > 0.0 ? r.fraction[0] : r.fraction[1]);
-    r.inflowHigh =
-        -(c.back() * (r.p[n - 2] - r.p[n - 1]) + qHigh * (qHigh > 0.0 ? r.fraction[n - 2] : r.fraction[n - 1]));
+    if (r.openToGas) {  // the open face's edge fluxes
+        const OpenFace face{c, q, gas, cav, r.p, r.fraction};
+        auto flux = [&](int f) {
+            const OpenFace::Flux F = face.flux(f);
+            return F.aj * (cav[static_cast<std::size_t>(f)] ? r.fraction[f] : r.p[f]) +
+                   F.ak * (cav[static_cast<std::size_t>(f) + 1] ? r.fraction[f + 1] : r.p[f + 1]) + F.b;
+        };
+        r.inflowLow = flux(0);
+        r.inflowHigh = -flux(n - 2);
+    } else {
+        const double qLow = q.front(), qHigh = q.back();
+        r.inflowLow = c.front() * (r.p[0] - r.p[1]) + qLow * (qLow > 0.0 ? r.fraction[0] : r.fraction[1]);
+        r.inflowHigh =
+            -(c.back() * (r.p[n - 2] - r.p[n - 1]) + qHigh * (qHigh > 0.0 ? r.fraction[n - 2] : r.fraction[n - 1]));
+    }
     r.inflow = r.inflowLow + r.inflowHigh;
 }
 

@@ -52,6 +52,10 @@ struct RingFilmResult {
     /// mass-conserving: the flow into the film per unit circumference (m²/s, + into the film)
     /// through the lower edge (x = profile.lower()) and the upper one; inflow is their sum
     double inflowLow = 0.0, inflowHigh = 0.0;
+    /// mass-conserving step: the face is open to the gas (docs/lube.md §9) — its film partial from
+    /// edge to edge between two different gases, or unable to hold the higher one within the step
+    /// — and the gas passing it pushes the oil streaks
+    bool openToGas = false;
     double load = 0.0;        ///< ∫ p dx: the film's radial force per unit circumference (N/m)
     double friction = 0.0;    ///< the film's axial shear force on the ring per unit circumference (N/m)
 };

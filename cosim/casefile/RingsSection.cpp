@@ -251,13 +251,6 @@ void readRingGas(const YamlSection& top, EngineCase& c) {
     }
     if (r.model == RingGasModel::None) return;
     if (c.rings.empty()) g.fail("model", "the gas between the rings needs a ring pack (case key rings)");
-    if (c.lubricant.supply.model == OilSupplyModel::LinerLayer)
-        g.fail("model", "the lands' gas on the liner's oil layer (lubricant.supply.model: liner_layer) is not built: "
-                        "where the gas above a ring's face stands above what the film next to its edge can hold while "
-                        "the liner's oil refills it (a lifted second ring from 4000 rpm on), the gas blows through the "
-                        "face, which the ring's mass-conserving film does not model (docs/ring-pack.md, \"The pack's "
-                        "gas in a run\"); run the lands' gas on a flooded liner (lubricant.supply.model: flooded), or "
-                        "the layer with ring_gas.model: none");
     for (std::size_t i = 0; i + 1 < c.rings.size(); ++i)
         if (!(c.rings[i + 1].grooveTop() < c.rings[i].groove.lowerFlank))
             g.fail("model", fmt::format("rings '{}' and '{}' have no land between their grooves (the lower one's "

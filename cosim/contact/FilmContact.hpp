@@ -95,6 +95,9 @@ struct ContactIterate {
     double oilVolume = 0.0;                  ///< m³, oil in the film, Σ V φ h
     double layerLeft = 0.0;  ///< m, a ring on the liner's layer: the layer it leaves behind (outflow / |U|)
     RingOpenGap openGap;     ///< a ring on the liner's layer: the gap its oil leaves open to the gas
+    /// a ring on the liner's layer: 1 where a face's film is open to the gas in the step (partial
+    /// from edge to edge between two gases, or unable to hold the higher one: docs/lube.md §9), else 0
+    double openToGas = 0.0;
     Eigen::VectorXd linerLoad;  ///< Pa, a ring on a flexible liner: its pressure on the liner, on its load grid
 };
 

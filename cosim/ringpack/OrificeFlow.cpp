@@ -83,10 +83,17 @@ double channelFlow(const GasProperties& gas, double conductance, double limitAre
     const double t = pa >= pb ? ta : tb;
     const double k = conductance / (24.0 * gas.viscosity * gas.gasConstant * t);
     double m = k * (pa * pa - pb * pb), da = 2.0 * k * pa, db = -2.0 * k * pb;
-    if (limitArea > 0.0) {
+    if (limitArea > 0.0) {  // in series with the orifice: the resistances add, m = m_c m_o/(m_c + m_o)
         double oa = 0.0, ob = 0.0;
-        const double cap = orificeFlow(gas, limitArea, pa, pb, ta, tb, &oa, &ob);
-        if (std::abs(cap) < std::abs(m)) m = cap, da = oa, db = ob;
+        const double o = orificeFlow(gas, limitArea, pa, pb, ta, tb, &oa, &ob), sum = m + o;
+        if (sum != 0.0) {
+            da = (o * o * da + m * m * oa) / (sum * sum);
+            db = (o * o * db + m * m * ob) / (sum * sum);
+            m = m * o / sum;
+        } else {  // equal pressures: the slopes in series
+            da = da + oa != 0.0 ? da * oa / (da + oa) : 0.0;
+            db = db + ob != 0.0 ? db * ob / (db + ob) : 0.0;
+        }
     }
     if (dpa) *dpa = da;
     if (dpb) *dpb = db;

@@ -33,8 +33,9 @@ double orificeFlow(const GasProperties& gas, double cda, double pa, double pb, d
 ///
 ///   ṁ = G (p_a² − p_b²)/(24 μ R T),   G = πD / ∫ dx/h_o³  (conductance, m³),
 ///
-/// T the upstream side's temperature; at most the isentropic flow through the narrowest open
-/// height's orifice, limitArea = C_d πD min h_o (m²), which a wide open gap reaches first. dpa,
+/// T the upstream side's temperature; in series with the isentropic flow through the narrowest
+/// open height's orifice, limitArea = C_d πD min h_o (m², 0: none), their resistances adding,
+/// 1/ṁ = 1/ṁ_channel + 1/ṁ_orifice, so that a wide open gap passes what that orifice does. dpa,
 /// dpb as orificeFlow's.
 double channelFlow(const GasProperties& gas, double conductance, double limitArea, double pa, double pb, double ta,
                    double tb, double* dpa = nullptr, double* dpb = nullptr);

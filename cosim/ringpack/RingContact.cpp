@@ -213,6 +213,10 @@ void RingContact::oilFlows(const ContactStep& step, const ContactState& now, con
     // What the trailing edge leaves, as the layer the liner carries away at |U|.
     const double U = -step.pistonVelocity, out = U >= 0.0 ? -high.inflowHigh : -low.inflowLow;
     it.layerLeft = std::abs(U) > 0.0 ? std::max(out, 0.0) / std::abs(U) : 0.0;
+    it.openToGas = std::any_of(r.faces.begin(), r.faces.end(),
+                                  [](const lube::RingFilmResult& f) { return f.openToGas; })
+                          ? 1.0
+                          : 0.0;
     // The gap the oil leaves open to the gas, the faces in series.
     it.openGap.resistance = 0.0;
     it.openGap.narrowest = std::numeric_limits<double>::infinity();
@@ -325,7 +329,8 @@ const std::vector<std::string>& RingContact::figureNames() {
     static const std::vector<std::string> names{"min_film_m", "friction_power_mean_w", "fmep_pa",
                                                 "boundary_friction_power_mean_w", "gas_below_max_pa",
                                                 "gas_flow_mean_kg_per_s", "gas_flow_mean_l_per_min",
-                                                "lifts_per_cycle", "gas_behind_max_pa", "face_opening_max_m"};
+                                                "lifts_per_cycle", "gas_behind_max_pa", "face_opening_max_m",
+                                                "open_to_gas_share"};
     return names;
 }
 
@@ -351,7 +356,10 @@ std::vector<ContactColumn> RingContact::columns() const {
             {column + "friction_force_n", {}},
             {column + "friction_power_w", {{figure + f[1], CycleStatistic::Mean}, {figure + f[2], CycleStatistic::Fmep}}},
             {column + "boundary_friction_power_w", {{figure + f[3], CycleStatistic::Mean}}}};
-    if (oil_) all.push_back({column + "oil_left_m", {}});
+    if (oil_) {
+        all.push_back({column + "oil_left_m", {}});
+        all.push_back({column + "face_open_to_gas", {{figure + f[10], CycleStatistic::Mean}}});
+    }
     if (gasIndex_ >= 0) {
         all.push_back({column + "gas_below_pa", {{figure + f[4], CycleStatistic::Maximum}}});
         all.push_back({column + "gas_flow_kg_per_s", {{figure + f[5], CycleStatistic::Mean}}});
@@ -374,7 +382,10 @@ void RingContact::columnValues(const ContactIterate& it, std::vector<double>& va
     values.push_back(it.action.fz);
     values.push_back(it.loads.viscousDissipation + it.loads.boundaryFrictionPower);
     values.push_back(it.loads.boundaryFrictionPower);
-    if (oil_) values.push_back(it.layerLeft);
+    if (oil_) {
+        values.push_back(it.layerLeft);
+        values.push_back(it.openToGas);
+    }
     if (gasIndex_ >= 0) {
         values.push_back(gas_.below + crankcasePressure_);
         values.push_back(gas_.flow);

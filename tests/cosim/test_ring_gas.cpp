@@ -103,7 +103,7 @@ TEST(InterRingGas, GasMassIsConservedOverAFiredCycle) {
 // The gas through a face's open gap (channelFlow): a uniform slit of height h, length b and width
 // W, against the momentum balance integrated along it, dp/dx = −12 μ R T ṁ'/(h³ p) (laminar,
 // isothermal), from p_a over b by RK4 and the flow ṁ' = ṁ/W found by bisection to land on p_b; its
-// derivatives against differences; a wide gap held to its narrowest height's orifice.
+// derivatives against differences; a wide gap held to its narrowest height's orifice, in series.
 TEST(ChannelFlow, ASlitPassesTheIsothermalLaminarFlowOfItsMomentumBalance) {
     const double h = 3e-6, b = 1.2e-3, W = 0.27, pa = 3e5, pb = 1e5, mu = kAir.viscosity, R = kAir.gasConstant;
     const double G = W * h * h * h / b;  // πD/∫dx/h³ for a uniform gap
@@ -133,9 +133,24 @@ TEST(ChannelFlow, ASlitPassesTheIsothermalLaminarFlowOfItsMomentumBalance) {
                 1e-6 * std::abs(da));
     EXPECT_NEAR(db, (channelFlow(kAir, G, 0.0, pa, pb + e, kT, kT) - channelFlow(kAir, G, 0.0, pa, pb - e, kT, kT)) / (2 * e),
                 1e-6 * std::abs(db));
-    // A 100 µm gap: laminar flow would be 4e4 times the 3 µm one's, beyond the orifice of that height.
-    const double wide = 100e-6, area = 0.86 * W * wide;
-    EXPECT_EQ(channelFlow(kAir, W * std::pow(wide, 3) / b, area, pa, pb, kT, kT), orificeFlow(kAir, area, pa, pb, kT, kT));
+    // The channel in series with its narrowest height's orifice, 1/ṁ = 1/ṁ_channel + 1/ṁ_orifice: a
+    // 100 µm gap's laminar flow would be (100/3)³ = 3.7e4 times the 3 µm one's (the momentum
+    // balance's above), far beyond the orifice of that height, which then carries it.
+    const double wide = 100e-6, area = 0.86 * W * wide, laminar = reference * std::pow(wide / h, 3);
+    const double orifice = orificeFlow(kAir, area, pa, pb, kT, kT);
+    EXPECT_NEAR(channelFlow(kAir, W * std::pow(wide, 3) / b, area, pa, pb, kT, kT),
+                orifice * laminar / (orifice + laminar), 1e-9 * orifice);
+    // Smooth where the two are alike (a 20 µm gap) and at equal pressures: slopes as differences.
+    for (const double gap : {20e-6, 100e-6})
+        for (const double from : {pa, pb + 1e-3}) {
+            const double G2 = W * std::pow(gap, 3) / b, A2 = 0.86 * W * gap;
+            double sa = 0.0, sb = 0.0;
+            channelFlow(kAir, G2, A2, from, pb, kT, kT, &sa, &sb);
+            const double d = 1e-4 * (from - pb) + 1e-6;
+            auto flow = [&](double x, double y) { return channelFlow(kAir, G2, A2, x, y, kT, kT); };
+            EXPECT_NEAR(sa, (flow(from + d, pb) - flow(from - d, pb)) / (2 * d), 1e-5 * std::abs(sa)) << gap << " " << from;
+            EXPECT_NEAR(sb, (flow(from, pb + d) - flow(from, pb - d)) / (2 * d), 1e-5 * std::abs(sb)) << gap << " " << from;
+        }
     EXPECT_EQ(channelFlow(kAir, 0.0, 0.0, pa, pb, kT, kT), 0.0);
     EXPECT_THROW(channelFlow(kAir, -1.0, 0.0, pa, pb, kT, kT), std::invalid_argument);
 }
