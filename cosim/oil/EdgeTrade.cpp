@@ -19,12 +19,10 @@ void tradeAtEdges(LinerOilExchange& ex, double before, double after, const std::
             if (advancing) {  // what it covered, less what the film took in: the bank in front
                 const double bank = ex.was.volume(j, lo, hi, ex.before) - q[j] * ex.dt;
                 shortfall += ex.next.addOutside(j, b, out, bank, ex.after);
-            } else {          // the outflow, on the strip it uncovered
+            } else {  // the outflow, on the strip it uncovered (a net inflow leaves it none)
                 const double left = -q[j] * ex.dt;
-                if (hi > lo && left >= 0.0)
-                    ex.next.deposit(j, lo, hi, left, ex.before);
-                else
-                    shortfall += ex.next.addOutside(j, b, out, left, ex.after);
+                if (hi > lo) ex.next.deposit(j, lo, hi, std::max(left, 0.0), ex.before);
+                if (!(hi > lo) || left < 0.0) shortfall += ex.next.addOutside(j, b, out, left, ex.after);
             }
         }
     }

@@ -2,8 +2,10 @@
 // EdgeTrade: a cover's two edges trading with the liner's oil layer over a step (docs/coupling.md
 // §6, "The liner's oil layer and its covers"), per θ column: the advancing edge's strip, less what
 // the film took in through that edge, stays as a bank just in front of it; the retreating edge's
-// outflow lies on the strip it uncovers (or, with no strip or a net inflow there, is added to or
-// taken from the layer just outside it). Every rule moves volume.
+// outflow lies on the strip it uncovers (with no strip, is added to the layer just outside it); a
+// net inflow through a retreating edge (the sliding reversed within the step) leaves that strip
+// none and is taken from the layer outside it. Every rule moves volume: the strip a cover uncovers
+// holds what the trade puts there, never what lay in its cells before it was covered.
 #include "cosim/oil/LinerOil.hpp"
 
 #include <Eigen/Core>
