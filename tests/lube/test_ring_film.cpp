@@ -659,6 +659,23 @@ TEST(RingFilm, AFilmBelowTheHigherGasAtItsMeniscusIsPushedNotRuptured) {
     EXPECT_LT(imbalance, 1e-12 * std::max(flow, r.oil));
 }
 
+// A flat face of width b, and its state h off the liner at rest with a gas of dp above it and none
+// below, on no oil layer: the gas tests' set-up.
+namespace {
+
+RingFaceProfile flatFace(double b) { return RingFaceProfile::table({{-0.5 * b, 0.0}, {0.5 * b, 0.0}}); }
+
+RingFilmState underGas(double h, double dp) {
+    RingFilmState s;
+    s.minimumGap = h;
+    s.pressureAbove = dp;
+    s.supplyFilm = 0.0;
+    s.withFriction = false;
+    return s;
+}
+
+}  // namespace
+
 // The gas displacing the oil (docs/lube.md §9): a flat face, the liner at rest, its lower half
 // full of oil and its upper half empty, 1 bar of gas above it and none below. The gas pushes the
 // slug out through the lower edge as its Poiseuille flow says, Q = h³ Δp/(12 η L) per unit
@@ -671,12 +688,8 @@ TEST(RingFilm, AGasAboveAnOilSlugPushesItOutAsItsPoiseuilleFlowSays) {
     const double L0 = 0.5 * b, tEmpty = 6.0 * eta * L0 * L0 / (h * h * dp);
     double coarser = 0.0;
     for (const int n : {101, 201, 401}) {
-        const RingFilm film(RingFaceProfile::table({{-0.5 * b, 0.0}, {0.5 * b, 0.0}}), Lubricant(eta), n);
-        RingFilmState s;
-        s.minimumGap = h;
-        s.pressureAbove = dp;
-        s.supplyFilm = 0.0;
-        s.withFriction = false;
+        const RingFilm film(flatFace(b), Lubricant(eta), n);
+        const RingFilmState s = underGas(h, dp);
         Eigen::VectorXd phi(n);
         for (int i = 0; i < n; ++i) phi[i] = i < (n - 1) / 2 ? 1.0 : i == (n - 1) / 2 ? 0.5 : 0.0;
         const double dx = b / (n - 1);
@@ -757,12 +770,8 @@ TEST(RingFilm, AGasThroughAPartialFaceDrainsItsOilStreaksAsTheirCharacteristicsS
     ASSERT_GT(tau * slope(phi0), b) << "the fan must have crossed the face";
     double coarser = 0.0;
     for (const int n : {101, 201, 401}) {
-        const RingFilm film(RingFaceProfile::table({{-0.5 * b, 0.0}, {0.5 * b, 0.0}}), Lubricant(eta), n);
-        RingFilmState s;
-        s.minimumGap = h;
-        s.pressureAbove = dp;
-        s.supplyFilm = 0.0;
-        s.withFriction = false;
+        const RingFilm film(flatFace(b), Lubricant(eta), n);
+        const RingFilmState s = underGas(h, dp);
         Eigen::VectorXd phi = Eigen::VectorXd::Constant(n, phi0);
         const int per = (n - 1) / 50;  // steps per sample: Δt ∝ Δx
         const double dt = dT / per, first = phi0 * h * b * (n - 2) / (n - 1);
