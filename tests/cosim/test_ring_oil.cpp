@@ -132,6 +132,30 @@ TEST(RingOil, AThinnerLayerThinsTheFilmAndRaisesTheBoundaryFriction) {
     }
 }
 
+namespace {
+
+// The oil of liner and films over a run's steps: each step's change against the replenished less
+// the drained (its error), the oil the films' edges moved and the drained total.
+struct OilLedger {
+    double moved = 0.0, drained = 0.0, worst = 0.0, drift = 0.0;
+};
+
+OilLedger oilLedger(const std::vector<StepRecord>& r) {
+    OilLedger l;
+    for (std::size_t i = 1; i < r.size(); ++i) {
+        const double dt = r[i].time - r[i - 1].time;
+        l.moved += dt * (r[i].oilIn + r[i].oilOut);
+        l.drained += dt * r[i].sideLeakage;
+        const double error = (r[i].linerOil + r[i].filmOil) - (r[i - 1].linerOil + r[i - 1].filmOil) -
+                             (r[i].replenishedOil - r[i - 1].replenishedOil) + dt * r[i].sideLeakage;
+        l.worst = std::max(l.worst, std::abs(error));
+        l.drift += error;
+    }
+    return l;
+}
+
+}  // namespace
+
 TEST(RingOil, TheExamplesPackAndSkirtShareTheLayerAndKeepItsOil) {
     EngineCase c = readCaseFile(std::string(FLEXEHD_SOURCE_DIR) + "/examples/engine86/starved_rings.yaml");
     ASSERT_EQ(c.rings.size(), 3u);
@@ -142,21 +166,12 @@ TEST(RingOil, TheExamplesPackAndSkirtShareTheLayerAndKeepItsOil) {
     cb.onStep = [&](const StepRecord& s) { r.push_back(s); };
     sim.run(cb, 720.0);
     ASSERT_GT(r.size(), 700u);
-    double moved = 0.0, worst = 0.0, drift = 0.0, drained = 0.0;
-    for (std::size_t i = 1; i < r.size(); ++i) {
-        const double dt = r[i].time - r[i - 1].time;
-        moved += dt * (r[i].oilIn + r[i].oilOut);
-        drained += dt * r[i].sideLeakage;
-        const double error = (r[i].linerOil + r[i].filmOil) - (r[i - 1].linerOil + r[i - 1].filmOil) -
-                             (r[i].replenishedOil - r[i - 1].replenishedOil) + dt * r[i].sideLeakage;
-        worst = std::max(worst, std::abs(error));
-        drift += error;
-    }
-    std::printf("oil moved %.4g m^3, drained and leaked %.4g m^3; largest step error %.3g, cycle %.3g m^3\n", moved,
-                drained, worst, drift);
-    EXPECT_GT(drained, 0.0);  // the oil-control ring drains what its second land does not take
-    EXPECT_LT(std::abs(drift), 10.0 * MassConservingFilm::kTolerance * moved);
-    EXPECT_LT(worst, 10.0 * MassConservingFilm::kTolerance * moved);
+    const OilLedger l = oilLedger(r);
+    std::printf("oil moved %.4g m^3, drained and leaked %.4g m^3; largest step error %.3g, cycle %.3g m^3\n", l.moved,
+                l.drained, l.worst, l.drift);
+    EXPECT_GT(l.drained, 0.0);  // the oil-control ring drains what its second land does not take
+    EXPECT_LT(std::abs(l.drift), 10.0 * MassConservingFilm::kTolerance * l.moved);
+    EXPECT_LT(l.worst, 10.0 * MassConservingFilm::kTolerance * l.moved);
 }
 
 // The example's pack on the layer with the lands' gas and ring lift at 4000 rpm part load (the grid
@@ -186,21 +201,15 @@ TEST(RingOil, WithTheLandsGasTheFacesOpenToItAndTheOilIsKept) {
     cb.onStep = [&](const StepRecord& s) { r.push_back(s); };
     sim.run(cb, 720.0);
     ASSERT_GT(r.size(), 700u);
-    double moved = 0.0, worst = 0.0, drift = 0.0, openDeg = 0.0;
-    for (std::size_t i = 1; i < r.size(); ++i) {
-        const double dt = r[i].time - r[i - 1].time;
-        moved += dt * (r[i].oilIn + r[i].oilOut);
-        const double error = (r[i].linerOil + r[i].filmOil) - (r[i - 1].linerOil + r[i - 1].filmOil) -
-                             (r[i].replenishedOil - r[i - 1].replenishedOil) + dt * r[i].sideLeakage;
-        worst = std::max(worst, std::abs(error));
-        drift += error;
+    double openDeg = 0.0;
+    for (std::size_t i = 1; i < r.size(); ++i)
         if (r[i].contactValues[open] > 0.0 && r[i].crankDeg > 360.0 && r[i].crankDeg < 540.0)
             openDeg += r[i].crankDeg - r[i - 1].crankDeg;
-    }
+    const OilLedger l = oilLedger(r);
     std::printf("4000 rpm with the lands' gas: the second ring's face open to the gas over %.1f deg of the "
                 "expansion stroke; oil moved %.4g m^3, largest step error %.3g, cycle %.3g m^3\n",
-                openDeg, moved, worst, drift);
+                openDeg, l.moved, l.worst, l.drift);
     EXPECT_GT(openDeg, 0.0);
-    EXPECT_LT(std::abs(drift), 10.0 * MassConservingFilm::kTolerance * moved);
-    EXPECT_LT(worst, 10.0 * MassConservingFilm::kTolerance * moved);
+    EXPECT_LT(std::abs(l.drift), 10.0 * MassConservingFilm::kTolerance * l.moved);
+    EXPECT_LT(l.worst, 10.0 * MassConservingFilm::kTolerance * l.moved);
 }
