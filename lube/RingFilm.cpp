@@ -242,8 +242,9 @@ std::vector<double> openFaceGas(const Eigen::VectorXd& x, const Eigen::VectorXd&
 // (unknown φ, p its gas). A face between two partial nodes, or between a partial node and an
 // edge, carries its pressure flow c (p_j − p_k) in the oil streaks the gas flows between: weighted
 // by the upwind node's fraction, as the Couette flux is, so that no node gives more oil than it
-// holds (the gas from an edge brings none). Any other face's pressure flow is the full film's. The face f between nodes j = f and
-// k = f + 1 carries F = a_j u_j + a_k u_k + b, u the nodes' unknowns (the edges' known).
+// holds (the gas from an edge brings none). Any other face's pressure flow is the full film's.
+// The face f between nodes j = f and k = f + 1 carries F = a_j u_j + a_k u_k + b, u the nodes'
+// unknowns (the edges' known): φ of a partial node, p of a full one.
 struct OpenFace {
     const std::vector<double>& c;  // faces' conductances
     const std::vector<double>& q;  // faces' Couette coefficients (U/2) h_f
@@ -280,6 +281,12 @@ struct OpenFace {
             pushed(k, -c[sf], F.ak);
         }
         return F;
+    }
+    /// Face f's flow with the nodes' solved values in p and φ (m²/s, from node f to f + 1).
+    double flow(int f) const {
+        const Flux F = flux(f);
+        auto u = [&](int i) { return partial[static_cast<std::size_t>(i)] ? phi[i] : p[i]; };
+        return F.aj * u(f) + F.ak * u(f + 1) + F.b;
     }
 };
 
@@ -336,7 +343,8 @@ void settleOpenFace(const std::vector<double>& c, const std::vector<double>& q, 
         for (int i = 1; i <= m; ++i) {  // a partial node its full neighbour emptied: the meniscus moves on
             if (!partial[static_cast<std::size_t>(i)] || !(y[static_cast<std::size_t>(i) - 1] < 0.0)) continue;
             for (const int b : {i - 1, i + 1})
-                if (b >= 1 && b <= m && !partial[static_cast<std::size_t>(b)] && storage[static_cast<std::size_t>(b) - 1] > 0.0)
+                if (b >= 1 && b <= m && !partial[static_cast<std::size_t>(b)] &&
+                    storage[static_cast<std::size_t>(b) - 1] > 0.0)
                     partial[static_cast<std::size_t>(b)] = 1, changed = true;
         }
         if (!changed) {
@@ -498,13 +506,8 @@ void RingFilm::solveStarved(const RingFilmState& s, double dt, const Eigen::Vect
     // The edges' flows into the film with the scheme's face fluxes (Couette flux upwinded).
     if (r.openToGas) {  // the open face's edge fluxes
         const OpenFace face{c, q, gas, cav, r.p, r.fraction};
-        auto flux = [&](int f) {
-            const OpenFace::Flux F = face.flux(f);
-            return F.aj * (cav[static_cast<std::size_t>(f)] ? r.fraction[f] : r.p[f]) +
-                   F.ak * (cav[static_cast<std::size_t>(f) + 1] ? r.fraction[f + 1] : r.p[f + 1]) + F.b;
-        };
-        r.inflowLow = flux(0);
-        r.inflowHigh = -flux(n - 2);
+        r.inflowLow = face.flow(0);
+        r.inflowHigh = -face.flow(n - 2);
     } else {
         const double qLow = q.front(), qHigh = q.back();
         r.inflowLow = c.front() * (r.p[0] - r.p[1]) + qLow * (qLow > 0.0 ? r.fraction[0] : r.fraction[1]);
