@@ -155,6 +155,11 @@ public:
                               WorkTally& work) const = 0;
     /// The largest film-thickness change (m) the change dy of the modal coordinates makes.
     virtual double filmChange(const ContactStep& step, const Eigen::VectorXd& dy, WorkTally& work) const = 0;
+    /// An upper bound of filmChange(dy) at any step that needs no product over the grid
+    /// (m; the default, infinity: none).
+    virtual double filmChangeBound(const Eigen::VectorXd& /*dy*/) const {
+        return std::numeric_limits<double>::infinity();
+    }
     /// The largest film-thickness change per unit of each modal coordinate (m) at a typical
     /// position (the units of the partitioned coupling's acceleration); empty (the default) for a
     /// contact the modes do not move.

@@ -23,6 +23,7 @@ public:
                   const Eigen::Vector2d& x, const Eigen::VectorXd& y, ContactIterate& it, WorkTally& work) override;
     void addModalLoad(const ContactStep&, const ContactIterate&, Eigen::VectorXd&, WorkTally&) const override {}
     double filmChange(const ContactStep&, const Eigen::VectorXd&, WorkTally&) const override { return 0.0; }
+    double filmChangeBound(const Eigen::VectorXd&) const override { return 0.0; }
     /// No load changes with y or with the rigid motion: every part of J empty.
     void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x, const ContactIterate& it,
                    ContactJacobian& J, WorkTally& work) override;

@@ -63,7 +63,11 @@ SkirtContact::SkirtContact(const EngineCase& c, const CaseBodies& bodies, std::f
 SkirtContact::~SkirtContact() = default;
 
 void SkirtContact::prepare(const CouplingNeeds& needs) {
-    if (needs.modalJacobian && piston_) piston_->filmChangeShapes(0.0, psiPiston_);
+    if (!piston_) return;
+    Eigen::MatrixXd Psi;
+    piston_->filmChangeShapes(0.0, Psi);
+    pistonShapeMax_ = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+    if (needs.modalJacobian) psiPiston_ = std::move(Psi);
 }
 
 ContactState SkirtContact::initialState(double linerOffset) const {
@@ -204,6 +208,13 @@ double SkirtContact::filmChange(const ContactStep& step, const Eigen::VectorXd& 
     }
     work.mapping += t0.seconds();
     return res;
+}
+
+double SkirtContact::filmChangeBound(const Eigen::VectorXd& dy) const {
+    if (liner_ || (piston_ && pistonShapeMax_.size() != mp_)) return std::numeric_limits<double>::infinity();
+    if (!piston_) return 0.0;
+    // The product's rounding aside: a relative margin far above it, far below any tolerance.
+    return (1.0 + 1e-12) * dy.head(mp_).cwiseAbs().dot(pistonShapeMax_);
 }
 
 Eigen::VectorXd SkirtContact::modalFilmChangeScale() const {

@@ -50,6 +50,9 @@ public:
     void addModalLoad(const ContactStep& step, const ContactIterate& it, Eigen::VectorXd& f,
                       WorkTally& work) const override;
     double filmChange(const ContactStep& step, const Eigen::VectorXd& dy, WorkTally& work) const override;
+    /// Σ_j |dy_j| max|Ψ_j| over the piston's modes; none (infinity) with a flexible liner, whose
+    /// shapes move with the grid's offset.
+    double filmChangeBound(const Eigen::VectorXd& dy) const override;
     Eigen::VectorXd modalFilmChangeScale() const override;
     void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x, const ContactIterate& it,
                    ContactJacobian& J, WorkTally& work) override;
@@ -126,6 +129,7 @@ private:
     double elasticOffset_ = std::numeric_limits<double>::quiet_NaN();
     // coupling.method newton: the film-change shapes Ψ (grid × modes)
     Eigen::MatrixXd psiPiston_, psiLiner_;
+    Eigen::VectorXd pistonShapeMax_;  // max over the grid of |Ψ_j| per piston mode
     Eigen::MatrixXd jacobianDh_;  // ∂h/∂(e, β, y): grid × (2 + modes), kept between linearisations
     double psiLinerOffset_ = std::numeric_limits<double>::quiet_NaN();
 };

@@ -28,7 +28,7 @@ Eigen::VectorXd CoupledNewtonScheme::givenLoadChange(const Eigen::VectorXd& dH) 
 }
 
 CouplingScheme::PassOutcome CoupledNewtonScheme::pass(const StepContext& ctx, const StepTolerances& tol, int /*pass*/,
-                                                      const StepEvaluation& ev, double couplingRes, Eigen::Vector2d& x,
+                                                      const StepEvaluation& ev, CouplingResidual& couplingRes, Eigen::Vector2d& x,
                                                       Eigen::VectorXd& y, int& iterations, Eigen::Vector2d& dx,
                                                       bool& resolved, std::string& why) {
     dz_.resize(0);
@@ -46,14 +46,14 @@ void CoupledNewtonScheme::update(const StepEvaluation& /*ev*/, const Eigen::Vect
 }
 
 CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepContext& ctx, const StepTolerances& tol,
-                                                                   const StepEvaluation& ev, double couplingRes,
+                                                                   const StepEvaluation& ev, CouplingResidual& couplingRes,
                                                                    NewtonIterate& it, Eigen::Vector2d& x,
                                                                    Eigen::VectorXd& y, int& iterations,
                                                                    Eigen::VectorXd& dz, bool& resolved,
                                                                    std::string& why) {
     const double forceFloor = tol.forceFloor, reach = tol.reach, couplingTol = tol.coupling;
     // The residual in units of its tolerances (≤ 1: converged).
-    const double measure = std::max(couplingRes / couplingTol, tol.motionMeasure(ev));
+    const double measure = couplingRes.measure(couplingTol, tol.motionMeasure(ev));
     Eigen::VectorXd F(2 + mp_ + ml_);
     F.head<2>() = ev.residual;
     F.tail(mp_ + ml_) = y - ev.Hy;
@@ -155,7 +155,7 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
 }
 
 bool CoupledNewtonScheme::resolvedToTheUnknownsResolution(const StepTolerances& tol, const StepEvaluation& ev,
-                                                          double couplingRes, const Eigen::VectorXd& dz) const {
+                                                          CouplingResidual& couplingRes, const Eigen::VectorXd& dz) const {
     // Where the film is thin and the step short, the squeeze film makes the motion so stiff that
     // a change of e, β by 1e-5 c_r (the resolution the motion test asks of them) changes its
     // residual by more than the tolerance; then, with the modal equations met, a fresh
@@ -171,9 +171,8 @@ bool CoupledNewtonScheme::resolvedToTheUnknownsResolution(const StepTolerances& 
             std::abs(newtonJacobian_(i, 0)) * resolution[0] + std::abs(newtonJacobian_(i, 1)) * resolution[1];
         motionResolved = motionResolved && std::abs(ev.residual[i]) <= std::max(10.0 * tolerance[i], resolvable);
     }
-    return couplingRes <= tol.coupling && motionResolved &&
-           dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * step_.case_.piston.clearance &&
-           std::abs(dz[0]) <= resolution[0] && std::abs(dz[1]) <= resolution[1];
+    return motionResolved && dz.cwiseAbs().dot(unknownScale_) <= 1e-5 * step_.case_.piston.clearance &&
+           std::abs(dz[0]) <= resolution[0] && std::abs(dz[1]) <= resolution[1] && couplingRes.atMost(tol.coupling);
 }
 
 }  // namespace flexehd::cosim

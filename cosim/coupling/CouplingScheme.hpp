@@ -8,6 +8,7 @@
 // motion update and then moves the iterate.
 
 #include "cosim/contact/CouplingNeeds.hpp"
+#include "cosim/coupling/CouplingResidual.hpp"
 #include "cosim/coupling/StepState.hpp"
 
 #include <Eigen/Core>
@@ -54,7 +55,7 @@ public:
     /// the motion's update dx, and resolved when the iteration has converged to the resolution of
     /// its unknowns. Film solves it makes are counted in `iterations`.
     virtual PassOutcome pass(const StepContext& ctx, const StepTolerances& tol, int pass, const StepEvaluation& ev,
-                             double couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
+                             CouplingResidual& couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
                              Eigen::Vector2d& dx, bool& resolved, std::string& why) = 0;
     /// Moves the iterate (x, y) by the last pass's update (dx: its motion part).
     virtual void update(const StepEvaluation& ev, const Eigen::Vector2d& dx, Eigen::Vector2d& x,

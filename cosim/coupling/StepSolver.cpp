@@ -125,9 +125,13 @@ StepTolerances StepSolver::stepTolerances() const {
     return t;
 }
 
-double StepSolver::couplingResidual(const StepContext& ctx, const StepEvaluation& ev, const Eigen::VectorXd& y) {
-    // max |Δh(H(y)) − Δh(y)| over every contact's film.
-    return largestFilmChange(ctx, ev.Hy - y);
+CouplingResidual StepSolver::couplingResidual(const StepContext& ctx, const StepEvaluation& ev,
+                                              const Eigen::VectorXd& y) {
+    // max |Δh(H(y)) − Δh(y)| over every contact's film; the bound from the contacts' shape maxima.
+    Eigen::VectorXd d = ev.Hy - y;
+    double bound = 0.0;
+    for (const auto& contact : contacts_) bound = std::max(bound, contact->filmChangeBound(d));
+    return CouplingResidual(bound, [this, &ctx, d = std::move(d)] { return largestFilmChange(ctx, d); });
 }
 
 double StepSolver::largestFilmChange(const StepContext& ctx, const Eigen::VectorXd& d) {
@@ -260,7 +264,7 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
             return fail(std::string("a film solve failed: ") + e.what());  // the caller shortens the step
         }
         ++iterations;
-        const double couplingRes = flexible ? couplingResidual(ctx, ev, y) : 0.0;
+        CouplingResidual couplingRes = flexible ? couplingResidual(ctx, ev, y) : CouplingResidual();
         Eigen::Vector2d dx;     // the motion's update
         bool resolved = false;  // converged to the unknowns' resolution
         std::string why;
@@ -272,8 +276,9 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
         const bool motionDone = std::abs(dx[0]) <= 1e-5 * tol.motion[0] && std::abs(dx[1]) <= 1e-5 * tol.motion[1] &&
                                 std::abs(ev.residual[0]) <= 1e-4 * (ev.scale[0] + tol.forceFloor) &&
                                 std::abs(ev.residual[1]) <= 1e-4 * (ev.scale[1] + tol.forceFloor * tol.reach);
-        if ((motionDone && couplingRes <= tol.coupling) || resolved) {
-            if (resolved && !(motionDone && couplingRes <= tol.coupling)) ++work_.resolvedSteps;
+        const bool converged = motionDone && couplingRes.atMost(tol.coupling);
+        if (converged || resolved) {
+            if (!converged) ++work_.resolvedSteps;
             acceptStep(ctx, s, x, y, ev, out);
             out.yGiven = given;
             out.yGivenFrom = s.yGiven;

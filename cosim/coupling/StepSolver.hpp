@@ -94,10 +94,10 @@ private:
     // The stages of advance (StepSolver.cpp).
     StepContext stepContext(const StepState& s, const StepState& prev, double dtDeg);
     StepTolerances stepTolerances() const;
-    /// max |Δh(H(y)) − Δh(y)| over every contact's film (m).
     /// The largest film-thickness change of the modal change d over every contact's film.
     double largestFilmChange(const StepContext& ctx, const Eigen::VectorXd& d);
-    double couplingResidual(const StepContext& ctx, const StepEvaluation& ev, const Eigen::VectorXd& y);
+    /// max |Δh(H(y)) − Δh(y)| over every contact's film (m), computed where a test needs it.
+    CouplingResidual couplingResidual(const StepContext& ctx, const StepEvaluation& ev, const Eigen::VectorXd& y);
     /// The step's evaluations at x + δ_i e_i (i = e, β; y held; with the bodies' response when
     /// `structure`), each counted in `solves`: the finite-difference columns of the motion unknowns
     /// for both schemes. False if a film solve failed.

@@ -61,6 +61,7 @@ public:
     void addModalLoad(const ContactStep& step, const ContactIterate& it, Eigen::VectorXd& f,
                       WorkTally& work) const override;
     double filmChange(const ContactStep&, const Eigen::VectorXd&, WorkTally&) const override { return 0.0; }
+    double filmChangeBound(const Eigen::VectorXd&) const override { return 0.0; }
     /// Its loads change neither with y nor with the rigid motion: the motion columns are given, empty.
     void linearize(const ContactStep& step, const ContactState& now, const Eigen::Vector2d& x, const ContactIterate& it,
                    ContactJacobian& J, WorkTally& work) override;
