@@ -28,9 +28,9 @@ Eigen::VectorXd CoupledNewtonScheme::givenLoadChange(const Eigen::VectorXd& dH) 
 }
 
 CouplingScheme::PassOutcome CoupledNewtonScheme::pass(const StepContext& ctx, const StepTolerances& tol, int /*pass*/,
-                                                      const StepEvaluation& ev, CouplingResidual& couplingRes, Eigen::Vector2d& x,
-                                                      Eigen::VectorXd& y, int& iterations, Eigen::Vector2d& dx,
-                                                      bool& resolved, std::string& why) {
+                                                      const StepEvaluation& ev, const CouplingResidual& couplingRes,
+                                                      Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
+                                                      Eigen::Vector2d& dx, bool& resolved, std::string& why) {
     dz_.resize(0);
     resolved = false;
     const PassOutcome outcome =
@@ -46,14 +46,13 @@ void CoupledNewtonScheme::update(const StepEvaluation& /*ev*/, const Eigen::Vect
 }
 
 CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepContext& ctx, const StepTolerances& tol,
-                                                                   const StepEvaluation& ev, CouplingResidual& couplingRes,
+                                                                   const StepEvaluation& ev,
+                                                                   const CouplingResidual& couplingRes,
                                                                    NewtonIterate& it, Eigen::Vector2d& x,
                                                                    Eigen::VectorXd& y, int& iterations,
                                                                    Eigen::VectorXd& dz, bool& resolved,
                                                                    std::string& why) {
     const double forceFloor = tol.forceFloor, reach = tol.reach, couplingTol = tol.coupling;
-    // The residual in units of its tolerances (≤ 1: converged).
-    const double measure = couplingRes.measure(couplingTol, tol.motionMeasure(ev));
     Eigen::VectorXd F(2 + mp_ + ml_);
     F.head<2>() = ev.residual;
     F.tail(mp_ + ml_) = y - ev.Hy;
@@ -82,6 +81,8 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
         }
     }
     it.revisit = false;
+    // The residual in units of its tolerances (≤ 1: converged).
+    const double measure = couplingRes.measure(couplingTol, tol.motionMeasure(ev));
     const double rate = ctx.step.a0 / ctx.step.dt;
     // A new linearisation when two passes in a row did not halve the measure (the first gets the
     // Broyden update of the kept Jacobian: near the solution a stale Jacobian's error dominates
@@ -155,7 +156,8 @@ CouplingScheme::PassOutcome CoupledNewtonScheme::coupledNewtonPass(const StepCon
 }
 
 bool CoupledNewtonScheme::resolvedToTheUnknownsResolution(const StepTolerances& tol, const StepEvaluation& ev,
-                                                          CouplingResidual& couplingRes, const Eigen::VectorXd& dz) const {
+                                                          const CouplingResidual& couplingRes,
+                                                          const Eigen::VectorXd& dz) const {
     // Where the film is thin and the step short, the squeeze film makes the motion so stiff that
     // a change of e, β by 1e-5 c_r (the resolution the motion test asks of them) changes its
     // residual by more than the tolerance; then, with the modal equations met, a fresh

@@ -27,7 +27,7 @@ public:
     /// J⁻¹ (0, dH) with the kept inverse Jacobian (the residual's modal rows are y − H(y)).
     Eigen::VectorXd givenLoadChange(const Eigen::VectorXd& dH) const override;
     PassOutcome pass(const StepContext& ctx, const StepTolerances& tol, int pass, const StepEvaluation& ev,
-                     CouplingResidual& couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
+                     const CouplingResidual& couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
                      Eigen::Vector2d& dx, bool& resolved, std::string& why) override;
     void update(const StepEvaluation& ev, const Eigen::Vector2d& dx, Eigen::Vector2d& x, Eigen::VectorXd& y) override;
 
@@ -72,11 +72,12 @@ private:
     /// The line search, the Jacobian kept, re-formed or Broyden-updated, and the damped update dz
     /// of (e, β, y); Retry: x, y were moved back (evaluate again).
     PassOutcome coupledNewtonPass(const StepContext& ctx, const StepTolerances& tol, const StepEvaluation& ev,
-                                  CouplingResidual& couplingRes, NewtonIterate& it, Eigen::Vector2d& x, Eigen::VectorXd& y,
-                                  int& iterations, Eigen::VectorXd& dz, bool& resolved, std::string& why);
+                                  const CouplingResidual& couplingRes, NewtonIterate& it, Eigen::Vector2d& x,
+                                  Eigen::VectorXd& y, int& iterations, Eigen::VectorXd& dz, bool& resolved,
+                                  std::string& why);
     /// The iteration has converged to the resolution of its unknowns.
-    bool resolvedToTheUnknownsResolution(const StepTolerances& tol, const StepEvaluation& ev, CouplingResidual& couplingRes,
-                                         const Eigen::VectorXd& dz) const;
+    bool resolvedToTheUnknownsResolution(const StepTolerances& tol, const StepEvaluation& ev,
+                                         const CouplingResidual& couplingRes, const Eigen::VectorXd& dz) const;
     // The coupled Jacobian (CoupledNewton.cpp).
     /// Linearises (motion residual, y − H(y)) in (e, β, y) at the evaluation into the parts of
     /// CoupledJacobianParts (docs/coupling.md §1, §3)

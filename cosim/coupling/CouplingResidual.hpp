@@ -19,7 +19,7 @@ public:
     CouplingResidual(double bound, std::function<double()> exact) : upper_(bound), exact_(std::move(exact)) {}
 
     /// r_h (m).
-    double value() {
+    double value() const {
         if (exact_) {
             upper_ = exact_();
             exact_ = nullptr;
@@ -27,13 +27,15 @@ public:
         return upper_;
     }
     /// r_h ≤ limit.
-    bool atMost(double limit) { return upper_ <= limit || value() <= limit; }
+    bool atMost(double limit) const { return upper_ <= limit || value() <= limit; }
     /// max(r_h / unit, floor): the residual in units of `unit`, or the floor where that is larger.
-    double measure(double unit, double floor) { return upper_ / unit <= floor ? floor : std::max(value() / unit, floor); }
+    double measure(double unit, double floor) const {
+        return upper_ / unit <= floor ? floor : std::max(value() / unit, floor);
+    }
 
 private:
-    double upper_ = 0.0;             // m: the bound, r_h itself once formed
-    std::function<double()> exact_;  // forms r_h; empty once it has
+    mutable double upper_ = 0.0;             // m: the bound, r_h itself once formed
+    mutable std::function<double()> exact_;  // forms r_h; empty once it has
 };
 
 }  // namespace flexehd::cosim

@@ -55,8 +55,8 @@ public:
     /// the motion's update dx, and resolved when the iteration has converged to the resolution of
     /// its unknowns. Film solves it makes are counted in `iterations`.
     virtual PassOutcome pass(const StepContext& ctx, const StepTolerances& tol, int pass, const StepEvaluation& ev,
-                             CouplingResidual& couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
-                             Eigen::Vector2d& dx, bool& resolved, std::string& why) = 0;
+                             const CouplingResidual& couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y,
+                             int& iterations, Eigen::Vector2d& dx, bool& resolved, std::string& why) = 0;
     /// Moves the iterate (x, y) by the last pass's update (dx: its motion part).
     virtual void update(const StepEvaluation& ev, const Eigen::Vector2d& dx, Eigen::Vector2d& x,
                         Eigen::VectorXd& y) = 0;

@@ -40,7 +40,7 @@ void PartitionedScheme::beginStep(const Eigen::Vector2d& x, const Eigen::VectorX
 }
 
 CouplingScheme::PassOutcome PartitionedScheme::pass(const StepContext& ctx, const StepTolerances& tol, int pass,
-                                                    const StepEvaluation& ev, CouplingResidual& /*couplingRes*/,
+                                                    const StepEvaluation& ev, const CouplingResidual& /*couplingRes*/,
                                                     Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
                                                     Eigen::Vector2d& dx, bool& resolved, std::string& why) {
     resolved = false;

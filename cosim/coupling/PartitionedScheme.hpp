@@ -26,7 +26,7 @@ public:
     void contactsChanged() override;
     void beginStep(const Eigen::Vector2d& x, const Eigen::VectorXd& y) override;
     PassOutcome pass(const StepContext& ctx, const StepTolerances& tol, int pass, const StepEvaluation& ev,
-                     CouplingResidual& couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
+                     const CouplingResidual& couplingRes, Eigen::Vector2d& x, Eigen::VectorXd& y, int& iterations,
                      Eigen::Vector2d& dx, bool& resolved, std::string& why) override;
     void update(const StepEvaluation& ev, const Eigen::Vector2d& dx, Eigen::Vector2d& x, Eigen::VectorXd& y) override;
 

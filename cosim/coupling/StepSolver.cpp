@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -130,7 +131,14 @@ CouplingResidual StepSolver::couplingResidual(const StepContext& ctx, const Step
     // max |Δh(H(y)) − Δh(y)| over every contact's film; the bound from the contacts' shape maxima.
     Eigen::VectorXd d = ev.Hy - y;
     double bound = 0.0;
-    for (const auto& contact : contacts_) bound = std::max(bound, contact->filmChangeBound(d));
+    for (const auto& contact : contacts_) {
+        const double b = contact->filmChangeBound(d);
+        if (!(b >= 0.0)) {  // not a number (the modal residual is not finite): no bound
+            bound = std::numeric_limits<double>::infinity();
+            break;
+        }
+        bound = std::max(bound, b);
+    }
     return CouplingResidual(bound, [this, &ctx, d = std::move(d)] { return largestFilmChange(ctx, d); });
 }
 
@@ -264,7 +272,7 @@ bool StepSolver::advance(const StepState& s, const StepState& prev, double dtDeg
             return fail(std::string("a film solve failed: ") + e.what());  // the caller shortens the step
         }
         ++iterations;
-        CouplingResidual couplingRes = flexible ? couplingResidual(ctx, ev, y) : CouplingResidual();
+        const CouplingResidual couplingRes = flexible ? couplingResidual(ctx, ev, y) : CouplingResidual();
         Eigen::Vector2d dx;     // the motion's update
         bool resolved = false;  // converged to the unknowns' resolution
         std::string why;

@@ -14,6 +14,7 @@
 
 #include "cosim/case/EngineCase.hpp"
 #include "cosim/contact/FilmContact.hpp"
+#include "cosim/coupling/CouplingResidual.hpp"
 #include "cosim/coupling/CouplingScheme.hpp"
 #include "cosim/coupling/StepState.hpp"
 #include "cosim/engine/CrankKinematics.hpp"

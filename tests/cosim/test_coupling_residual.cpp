@@ -11,10 +11,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <random>
 #include <unistd.h>
-#include <vector>
 
 using namespace flexehd;
 using namespace flexehd::cosim;
