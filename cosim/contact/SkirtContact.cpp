@@ -62,11 +62,18 @@ SkirtContact::SkirtContact(const EngineCase& c, const CaseBodies& bodies, std::f
 
 SkirtContact::~SkirtContact() = default;
 
+namespace {
+
+// The largest film change of each shape (grid × modes): its column's largest |Ψ_ij|.
+Eigen::VectorXd shapeMaxima(const Eigen::MatrixXd& Psi) { return Psi.colwise().lpNorm<Eigen::Infinity>().transpose(); }
+
+}  // namespace
+
 void SkirtContact::prepare(const CouplingNeeds& needs) {
     if (!piston_) return;
     Eigen::MatrixXd Psi;
     piston_->filmChangeShapes(0.0, Psi);
-    pistonShapeMax_ = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+    pistonShapeMax_ = shapeMaxima(Psi);
     if (needs.modalJacobian) psiPiston_ = std::move(Psi);
 }
 
@@ -223,14 +230,14 @@ Eigen::VectorXd SkirtContact::modalFilmChangeScale() const {
     Eigen::VectorXd s(mp_ + ml_);
     Eigen::MatrixXd Psi;
     if (piston_ && pistonShapeMax_.size() == mp_) {
-        s.head(mp_) = pistonShapeMax_;
+        s.head(mp_) = pistonShapeMax_;  // prepared
     } else if (piston_) {
         piston_->filmChangeShapes(0.0, Psi);
-        s.head(mp_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+        s.head(mp_) = shapeMaxima(Psi);
     }
     if (liner_) {
         liner_->filmChangeShapes(linerOffset_(90.0), Psi);
-        s.tail(ml_) = Psi.colwise().lpNorm<Eigen::Infinity>().transpose();
+        s.tail(ml_) = shapeMaxima(Psi);
     }
     return s;
 }
